@@ -1,0 +1,767 @@
+#!/usr/bin/env python3
+"""Run a parameter sweep of essaim experiments, locally or on a Dask cluster.
+
+    sweep.py SWEEP.toml [-j N] [--scheduler tcp://host:8786] [--essaim PATH] [--out DIR]
+
+Every (point, seed) of the sweep is one `essaim run ... --quiet --out <out>/runs/<run-key>`
+process. The runs' summary.json and metrics.json are gathered into one table, one row per
+run, written as <out>/results.parquet and <out>/results.csv. See docs/sweeps.md.
+
+Exit status: 0 every run succeeded; 1 some runs failed (they are rows with status "failed");
+2 bad sweep file or command line, or essaim not found; 130 interrupted (finished runs kept,
+a rerun resumes).
+"""
+from __future__ import annotations
+
+import argparse
+import concurrent.futures as cf
+import hashlib
+import itertools
+import json
+import math
+import os
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import tomllib
+import uuid
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+
+# Summary keys kept as unprefixed columns; every other summary key becomes "summary.<key>".
+SUMMARY_KEYS = ("seed", "ticks", "robots", "wall_seconds", "robot_steps_per_second")
+# Metrics dicts too wide for a table (one column per robot): skipped, their mean is kept.
+SKIPPED_METRICS = ("trips_per_robot",)
+# Bookkeeping columns, first in the table.
+RUN_COLUMNS = ("run", "status", "returncode", "error", "seed")
+# Files the sweep itself writes into a run folder (next to essaim's outputs).
+RUN_RECORD = "sweep-run.json"
+ERROR_LINES = 5  # stderr lines kept in the `error` column
+
+SWEEP_KEYS = {"experiment", "params", "ticks", "seeds", "set", "out", "essaim", "workdir",
+              "strict", "args", "timeout"}
+
+
+class SweepError(Exception):
+    """A bad sweep file or command line (exit 2)."""
+
+
+# ----------------------------------------------------------------------------------------
+# Sweep file
+
+
+@dataclass
+class Run:
+    key: str                       # folder name under <out>/runs
+    params: dict[str, object]      # --set path -> value, in sweep-file order
+    seed: int
+
+    def set_args(self) -> list[str]:
+        return [f"{p}={format_value(v)}" for p, v in self.params.items()]
+
+
+@dataclass
+class Sweep:
+    path: Path                     # the sweep file
+    experiment: Path               # absolute
+    params: dict[str, list]        # --set path -> values
+    seeds: list[int]
+    out: Path                      # absolute
+    workdir: Path                  # absolute; essaim runs there (controller scripts resolve there)
+    ticks: int | None = None
+    fixed: dict[str, object] = field(default_factory=dict)
+    essaim: str | None = None      # from the sweep file, resolved
+    strict: bool = False
+    extra_args: list[str] = field(default_factory=list)
+    timeout: float | None = None
+
+    def runs(self) -> list[Run]:
+        names = short_names(list(self.params))
+        runs = []
+        for values in itertools.product(*self.params.values()):
+            point = dict(zip(self.params, values))
+            for seed in self.seeds:
+                runs.append(Run(run_key(point, seed, names), point, seed))
+        keys = Counter(r.key for r in runs)
+        dup = [k for k, n in keys.items() if n > 1]
+        if dup:
+            raise SweepError(f"two runs would share the folder {dup[0]!r}: repeated values?")
+        return runs
+
+    def argv(self, run: Run, essaim: str, out: str) -> list[str]:
+        """The essaim command line of one run."""
+        argv = [essaim, "run", str(self.experiment), "--quiet", "--seed", str(run.seed)]
+        if self.ticks is not None:
+            argv += ["--ticks", str(self.ticks)]
+        for p, v in self.fixed.items():
+            argv += ["--set", f"{p}={format_value(v)}"]
+        for s in run.set_args():
+            argv += ["--set", s]
+        if self.strict:
+            argv.append("--strict")
+        argv += self.extra_args
+        argv += ["--out", out]
+        return argv
+
+    def manifest(self) -> dict:
+        return {"sweep_file": str(self.path), "experiment": str(self.experiment),
+                "params": self.params, "seeds": self.seeds, "ticks": self.ticks,
+                "set": self.fixed, "strict": self.strict, "args": self.extra_args,
+                "workdir": str(self.workdir)}
+
+
+def format_value(v) -> str:
+    """A TOML value as the text of an XML attribute."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, float):
+        return repr(v)  # shortest text that reads back the same: 0.1, 10.0, 1e-05
+    return str(v)
+
+
+def expand_values(path: str, spec) -> list:
+    """A parameter's values: a list, a scalar, or a range {start, stop, step} (stop included)."""
+    if isinstance(spec, list):
+        if not spec:
+            raise SweepError(f"params.{path}: empty list")
+        for v in spec:
+            if isinstance(v, (dict, list)):
+                raise SweepError(f"params.{path}: values must be numbers, strings or booleans")
+        return list(spec)
+    if isinstance(spec, dict):
+        unknown = set(spec) - {"start", "stop", "step"}
+        if unknown or not {"start", "stop"} <= set(spec):
+            raise SweepError(f"params.{path}: a range is {{start, stop, step}}, got {sorted(spec)}")
+        start, stop, step = spec["start"], spec["stop"], spec.get("step", 1)
+        for name, v in (("start", start), ("stop", stop), ("step", step)):
+            if isinstance(v, bool) or not isinstance(v, (int, float)):
+                raise SweepError(f"params.{path}: range {name} must be a number")
+        if step == 0 or (stop - start) * step < 0:
+            raise SweepError(f"params.{path}: step {step} never goes from {start} to {stop}")
+        n = int(math.floor((stop - start) / step + 1e-9)) + 1
+        if n > 100000:
+            raise SweepError(f"params.{path}: range has {n} values")
+        if all(isinstance(v, int) for v in (start, stop, step)):
+            return [start + i * step for i in range(n)]
+        # Round away binary noise: 0.1 + 2 * 0.1 is 0.30000000000000004.
+        return [round(start + i * step, 12) for i in range(n)]
+    if isinstance(spec, (int, float, str, bool)):
+        return [spec]
+    raise SweepError(f"params.{path}: expected a list, a value or {{start, stop, step}}")
+
+
+def load_sweep(path: str | Path, out: str | None = None, essaim: str | None = None) -> Sweep:
+    """Read and check a sweep file. `out` (from the command line) is relative to the cwd."""
+    path = Path(path).resolve()
+    try:
+        with open(path, "rb") as f:
+            doc = tomllib.load(f)
+    except OSError as e:
+        raise SweepError(f"{path}: {e.strerror}") from None
+    except tomllib.TOMLDecodeError as e:
+        raise SweepError(f"{path}: {e}") from None
+    unknown = set(doc) - SWEEP_KEYS
+    if unknown:
+        raise SweepError(f"{path}: unknown key(s) {', '.join(sorted(unknown))} "
+                         f"(known: {', '.join(sorted(SWEEP_KEYS))})")
+    here = path.parent
+
+    if "experiment" not in doc or not isinstance(doc["experiment"], str):
+        raise SweepError(f"{path}: `experiment` (path of the .argos file) is required")
+    experiment = (here / doc["experiment"]).resolve()
+    if not experiment.is_file():
+        raise SweepError(f"{path}: experiment {experiment} does not exist")
+
+    raw_params = doc.get("params", {})
+    if not isinstance(raw_params, dict):
+        raise SweepError(f"{path}: `params` must be a table of PATH = values")
+    params = {}
+    for p, spec in raw_params.items():
+        check_set_path(path, p)
+        params[p] = expand_values(p, spec)
+
+    seeds = doc.get("seeds", 1)
+    if isinstance(seeds, int) and not isinstance(seeds, bool):
+        if seeds < 1:
+            raise SweepError(f"{path}: seeds must be >= 1")
+        seeds = list(range(1, seeds + 1))
+    elif isinstance(seeds, list) and seeds and all(
+            isinstance(s, int) and not isinstance(s, bool) and s >= 0 for s in seeds):
+        if len(set(seeds)) != len(seeds):
+            raise SweepError(f"{path}: repeated seeds")
+    else:
+        raise SweepError(f"{path}: `seeds` is a count N (seeds 1..N) or a list of seeds")
+
+    ticks = doc.get("ticks")
+    if ticks is not None and (isinstance(ticks, bool) or not isinstance(ticks, int) or ticks < 1):
+        raise SweepError(f"{path}: `ticks` must be a positive integer")
+
+    fixed = doc.get("set", {})
+    if not isinstance(fixed, dict):
+        raise SweepError(f"{path}: `set` must be a table of PATH = value")
+    for p, v in fixed.items():
+        check_set_path(path, p)
+        if isinstance(v, (dict, list)):
+            raise SweepError(f"{path}: set.{p} must be a single value")
+        if p in params:
+            raise SweepError(f"{path}: {p} is both in `set` and in `params`")
+
+    if out is not None:
+        out_dir = Path(out).resolve()
+    elif "out" in doc:
+        out_dir = (here / doc["out"]).resolve()
+    else:
+        out_dir = (Path("sweeps") / path.stem).resolve()
+
+    workdir = (here / doc["workdir"]).resolve() if "workdir" in doc else Path.cwd()
+    if not workdir.is_dir():
+        raise SweepError(f"{path}: workdir {workdir} is not a folder")
+
+    file_essaim = doc.get("essaim")
+    if file_essaim is not None:
+        file_essaim = os.path.abspath(here / file_essaim) if "/" in file_essaim else file_essaim
+
+    args = doc.get("args", [])
+    if not isinstance(args, list) or not all(isinstance(a, str) for a in args):
+        raise SweepError(f"{path}: `args` must be a list of strings")
+    timeout = doc.get("timeout")
+    if timeout is not None and (not isinstance(timeout, (int, float)) or timeout <= 0):
+        raise SweepError(f"{path}: `timeout` must be a positive number of seconds")
+
+    return Sweep(path=path, experiment=experiment, params=params, seeds=seeds, out=out_dir,
+                 workdir=workdir, ticks=ticks, fixed=dict(fixed), essaim=file_essaim,
+                 strict=bool(doc.get("strict", False)), extra_args=args, timeout=timeout)
+
+
+def check_set_path(sweep_path, p: str) -> None:
+    if not re.fullmatch(r"[A-Za-z_][\w\-]*(\[\d+\])?(\.[A-Za-z_][\w\-]*(\[\d+\])?)+", p):
+        raise SweepError(f"{sweep_path}: {p!r} is not a --set path (tag.tag.attribute)")
+
+
+# ----------------------------------------------------------------------------------------
+# Run keys
+
+
+def short_names(paths: list[str]) -> dict[str, str]:
+    """The shortest dotted suffix of each --set path that tells it from the others."""
+    segs = {p: p.split(".") for p in paths}
+    names = {}
+    for p in paths:
+        for n in range(1, len(segs[p]) + 1):
+            cand = segs[p][-n:]
+            if all(segs[q][-n:] != cand for q in paths if q != p):
+                names[p] = ".".join(cand)
+                break
+        else:
+            names[p] = p
+    return names
+
+
+def _clean(s: str) -> str:
+    return re.sub(r"[^A-Za-z0-9._+\-]", "_", s)
+
+
+def run_key(point: dict, seed: int, names: dict[str, str]) -> str:
+    """A readable, stable folder name: `quantity=30__EPSILONGREED=0.1__seed=2`."""
+    parts, exact = [], []
+    for p, v in point.items():
+        text = format_value(v)
+        parts.append(f"{_clean(names[p])}={_clean(text)}")
+        exact.append(f"{p}={text}")
+    parts.append(f"seed={seed}")
+    key = "__".join(parts)
+    lossy = any(_clean(format_value(v)) != format_value(v) for v in point.values())
+    if lossy or len(key) > 150:
+        digest = hashlib.sha1("\n".join(exact + [str(seed)]).encode()).hexdigest()[:8]
+        key = key[:140] + "~" + digest
+    return key
+
+
+# ----------------------------------------------------------------------------------------
+# One run: executing it, reading its folder
+
+
+def stderr_tail(text: str, n: int = ERROR_LINES) -> str:
+    lines = [ln for ln in text.splitlines() if ln.strip()]
+    return "\n".join(lines[-n:])
+
+
+def read_json(path: Path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def finished(run_dir: Path, argv_record: list[str]) -> bool:
+    """True when the folder holds a valid summary.json from the same command line."""
+    summary = read_json(run_dir / "summary.json")
+    if not isinstance(summary, dict):
+        return False
+    record = read_json(run_dir / RUN_RECORD)
+    if isinstance(record, dict) and record.get("argv") != argv_record:
+        return False  # made by another version of the sweep file (other ticks, sets...)
+    return True
+
+
+def record_argv(argv: list[str]) -> list[str]:
+    """The part of a run's command line that defines its results (no binary, no --out)."""
+    return argv[1:-2]
+
+
+def run_remote(argv: list[str], workdir: str, timeout: float | None) -> dict:
+    """Run one essaim process in a temporary folder; return its exit status and output files.
+
+    Used on Dask workers (no shared filesystem needed: the files travel back in the result).
+    `argv` ends with `--out <placeholder>`, replaced here by the temporary folder.
+    """
+    tmp = tempfile.mkdtemp(prefix="essaim-run-")
+    try:
+        argv = argv[:-1] + [tmp]
+        start = time.time()
+        try:
+            p = subprocess.run(argv, cwd=workdir, capture_output=True, text=True,
+                               errors="replace", timeout=timeout)
+            rc, stdout, stderr = p.returncode, p.stdout, p.stderr
+        except FileNotFoundError as e:
+            rc, stdout, stderr = 127, "", f"cannot start {argv[0]} in {workdir}: {e.strerror}"
+        except subprocess.TimeoutExpired as e:
+            rc, stdout = -9, ""
+            stderr = _text(e.stderr) + f"\ntimed out after {timeout:g} s"
+        files = {}
+        for name in sorted(os.listdir(tmp)):
+            fp = os.path.join(tmp, name)
+            if os.path.isfile(fp) and not os.path.islink(fp) and not name.startswith("."):
+                with open(fp, "rb") as f:
+                    files[name] = f.read()
+        return {"returncode": rc, "stdout": stdout, "stderr": stderr, "files": files,
+                "host": socket.gethostname(), "elapsed": time.time() - start}
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _text(b) -> str:
+    if b is None:
+        return ""
+    return b.decode(errors="replace") if isinstance(b, bytes) else b
+
+
+def write_run_folder(run_dir: Path, result: dict, argv: list[str]) -> None:
+    """Write a run returned by a remote worker; summary.json last and atomically."""
+    if run_dir.exists():
+        shutil.rmtree(run_dir)
+    run_dir.mkdir(parents=True)
+    files = dict(result["files"])
+    summary = files.pop("summary.json", None)
+    for name, data in files.items():
+        (run_dir / name).write_bytes(data)
+    write_logs(run_dir, result)
+    if summary is not None and result["returncode"] == 0:
+        write_record(run_dir, argv, result)
+        tmp = run_dir / ".summary.json.tmp"
+        tmp.write_bytes(summary)
+        os.replace(tmp, run_dir / "summary.json")
+
+
+def write_logs(run_dir: Path, result: dict) -> None:
+    for name in ("stdout", "stderr"):
+        if result.get(name):
+            (run_dir / f"{name}.txt").write_text(result[name], encoding="utf-8")
+
+
+def write_record(run_dir: Path, argv: list[str], result: dict) -> None:
+    rec = {"argv": record_argv(argv), "host": result.get("host"),
+           "elapsed": result.get("elapsed"), "returncode": result["returncode"]}
+    (run_dir / RUN_RECORD).write_text(json.dumps(rec, indent=1) + "\n", encoding="utf-8")
+
+
+# ----------------------------------------------------------------------------------------
+# The table
+
+
+def _scalar(v) -> bool:
+    return v is None or isinstance(v, (bool, int, float, str))
+
+
+def flatten_metrics(metrics: dict) -> dict:
+    """metrics.json as columns: scalars as-is, dicts of scalars as `name.key`, lists as JSON."""
+    row = {}
+    for k, v in metrics.items():
+        if k in SKIPPED_METRICS:
+            continue
+        if isinstance(v, dict) and all(_scalar(x) for x in v.values()):
+            for kk, vv in v.items():
+                row[f"{k}.{kk}"] = vv
+        elif isinstance(v, (dict, list)):
+            row[k] = json.dumps(v, sort_keys=False)
+        else:
+            row[k] = v
+    return row
+
+
+def flatten_summary(summary: dict) -> dict:
+    """summary.json as columns: SUMMARY_KEYS unprefixed, the rest as `summary.<key>`."""
+    row = {}
+    for k, v in summary.items():
+        name = k if k in SUMMARY_KEYS else f"summary.{k}"
+        if isinstance(v, dict) and all(_scalar(x) for x in v.values()):
+            for kk, vv in v.items():
+                row[f"{name}.{kk}"] = vv
+        elif isinstance(v, (dict, list)):
+            row[name] = json.dumps(v)
+        else:
+            row[name] = v
+    errors = summary.get("controller_errors")
+    row["controller_error_count"] = len(errors) if isinstance(errors, list) else 0
+    return row
+
+
+def ok_row(run: Run, run_dir: Path, host: str | None = None) -> dict:
+    """The row of a finished run, read from its folder."""
+    summary = read_json(run_dir / "summary.json") or {}
+    row = {"run": run.key, "status": "ok", "returncode": 0, "error": None, "seed": run.seed}
+    row.update(run.params)
+    row.update(flatten_summary(summary))
+    metrics = read_json(run_dir / "metrics.json")
+    if isinstance(metrics, dict):
+        for k, v in flatten_metrics(metrics).items():
+            row[f"metrics.{k}" if k in row else k] = v
+    record = read_json(run_dir / RUN_RECORD)
+    row["host"] = host or (record.get("host") if isinstance(record, dict) else None)
+    return row
+
+
+def failed_row(run: Run, returncode: int, error: str, host: str | None = None) -> dict:
+    row = {"run": run.key, "status": "failed", "returncode": returncode, "error": error,
+           "seed": run.seed}
+    row.update(run.params)
+    row["host"] = host
+    return row
+
+
+def make_table(rows: list[dict]):
+    """One DataFrame: bookkeeping columns, then parameters, then summary and metrics.
+
+    Column types come from the values themselves: all integers (missing allowed) -> Int64,
+    numbers -> float64, anything with text -> string, so Parquet and CSV agree.
+    """
+    import pandas as pd
+
+    columns = []
+    for r in rows:
+        for k in r:
+            if k not in columns:
+                columns.append(k)
+    first = [c for c in RUN_COLUMNS if c in columns]
+    columns = first + [c for c in columns if c not in first]
+
+    def missing(v):
+        return v is None or (isinstance(v, float) and math.isnan(v))
+
+    data = {}
+    for c in columns:
+        values = [r.get(c) for r in rows]
+        present = [v for v in values if not missing(v)]
+        if present and all(isinstance(v, int) and not isinstance(v, bool) for v in present):
+            data[c] = pd.array(values, dtype="Int64")
+        elif present and all(isinstance(v, bool) for v in present):
+            data[c] = pd.array(values, dtype="boolean")
+        elif present and all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                             for v in present):
+            data[c] = pd.array([math.nan if missing(v) else float(v) for v in values],
+                               dtype="float64")
+        else:
+            data[c] = pd.array([None if missing(v) else
+                                (v if isinstance(v, str) else format_value(v)) for v in values],
+                               dtype="string")
+    return pd.DataFrame(data, columns=columns)
+
+
+def write_table(df, out: Path) -> None:
+    """results.parquet and results.csv, each written whole (temporary name, then rename)."""
+    out.mkdir(parents=True, exist_ok=True)
+    for name, write in (("results.parquet", lambda p: df.to_parquet(p, index=False)),
+                        ("results.csv", lambda p: df.to_csv(p, index=False))):
+        tmp = out / f".{name}.tmp"
+        write(tmp)
+        os.replace(tmp, out / name)
+
+
+# ----------------------------------------------------------------------------------------
+# Executors
+
+
+class Interrupted(Exception):
+    pass
+
+
+def run_local(sweep: Sweep, todo: list[Run], essaim: str, jobs: int, on_done) -> None:
+    """Run essaim processes, `jobs` at a time; on Ctrl-C kill them and raise Interrupted."""
+    lock = threading.Lock()
+    procs: set[subprocess.Popen] = set()
+    stop = threading.Event()
+
+    def one(run: Run):
+        run_dir = sweep.out / "runs" / run.key
+        argv = sweep.argv(run, essaim, str(run_dir))
+        with lock:
+            if stop.is_set():
+                return None
+            if run_dir.exists():
+                shutil.rmtree(run_dir)  # leftovers of an interrupted or failed run
+            run_dir.mkdir(parents=True)
+            start = time.time()
+            try:
+                # Own session: Ctrl-C reaches only the sweep, which kills its children itself.
+                p = subprocess.Popen(argv, cwd=sweep.workdir, stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE, text=True, errors="replace",
+                                     start_new_session=True)
+            except OSError as e:
+                return run, {"returncode": 127, "stdout": "", "files": {},
+                             "stderr": f"cannot start {essaim}: {e.strerror}"}
+            procs.add(p)
+        try:
+            stdout, stderr = p.communicate(timeout=sweep.timeout)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            stdout, stderr = p.communicate()
+            stderr += f"\ntimed out after {sweep.timeout:g} s"
+        finally:
+            with lock:
+                procs.discard(p)
+        if stop.is_set():
+            return None  # killed by us: not a result
+        return run, {"returncode": p.returncode, "stdout": stdout, "stderr": stderr,
+                     "host": socket.gethostname(), "elapsed": time.time() - start,
+                     "argv": argv}
+
+    ex = cf.ThreadPoolExecutor(max_workers=jobs)
+    futures = []
+    try:
+        futures = [ex.submit(one, r) for r in todo]
+        for fut in cf.as_completed(futures):
+            res = fut.result()
+            if res is not None:
+                run, result = res
+                run_dir = sweep.out / "runs" / run.key
+                write_logs(run_dir, result)
+                if result["returncode"] == 0 and (run_dir / "summary.json").is_file():
+                    write_record(run_dir, result["argv"], result)
+                on_done(run, result)
+    except KeyboardInterrupt:
+        stop.set()
+        for f in futures:
+            f.cancel()
+        with lock:
+            for p in procs:
+                _kill(p)
+        ex.shutdown(wait=True, cancel_futures=True)
+        raise Interrupted() from None
+    ex.shutdown(wait=True)
+
+
+def _kill(p: subprocess.Popen) -> None:
+    try:
+        os.killpg(p.pid, signal.SIGTERM)
+    except (ProcessLookupError, PermissionError):
+        pass
+    try:
+        p.wait(timeout=2)
+    except subprocess.TimeoutExpired:
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+
+
+def run_dask(sweep: Sweep, todo: list[Run], essaim: str, scheduler: str, on_done) -> None:
+    """Send the runs to a Dask cluster; workers return the run's files, written here."""
+    from dask.distributed import Client, as_completed
+
+    # Workers must be able to unpickle run_remote even when this file was imported as a
+    # module they do not have: ship it by value.
+    if __name__ != "__main__":
+        import cloudpickle
+        cloudpickle.register_pickle_by_value(sys.modules[__name__])
+    client = Client(scheduler, timeout="30s")
+    futures = {}
+    try:
+        for run in todo:
+            argv = sweep.argv(run, essaim, "@OUT@")
+            fut = client.submit(run_remote, argv, str(sweep.workdir), sweep.timeout,
+                                key=f"essaim-{run.key}-{uuid.uuid4().hex[:8]}", pure=False,
+                                retries=0)
+            futures[fut] = (run, argv)
+        for fut in as_completed(list(futures)):
+            run, argv = futures.pop(fut)
+            try:
+                result = fut.result()
+            except Exception as e:  # the task itself failed: worker lost, unpicklable...
+                result = {"returncode": -1, "stdout": "", "files": {},
+                          "stderr": f"dask task failed: {type(e).__name__}: {e}"}
+            run_dir = sweep.out / "runs" / run.key
+            write_run_folder(run_dir, result, argv)
+            result["argv"] = argv
+            on_done(run, result)
+    except KeyboardInterrupt:
+        client.cancel(list(futures), force=True)
+        raise Interrupted() from None
+    finally:
+        client.close()
+
+
+# ----------------------------------------------------------------------------------------
+# Command line
+
+
+def resolve_essaim(cli: str | None, sweep: Sweep, remote: bool) -> str:
+    """--essaim, else $ESSAIM, else the sweep file's `essaim`, else `essaim` on PATH."""
+    cand = cli or os.environ.get("ESSAIM") or sweep.essaim or "essaim"
+    if "/" in cand:
+        cand = os.path.abspath(cand)
+        if not remote and not os.access(cand, os.X_OK):
+            raise SweepError(f"essaim binary {cand} is not an executable file")
+        return cand
+    if remote:
+        return cand  # looked up on the workers' PATH
+    found = shutil.which(cand)
+    if not found:
+        raise SweepError(f"`{cand}` is not on PATH: pass --essaim PATH or set $ESSAIM")
+    return found
+
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(
+        prog="sweep.py", description="Run a parameter sweep of essaim experiments.",
+        epilog="Exit status: 0 all runs ok, 1 some runs failed, 2 bad input, 130 interrupted.")
+    ap.add_argument("sweep", help="the sweep file (TOML)")
+    ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1,
+                    help="essaim processes at a time (default: all cores, %(default)s)")
+    ap.add_argument("--scheduler", metavar="ADDR",
+                    help="run on a Dask cluster, e.g. tcp://host:8786 (-j is then ignored)")
+    ap.add_argument("--essaim", metavar="PATH",
+                    help="the essaim binary (default: $ESSAIM, the sweep file's `essaim`, or "
+                         "`essaim` on PATH)")
+    ap.add_argument("--out", metavar="DIR",
+                    help="output folder (default: the sweep file's `out`, relative to it)")
+    ap.add_argument("--dry-run", action="store_true",
+                    help="print the runs still to do and their command lines; run nothing")
+    ap.add_argument("--no-progress", action="store_true", help="no progress bar")
+    args = ap.parse_args(argv)
+    if args.jobs < 1:
+        ap.error("-j must be >= 1")
+    return args
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
+    try:
+        sweep = load_sweep(args.sweep, out=args.out)
+        runs = sweep.runs()
+        essaim = resolve_essaim(args.essaim, sweep, remote=bool(args.scheduler))
+    except SweepError as e:
+        print(f"sweep: {e}", file=sys.stderr)
+        return 2
+
+    todo = [r for r in runs
+            if not finished(sweep.out / "runs" / r.key,
+                            record_argv(sweep.argv(r, essaim, "")))]
+    skipped = len(runs) - len(todo)
+    n = min(args.jobs, max(1, len(todo)))
+    where = args.scheduler or f"{n} local process{'es' if n > 1 else ''}"
+    print(f"sweep: {len(runs)} runs ({len(runs) // len(sweep.seeds)} points x "
+          f"{len(sweep.seeds)} seeds), {skipped} already done, {len(todo)} to run on {where}; "
+          f"output in {sweep.out}", file=sys.stderr)
+    if args.dry_run:
+        for r in todo:
+            print(" ".join(sweep.argv(r, essaim, str(sweep.out / "runs" / r.key))))
+        return 0
+
+    sweep.out.mkdir(parents=True, exist_ok=True)
+    (sweep.out / "sweep.json").write_text(json.dumps(sweep.manifest(), indent=1) + "\n")
+
+    failures: dict[str, dict] = {}  # run key -> failed row, for runs of this invocation
+    done_now: set[str] = set()
+
+    from tqdm import tqdm
+    bar = tqdm(total=len(todo), unit="run", disable=args.no_progress or not todo,
+               dynamic_ncols=True, file=sys.stderr)
+
+    def on_done(run: Run, result: dict) -> None:
+        done_now.add(run.key)
+        run_dir = sweep.out / "runs" / run.key
+        if result["returncode"] != 0 or not (run_dir / "summary.json").is_file():
+            err = stderr_tail(result.get("stderr", "")) or (
+                f"exit {result['returncode']}" if result["returncode"] != 0
+                else "essaim exited 0 without writing summary.json")
+            failures[run.key] = failed_row(run, result["returncode"], err, result.get("host"))
+            bar.set_postfix(failed=len(failures), refresh=False)
+        bar.update(1)
+
+    old_term = signal.signal(signal.SIGTERM, _sigterm)
+    interrupted = False
+    try:
+        if args.scheduler:
+            run_dask(sweep, todo, essaim, args.scheduler, on_done)
+        else:
+            run_local(sweep, todo, essaim, args.jobs, on_done)
+    except Interrupted:
+        interrupted = True
+    except OSError as e:  # e.g. the scheduler cannot be reached
+        bar.close()
+        print(f"sweep: {e}", file=sys.stderr)
+        return 2
+    finally:
+        signal.signal(signal.SIGTERM, old_term)
+        bar.close()
+
+    # Rows in sweep order: failures of this invocation, and runs finished now or before
+    # (a run still to do that was interrupted has no row, whatever its folder holds).
+    pending = {r.key for r in todo} - done_now
+    rows = []
+    for r in runs:
+        run_dir = sweep.out / "runs" / r.key
+        if r.key in failures:
+            rows.append(failures[r.key])
+        elif r.key not in pending and (run_dir / "summary.json").is_file():
+            rows.append(ok_row(r, run_dir))
+    if rows:
+        write_table(make_table(rows), sweep.out)
+    ok = sum(1 for row in rows if row["status"] == "ok")
+    print(f"sweep: {ok} runs ok, {len(failures)} failed, {len(runs) - len(rows)} not run; "
+          f"table: {sweep.out / 'results.parquet'} ({len(rows)} rows)", file=sys.stderr)
+    if failures:
+        report_failures(list(failures.values()))
+    if interrupted:
+        print("sweep: interrupted; run the same command again to resume", file=sys.stderr)
+        return 130
+    return 1 if failures else 0
+
+
+def _sigterm(signum, frame):
+    """SIGTERM (e.g. from a batch system) stops the sweep like Ctrl-C."""
+    raise KeyboardInterrupt()
+
+
+def report_failures(rows: list[dict]) -> None:
+    """How many runs failed and why, grouped by the last line of their error."""
+    groups: dict[str, list[dict]] = {}
+    for row in rows:
+        last = (row["error"] or "").strip().splitlines()[-1:] or [""]
+        groups.setdefault(f"exit {row['returncode']}: {last[0]}", []).append(row)
+    print(f"sweep: {len(rows)} failed runs:", file=sys.stderr)
+    for why, grp in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        examples = ", ".join(r["run"] for r in grp[:3]) + (", ..." if len(grp) > 3 else "")
+        print(f"  {len(grp):5d} x {why}\n          e.g. {examples}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

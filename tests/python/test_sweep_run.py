@@ -1,0 +1,150 @@
+"""sweep.py against the essaim binary in $ESSAIM: a tiny sweep run locally and on a Dask
+LocalCluster, resuming, failed runs, and metrics from loop functions."""
+import json
+import time
+
+import pytest
+
+from conftest import load_module, need_python_deps, run_sweep, write_sweep
+
+need_python_deps()
+import pandas as pd  # noqa: E402
+
+QUANTITY = "arena.distribute.entity.quantity"
+TICKS = 20
+
+
+def tiny_sweep(tmp_path, name="s", **keys):
+    keys.setdefault("params", {QUANTITY: [2, 4]})
+    keys.setdefault("seeds", 2)
+    keys.setdefault("ticks", TICKS)
+    keys.setdefault("out", str(tmp_path / f"{name}-out"))
+    return write_sweep(tmp_path / f"{name}.toml", **keys), tmp_path / f"{name}-out"
+
+
+def read_json(p):
+    return json.loads(p.read_text())
+
+
+def check_table_against_runs(out):
+    """The table has one ok row per run, with the run's own summary.json values."""
+    df = pd.read_parquet(out / "results.parquet")
+    csv = pd.read_csv(out / "results.csv")
+    assert len(df) == len(csv) == 4
+    for col in ("run", "status", "returncode", "error", "seed", QUANTITY, "ticks", "robots",
+                "wall_seconds", "robot_steps_per_second", "summary.experiment_sha256"):
+        assert col in df.columns, col
+    assert df["status"].tolist() == ["ok"] * 4
+    assert sorted(zip(df[QUANTITY], df["seed"])) == [(2, 1), (2, 2), (4, 1), (4, 2)]
+    for _, row in df.iterrows():
+        summary = read_json(out / "runs" / row["run"] / "summary.json")
+        assert row["seed"] == summary["seed"]
+        assert row["ticks"] == summary["ticks"] == TICKS
+        assert row["robots"] == summary["robots"] == row[QUANTITY]
+        assert row["wall_seconds"] == pytest.approx(summary["wall_seconds"])
+        assert row["summary.essaim_version"] == summary["essaim_version"]
+        assert json.loads(row["summary.overrides"]) == summary["overrides"]
+    return df
+
+
+def test_local_sweep_then_resume(tmp_path, essaim):
+    s, out = tiny_sweep(tmp_path)
+    r = run_sweep(s, "-j", "2")
+    assert r.returncode == 0, r.stderr
+    df = check_table_against_runs(out)
+    assert df["run"].tolist() == ["quantity=2__seed=1", "quantity=2__seed=2",
+                                  "quantity=4__seed=1", "quantity=4__seed=2"]
+    assert (out / "sweep.json").is_file()
+
+    # Interrupted sweep: one run folder is gone. A rerun runs that one only.
+    mtimes = {k: (out / "runs" / k / "summary.json").stat().st_mtime_ns for k in df["run"]}
+    gone = "quantity=4__seed=1"
+    for f in (out / "runs" / gone).iterdir():
+        f.unlink()
+    (out / "runs" / gone).rmdir()
+    time.sleep(0.05)
+    r = run_sweep(s, "-j", "2")
+    assert r.returncode == 0, r.stderr
+    assert "3 already done, 1 to run" in r.stderr
+    for k, m in mtimes.items():
+        now = (out / "runs" / k / "summary.json").stat().st_mtime_ns
+        assert (now != m) == (k == gone), k
+    check_table_against_runs(out)
+
+    # Nothing left to do: nothing runs, the table is rewritten the same.
+    r = run_sweep(s)
+    assert r.returncode == 0 and "4 already done, 0 to run" in r.stderr
+
+
+def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
+    # A --set path that names no element (exit 2), and a controller error with --strict
+    # (exit 1), next to runs that succeed.
+    s, out = tiny_sweep(tmp_path, params={"controllers.ctrl.params.fail": [0, 1]},
+                        strict=True, seeds=1)
+    r = run_sweep(s)
+    assert r.returncode == 1, r.stderr
+    df = pd.read_parquet(out / "results.parquet").set_index("run")
+    assert df.loc["fail=0__seed=1", "status"] == "ok"
+    bad = df.loc["fail=1__seed=1"]
+    assert bad["status"] == "failed" and bad["returncode"] == 1
+    assert "deliberate failure" in bad["error"]
+    assert "1 failed" in r.stderr and "deliberate failure" in r.stderr
+
+    s, out = tiny_sweep(tmp_path, name="badpath", params={QUANTITY: [2],
+                                                          "arena.nosuchthing.attr": [1, 2]},
+                        seeds=1)
+    r = run_sweep(s)
+    assert r.returncode == 1
+    df = pd.read_parquet(out / "results.parquet")
+    assert df["status"].tolist() == ["failed", "failed"]
+    assert df["returncode"].tolist() == [2, 2]
+    assert all("nosuchthing" in e for e in df["error"])
+    assert "2 failed" in r.stderr and "2 x exit 2" in r.stderr
+
+    # A rerun tries the failed runs again (they have no summary.json).
+    r = run_sweep(s)
+    assert "0 already done, 2 to run" in r.stderr
+
+
+def test_dask_cluster_gives_the_same_table(tmp_path, essaim):
+    distributed = pytest.importorskip("distributed")
+    s, out_local = tiny_sweep(tmp_path, name="local")
+    assert run_sweep(s).returncode == 0
+    s, out = tiny_sweep(tmp_path, name="dask")
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                  dashboard_address=None) as cluster:
+        r = run_sweep(s, "--scheduler", cluster.scheduler_address)
+    assert r.returncode == 0, r.stderr
+    df = check_table_against_runs(out)
+    local = pd.read_parquet(out_local / "results.parquet")
+    timing = [c for c in df.columns if "seconds" in c or "per_second" in c
+              or c.startswith("summary.us_per")]
+    assert df.columns.tolist() == local.columns.tolist()
+    pd.testing.assert_frame_equal(df.drop(columns=timing), local.drop(columns=timing))
+    # The run folders were written on this side, from what the workers sent back.
+    for k in df["run"]:
+        assert (out / "runs" / k / "summary.json").is_file()
+
+
+def test_loop_function_metrics_become_columns(tmp_path, essaim):
+    s, out = tiny_sweep(tmp_path, experiment="tiny_loop.argos", params={QUANTITY: [3]},
+                        seeds=1)
+    r = run_sweep(s)
+    assert r.returncode == 0, r.stderr
+    df = pd.read_parquet(out / "results.parquet")
+    metrics = read_json(out / "runs" / df["run"][0] / "metrics.json")
+    row = df.iloc[0]
+    assert row["trips_per_source.A"] == metrics["trips_per_source"]["A"]
+    assert row["trips_per_source.B"] == metrics["trips_per_source"]["B"]
+    assert row["trips_total"] == metrics["trips_total"]
+    assert row["trips_per_robot_mean"] == pytest.approx(metrics["trips_per_robot_mean"])
+    assert not [c for c in df.columns if c.startswith("trips_per_robot.")]
+    assert json.loads(row["sources"]) == metrics["sources"]
+    assert json.loads(row["dead_robots"]) == metrics["dead_robots"]
+    assert row["dead_fraction"] == pytest.approx(metrics["dead_fraction"])
+    assert row["first_discovery_tick"] == metrics["first_discovery_tick"]
+    assert row["metrics.ticks"] == row["ticks"]  # clashes with summary's: prefixed
+    # And the figures can be drawn from it.
+    plot = load_module("plot")
+    files = plot.make_figures(df, tmp_path / "fig")
+    assert len(files) == 8
