@@ -301,14 +301,27 @@ def read_json(path: Path):
         return None
 
 
-def finished(run_dir: Path, argv_record: list[str]) -> bool:
-    """True when the folder holds a valid summary.json from the same command line."""
+def finished(run_dir: Path, argv_record: list[str], strict: bool = False) -> bool:
+    """True when the folder holds a valid summary.json of a successful run of this command line.
+
+    essaim writes summary.json last, also for runs that failed or were interrupted (with
+    `status` "failed"/"interrupted"): those are not finished. The sweep's own record says
+    which command line made the folder and how it exited; a folder without one (e.g. the
+    sweep was stopped just after essaim exited) is judged by its summary alone.
+    """
     summary = read_json(run_dir / "summary.json")
     if not isinstance(summary, dict):
         return False
+    if summary.get("status", "ok") in ("failed", "interrupted"):
+        return False
+    if strict and summary.get("controller_errors"):
+        return False
     record = read_json(run_dir / RUN_RECORD)
-    if isinstance(record, dict) and record.get("argv") != argv_record:
-        return False  # made by another version of the sweep file (other ticks, sets...)
+    if isinstance(record, dict):
+        if record.get("argv") != argv_record:
+            return False  # made by another version of the sweep file (other ticks, sets...)
+        if record.get("returncode") != 0:
+            return False
     return True
 
 
@@ -364,8 +377,8 @@ def write_run_folder(run_dir: Path, result: dict, argv: list[str]) -> None:
     for name, data in files.items():
         (run_dir / name).write_bytes(data)
     write_logs(run_dir, result)
-    if summary is not None and result["returncode"] == 0:
-        write_record(run_dir, argv, result)
+    write_record(run_dir, argv, result)
+    if summary is not None:
         tmp = run_dir / ".summary.json.tmp"
         tmp.write_bytes(summary)
         os.replace(tmp, run_dir / "summary.json")
@@ -439,10 +452,16 @@ def ok_row(run: Run, run_dir: Path, host: str | None = None) -> dict:
     return row
 
 
-def failed_row(run: Run, returncode: int, error: str, host: str | None = None) -> dict:
+def failed_row(run: Run, returncode: int, error: str, host: str | None = None,
+               run_dir: Path | None = None) -> dict:
+    """The row of a failed run: the sweep's columns, and its summary's when it wrote one."""
     row = {"run": run.key, "status": "failed", "returncode": returncode, "error": error,
            "seed": run.seed}
     row.update(run.params)
+    summary = read_json(run_dir / "summary.json") if run_dir else None
+    if isinstance(summary, dict):
+        for k, v in flatten_summary(summary).items():
+            row.setdefault(k, v)
     row["host"] = host
     return row
 
@@ -553,7 +572,7 @@ def run_local(sweep: Sweep, todo: list[Run], essaim: str, jobs: int, on_done) ->
                 run, result = res
                 run_dir = sweep.out / "runs" / run.key
                 write_logs(run_dir, result)
-                if result["returncode"] == 0 and (run_dir / "summary.json").is_file():
+                if "argv" in result:
                     write_record(run_dir, result["argv"], result)
                 on_done(run, result)
     except KeyboardInterrupt:
@@ -673,7 +692,7 @@ def main(argv=None) -> int:
 
     todo = [r for r in runs
             if not finished(sweep.out / "runs" / r.key,
-                            record_argv(sweep.argv(r, essaim, "")))]
+                            record_argv(sweep.argv(r, essaim, "")), sweep.strict)]
     skipped = len(runs) - len(todo)
     n = min(args.jobs, max(1, len(todo)))
     where = args.scheduler or f"{n} local process{'es' if n > 1 else ''}"
@@ -699,10 +718,13 @@ def main(argv=None) -> int:
         done_now.add(run.key)
         run_dir = sweep.out / "runs" / run.key
         if result["returncode"] != 0 or not (run_dir / "summary.json").is_file():
+            summary = read_json(run_dir / "summary.json")
             err = stderr_tail(result.get("stderr", "")) or (
+                summary.get("failure") if isinstance(summary, dict) else None) or (
                 f"exit {result['returncode']}" if result["returncode"] != 0
                 else "essaim exited 0 without writing summary.json")
-            failures[run.key] = failed_row(run, result["returncode"], err, result.get("host"))
+            failures[run.key] = failed_row(run, result["returncode"], err, result.get("host"),
+                                           run_dir)
             bar.set_postfix(failed=len(failures), refresh=False)
         bar.update(1)
 

@@ -32,7 +32,7 @@ def check_table_against_runs(out):
     csv = pd.read_csv(out / "results.csv")
     assert len(df) == len(csv) == 4
     for col in ("run", "status", "returncode", "error", "seed", QUANTITY, "ticks", "robots",
-                "wall_seconds", "robot_steps_per_second", "summary.experiment_sha256"):
+                "wall_seconds", "robot_steps_per_second", "summary.essaim_version"):
         assert col in df.columns, col
     assert df["status"].tolist() == ["ok"] * 4
     assert sorted(zip(df[QUANTITY], df["seed"])) == [(2, 1), (2, 2), (4, 1), (4, 2)]
@@ -89,6 +89,10 @@ def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
     assert bad["status"] == "failed" and bad["returncode"] == 1
     assert "deliberate failure" in bad["error"]
     assert "1 failed" in r.stderr and "deliberate failure" in r.stderr
+    # A rerun keeps the run that succeeded and tries the failed one again (essaim may have
+    # written a summary.json for it: it is not a finished run).
+    r = run_sweep(s)
+    assert r.returncode == 1 and "1 already done, 1 to run" in r.stderr
 
     s, out = tiny_sweep(tmp_path, name="badpath", params={QUANTITY: [2],
                                                           "arena.nosuchthing.attr": [1, 2]},

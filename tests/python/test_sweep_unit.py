@@ -177,3 +177,25 @@ def test_ctrl_c_kills_the_runs_and_exits_130(tmp_path):
     for pid in pids:
         with pytest.raises(ProcessLookupError):
             os.kill(pid, 0)
+
+
+def test_only_successful_runs_count_as_finished(tmp_path):
+    argv = ["run", "x.argos", "--quiet", "--seed", "1"]
+    d = tmp_path / "run"
+    d.mkdir()
+    assert not sweep.finished(d, argv)
+    (d / "summary.json").write_text("{not json")
+    assert not sweep.finished(d, argv)
+    for status, done in (("ok", True), ("controller_error", True), ("failed", False),
+                         ("interrupted", False)):
+        (d / "summary.json").write_text(json.dumps({"seed": 1, "status": status,
+                                                    "controller_errors": []}))
+        assert sweep.finished(d, argv) == done, status
+    (d / "summary.json").write_text(json.dumps({"seed": 1, "controller_errors": [{"robot": "a"}]}))
+    assert sweep.finished(d, argv) and not sweep.finished(d, argv, strict=True)
+    (d / "summary.json").write_text(json.dumps({"seed": 1}))
+    (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 0}))
+    assert sweep.finished(d, argv)
+    assert not sweep.finished(d, argv + ["--ticks", "5"])  # made by another command line
+    (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 1}))
+    assert not sweep.finished(d, argv)
