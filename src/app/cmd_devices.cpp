@@ -1,0 +1,26 @@
+// `essaim devices`: the device table, as the loader and the Lua host use it.
+#include <cstdio>
+
+#include "app/commands.h"
+#include "model/device_table.h"
+
+namespace essaim {
+
+int DevicesCommand(const std::vector<std::string>&) {
+  for (int sensors = 0; sensors < 2; ++sensors) {
+    std::printf("%s (inside <%s>)\n", sensors ? "SENSORS" : "ACTUATORS", sensors ? "sensors" : "actuators");
+    for (const DeviceRow& row : DeviceTable()) {
+      if (row.is_sensor != (sensors == 1)) continue;
+      std::printf("  <%s implementation=\"%s\">  -> robot.%s%s\n", row.xml_name, row.implementations, row.lua_key,
+                  row.supported ? "" : "   [not supported yet]");
+      std::printf("      %s\n", row.doc);
+      for (const DeviceAttr& a : row.attrs)
+        std::printf("      %-22s %s%s%s%s\n", a.name, a.doc, a.required ? " (required)" : "",
+                    a.default_value[0] ? ", default " : "", a.default_value);
+    }
+    std::printf("\n");
+  }
+  return 0;
+}
+
+}  // namespace essaim

@@ -1,0 +1,28 @@
+// Strict text parsing for XML attributes and the command line: no silent defaults.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace essaim {
+
+std::vector<std::string> Split(const std::string& s, char sep);
+std::string Trim(const std::string& s);
+/// Whole string must be a finite number.
+std::optional<double> ParseDouble(const std::string& s);
+std::optional<long long> ParseInt(const std::string& s);
+/// ARGoS accepts only the literals "true" and "false".
+std::optional<bool> ParseBool(const std::string& s);
+/// Exactly n comma-separated numbers.
+std::optional<std::vector<double>> ParseVector(const std::string& s, size_t n);
+/// "a:b"
+std::optional<std::pair<double, double>> ParseRange(const std::string& s);
+/// Shortest text that reads back as the same double ("%.17g" trimmed).
+std::string FormatDouble(double v);
+/// Folder part of a path ("" for a bare name), and path joining.
+std::string DirName(const std::string& path);
+std::string JoinPath(const std::string& dir, const std::string& rel);
+bool FileExists(const std::string& path);
+bool ReadFile(const std::string& path, std::string* out);
+
+}  // namespace essaim

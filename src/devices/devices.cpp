@@ -1,0 +1,47 @@
+#include "devices/devices.h"
+
+namespace essaim {
+
+void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics) {
+  const ControllerDef& c = model.controllers[def.controller];
+  robot.cmd.rab_data.assign(def.rab_data_size, 0);
+  robot.rab_data.assign(def.rab_data_size, 0);
+  robot.rd.rab.reserve(model.robots.size());
+  robot.rd.blobs.reserve(64);
+  for (const DeviceConfig& d : c.actuators)
+    if (d.type == DeviceType::WheelsActuator) InitWheelNoise(d, robot);
+  InitBattery(def.battery, robot, physics.RobotPose(robot.index));
+  // Readings visible in init(): the initial pose (spec §12).
+  if (const DeviceConfig* p = c.Find(DeviceType::PositioningSensor)) SensePositioning(*p, robot, physics);
+}
+
+void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics) {
+  const ControllerDef& c = model.controllers[def.controller];
+  if (!robot.alive) return;
+  for (const DeviceConfig& d : c.actuators) {
+    switch (d.type) {
+      case DeviceType::WheelsActuator: ActWheels(&d, robot, physics); break;
+      default: break;
+    }
+  }
+}
+
+void UpdateRobotComponents(const Model&, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics,
+                           uint64_t tick) {
+  if (!robot.alive) return;
+  DischargeBattery(def.battery, robot, physics.RobotPose(robot.index), tick);
+}
+
+void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot) {
+  const ControllerDef& c = ctx.model.controllers[def.controller];
+  for (const DeviceConfig& d : c.sensors) {
+    switch (d.type) {
+      case DeviceType::WheelsSensor: SenseWheels(d, robot, ctx.dt); break;
+      case DeviceType::PositioningSensor: SensePositioning(d, robot, ctx.physics); break;
+      case DeviceType::BatterySensor: SenseBattery(d, def.battery, robot, ctx.dt); break;
+      default: break;
+    }
+  }
+}
+
+}  // namespace essaim

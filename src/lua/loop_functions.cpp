@@ -1,0 +1,420 @@
+#include "lua/loop_functions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <lua.hpp>
+
+#include "core/color.h"
+#include "core/strings.h"
+#include "lua/lua_math_types.h"
+#include "lua/lua_random.h"
+
+namespace essaim {
+
+void OpenLibraries(lua_State* L, bool sandbox);  // lua_state.cpp
+
+struct LoopFunctionsAccess {
+  static LoopFunctions* Self(lua_State* L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, "essaim.loop");
+    auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
+    lua_pop(L, 1);
+    return lf;
+  }
+  static int RobotIndex(lua_State* L) {
+    int* p = static_cast<int*>(luaL_checkudata(L, 1, "essaim.robot_handle"));
+    return *p;
+  }
+  static int Position(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    Pose2 p = lf->physics_->RobotPose(RobotIndex(L));
+    lua_pushnumber(L, p.x);
+    lua_pushnumber(L, p.y);
+    return 2;
+  }
+  static int Heading(lua_State* L) {
+    lua_pushnumber(L, WrapSigned(Self(L)->physics_->RobotPose(RobotIndex(L)).yaw));
+    return 1;
+  }
+  static int SetPose(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    lf->physics_->SetRobotPose(i, {luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_optnumber(L, 4, 0)});
+    return 0;
+  }
+  static int Battery(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    lua_pushnumber(L, (*lf->robots_)[i].battery.charge / lf->model_->robots[i].battery.full_charge);
+    return 1;
+  }
+  static int SetBattery(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    double c = luaL_checknumber(L, 2);
+    if (c < 0 || c > 1) return luaL_error(L, "set_battery: charge must be in [0, 1], got %f", c);
+    (*lf->robots_)[i].battery.charge = c * lf->model_->robots[i].battery.full_charge;
+    return 0;
+  }
+  static int Alive(lua_State* L) {
+    lua_pushboolean(L, (*Self(L)->robots_)[RobotIndex(L)].alive);
+    return 1;
+  }
+  static int Kill(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    RobotState& r = (*lf->robots_)[i];
+    r.alive = false;
+    r.wheel_left = r.wheel_right = 0;
+    lf->physics_->FreezeRobot(i);
+    return 0;
+  }
+  static int ControllerOk(lua_State* L) {
+    lua_pushboolean(L, (*Self(L)->robots_)[RobotIndex(L)].controller_ok);
+    return 1;
+  }
+  static int Led(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    lua_Integer k = luaL_checkinteger(L, 2);
+    if (k < 1 || k > footbot::kLedCount) return luaL_error(L, "led index must be 1..13");
+    const Color& c = (*lf->robots_)[i].leds[k - 1];
+    lua_pushinteger(L, c.r);
+    lua_pushinteger(L, c.g);
+    lua_pushinteger(L, c.b);
+    return 3;
+  }
+  static int HandleIndex(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    int i = RobotIndex(L);
+    const char* k = luaL_checkstring(L, 2);
+    if (!std::strcmp(k, "id")) return lua_pushstring(L, lf->model_->robots[i].id.c_str()), 1;
+    if (!std::strcmp(k, "index")) return lua_pushinteger(L, i + 1), 1;
+    luaL_getmetatable(L, "essaim.robot_handle");
+    lua_getfield(L, -1, k);
+    return 1;
+  }
+  static int Timeseries(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    luaL_checktype(L, 1, LUA_TTABLE);
+    lua_Integer n = luaL_len(L, 1);
+    bool first = lf->series_.columns.empty() && lf->series_.rows.empty();
+    if (!first && static_cast<size_t>(n) != lf->series_.columns.size())
+      return luaL_error(L, "timeseries: row has %d columns, the first row had %d", (int)n, (int)lf->series_.columns.size());
+    std::vector<double> row;
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_rawgeti(L, 1, k);
+      if (!lua_istable(L, -1)) return luaL_error(L, "timeseries: each item must be {name, value}");
+      lua_rawgeti(L, -1, 1);
+      lua_rawgeti(L, -2, 2);
+      const char* name = lua_tostring(L, -2);
+      if (!name || !lua_isnumber(L, -1)) return luaL_error(L, "timeseries: item %d must be {name, number}", (int)k);
+      if (first) lf->series_.columns.push_back(name);
+      else if (lf->series_.columns[k - 1] != name)
+        return luaL_error(L, "timeseries: column %d is '%s', expected '%s'", (int)k, name, lf->series_.columns[k - 1].c_str());
+      row.push_back(lua_tonumber(L, -1));
+      lua_pop(L, 3);
+    }
+    lf->series_.rows.push_back(std::move(row));
+    return 0;
+  }
+};
+
+namespace {
+int Traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
+  return 1;
+}
+
+int LoopLog(lua_State* L) {
+  auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  char stream = static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
+  *log += stream;
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    if (lua_type(L, i) == LUA_TNUMBER) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", lua_tonumber(L, i));
+      *log += buf;
+    } else if (lua_type(L, i) == LUA_TBOOLEAN) {
+      *log += lua_toboolean(L, i) ? "1" : "0";
+    } else {
+      *log += luaL_tolstring(L, i, nullptr);
+      lua_pop(L, 1);
+    }
+    if (stream == 'P' && i < n) *log += '\t';
+  }
+  *log += '\n';
+  return 0;
+}
+
+// A Lua value as JSON: a table with keys 1..n only is an array (empty → []); other
+// tables are objects with keys sorted, so metrics.json does not depend on hashing.
+bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
+  idx = lua_absindex(L, idx);
+  if (depth > 32) {
+    *error = "table nested too deep (cycle?)";
+    return false;
+  }
+  switch (lua_type(L, idx)) {
+    case LUA_TNIL: *out = Json(); return true;
+    case LUA_TBOOLEAN: *out = Json::Bool(lua_toboolean(L, idx)); return true;
+    case LUA_TNUMBER:
+      if (lua_isinteger(L, idx)) *out = Json::Int(lua_tointeger(L, idx));
+      else *out = Json::Number(lua_tonumber(L, idx));
+      return true;
+    case LUA_TSTRING: *out = Json::String(lua_tostring(L, idx)); return true;
+    case LUA_TTABLE: {
+      lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
+      size_t count = 0;
+      bool all_int = true;
+      std::vector<std::string> keys;
+      lua_pushnil(L);
+      while (lua_next(L, idx)) {
+        ++count;
+        if (lua_type(L, -2) == LUA_TSTRING) keys.push_back(lua_tostring(L, -2));
+        else if (lua_isinteger(L, -2)) keys.push_back(std::to_string(lua_tointeger(L, -2)));
+        else {
+          lua_pop(L, 2);
+          *error = "table keys must be strings or integers";
+          return false;
+        }
+        all_int &= lua_isinteger(L, -2) != 0;
+        lua_pop(L, 1);
+      }
+      if (count == static_cast<size_t>(n) && all_int) {
+        *out = Json::Array();
+        for (lua_Integer k = 1; k <= n; ++k) {
+          lua_rawgeti(L, idx, k);
+          Json v;
+          bool ok = ToJson(L, -1, &v, depth + 1, error);
+          lua_pop(L, 1);
+          if (!ok) return false;
+          out->Push(std::move(v));
+        }
+        return true;
+      }
+      std::sort(keys.begin(), keys.end());
+      *out = Json::Object();
+      for (const std::string& k : keys) {
+        auto as_int = ParseInt(k);
+        if (as_int && lua_rawgeti(L, idx, *as_int) != LUA_TNIL) {
+        } else {
+          lua_pop(L, 1);
+          lua_getfield(L, idx, k.c_str());
+        }
+        Json v;
+        bool ok = ToJson(L, -1, &v, depth + 1, error);
+        lua_pop(L, 1);
+        if (!ok) return false;
+        out->Set(k, std::move(v));
+      }
+      return true;
+    }
+    default:
+      *error = std::string("cannot write a ") + luaL_typename(L, idx) + " to JSON";
+      return false;
+  }
+}
+}  // namespace
+
+LoopFunctions::~LoopFunctions() {
+  if (L_) lua_close(L_);
+}
+
+bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
+                         const std::string& output_dir, std::string* error) {
+  model_ = &model;
+  robots_ = robots;
+  physics_ = physics;
+  script_ = model.loop_functions.script;
+  if (script_.empty()) return true;
+  L_ = luaL_newstate();
+  lua_State* L = L_;
+  OpenLibraries(L, false);
+  lua_pushlightuserdata(L, this);
+  lua_setfield(L, LUA_REGISTRYINDEX, "essaim.loop");
+  lua_pushcfunction(L, Traceback);
+  traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  OpenMathTypes(L);
+  const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}, {"print", 'P'}};
+  for (auto [name, stream] : logs) {
+    lua_pushlightuserdata(L, &log_);
+    lua_pushinteger(L, stream == 'P' ? 'O' : stream);
+    lua_pushcclosure(L, LoopLog, 2);
+    lua_setglobal(L, name);
+  }
+  {
+    // math.random seeded from the experiment, like the controllers'.
+    uint64_t s = DeriveSeed(model.experiment.seed, StreamKind::LoopFunctions, 1);
+    lua_getglobal(L, "math");
+    lua_getfield(L, -1, "randomseed");
+    lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
+    lua_call(L, 1, 0);
+    lua_pop(L, 1);
+  }
+  static const luaL_Reg handle_methods[] = {
+      {"position", LoopFunctionsAccess::Position}, {"heading", LoopFunctionsAccess::Heading},
+      {"set_pose", LoopFunctionsAccess::SetPose},  {"battery", LoopFunctionsAccess::Battery},
+      {"set_battery", LoopFunctionsAccess::SetBattery}, {"alive", LoopFunctionsAccess::Alive},
+      {"kill", LoopFunctionsAccess::Kill},         {"led", LoopFunctionsAccess::Led},
+      {"controller_ok", LoopFunctionsAccess::ControllerOk}, {nullptr, nullptr}};
+  luaL_newmetatable(L, "essaim.robot_handle");
+  luaL_setfuncs(L, handle_methods, 0);
+  lua_pushcfunction(L, LoopFunctionsAccess::HandleIndex);
+  lua_setfield(L, -2, "__index");
+  lua_pop(L, 1);
+
+  lua_newtable(L);  // experiment
+  lua_pushinteger(L, 0);
+  lua_setfield(L, -2, "tick");
+  lua_pushinteger(L, model.experiment.ticks_per_second);
+  lua_setfield(L, -2, "ticks_per_second");
+  lua_pushinteger(L, static_cast<lua_Integer>(model.experiment.length_ticks));
+  lua_setfield(L, -2, "length_ticks");
+  lua_pushinteger(L, static_cast<lua_Integer>(model.experiment.seed));
+  lua_setfield(L, -2, "seed");
+  lua_pushstring(L, output_dir.c_str());
+  lua_setfield(L, -2, "output_dir");
+  lua_newtable(L);
+  for (const auto& kv : model.loop_functions.params) {
+    lua_pushstring(L, kv.second.c_str());
+    lua_setfield(L, -2, kv.first.c_str());
+  }
+  lua_setfield(L, -2, "params");
+  lua_newtable(L);
+  const std::pair<const char*, double> arena[] = {{"size_x", model.arena.size.x()}, {"size_y", model.arena.size.y()},
+                                                  {"center_x", model.arena.center.x()}, {"center_y", model.arena.center.y()}};
+  for (auto [k, v] : arena) {
+    lua_pushnumber(L, v);
+    lua_setfield(L, -2, k);
+  }
+  lua_setfield(L, -2, "arena");
+  lua_createtable(L, static_cast<int>(robots->size()), 0);
+  for (size_t i = 0; i < robots->size(); ++i) {
+    *static_cast<int*>(lua_newuserdatauv(L, sizeof(int), 0)) = static_cast<int>(i);
+    luaL_setmetatable(L, "essaim.robot_handle");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "robots");
+  rng_.Seed(DeriveSeed(model.experiment.seed, StreamKind::LoopFunctions, 0));
+  PushRandomTable(L, &rng_);
+  lua_setfield(L, -2, "random");
+  lua_pushcfunction(L, LoopFunctionsAccess::Timeseries);
+  lua_setfield(L, -2, "timeseries");
+  lua_setglobal(L, "experiment");
+
+  std::string dir = DirName(script_);
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "path");
+  std::string path = (dir.empty() ? std::string("./?.lua;") : dir + "/?.lua;") + lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_pushstring(L, path.c_str());
+  lua_setfield(L, -2, "path");
+  lua_pop(L, 1);
+
+  if (luaL_loadfile(L, script_.c_str()) != LUA_OK) {
+    *error = "loop functions: " + std::string(lua_tostring(L, -1));
+    return false;
+  }
+  return PCall(0, 0, "top level", error);
+}
+
+void LoopFunctions::SetTick(uint64_t tick) {
+  if (!L_) return;
+  lua_getglobal(L_, "experiment");
+  lua_pushinteger(L_, static_cast<lua_Integer>(tick));
+  lua_setfield(L_, -2, "tick");
+  lua_pop(L_, 1);
+}
+
+bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string* error) {
+  lua_State* L = L_;
+  int fn = lua_gettop(L) - nargs;
+  lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
+  lua_insert(L, fn);
+  if (lua_pcall(L, nargs, nresults, fn) != LUA_OK) {
+    *error = "loop functions (" + std::string(what) + "): " + lua_tostring(L, -1);
+    lua_settop(L, 0);
+    return false;
+  }
+  lua_remove(L, fn);
+  return true;
+}
+
+bool LoopFunctions::HasFunction(const char* name) {
+  if (!L_) return false;
+  bool has = lua_getglobal(L_, name) == LUA_TFUNCTION;
+  lua_pop(L_, 1);
+  return has;
+}
+
+bool LoopFunctions::Call(const char* name, std::string* error) {
+  if (!L_) return true;
+  if (lua_getglobal(L_, name) != LUA_TFUNCTION) {
+    lua_pop(L_, 1);
+    return true;
+  }
+  bool ok = PCall(0, 0, name, error);
+  lua_settop(L_, 0);
+  return ok;
+}
+
+bool LoopFunctions::FloorColor(double x, double y, Color* out, std::string* error) {
+  lua_State* L = L_;
+  lua_getglobal(L, "floor_color");
+  lua_pushnumber(L, x);
+  lua_pushnumber(L, y);
+  if (!PCall(2, 3, "floor_color", error)) return false;
+  bool ok = true;
+  if (lua_type(L, -3) == LUA_TSTRING) {
+    auto c = ParseColor(lua_tostring(L, -3));
+    if (c) *out = *c;
+    else ok = false;
+  } else if (lua_isnumber(L, -3) && lua_isnumber(L, -2) && lua_isnumber(L, -1)) {
+    auto byte = [&](int i) { return static_cast<unsigned char>(std::clamp(lua_tonumber(L, i), 0.0, 255.0)); };
+    *out = Color{byte(-3), byte(-2), byte(-1), 255};
+  } else {
+    ok = false;
+  }
+  lua_settop(L, 0);
+  if (!ok) *error = "loop functions: floor_color(x, y) must return r, g, b (0-255) or a colour name";
+  return ok;
+}
+
+bool LoopFunctions::IsExperimentFinished(bool* finished, std::string* error) {
+  *finished = false;
+  if (!L_) return true;
+  if (lua_getglobal(L_, "is_experiment_finished") != LUA_TFUNCTION) {
+    lua_pop(L_, 1);
+    return true;
+  }
+  if (!PCall(0, 1, "is_experiment_finished", error)) return false;
+  *finished = lua_toboolean(L_, -1);
+  lua_settop(L_, 0);
+  return true;
+}
+
+bool LoopFunctions::PostExperiment(Json* metrics, bool* has_metrics, std::string* error) {
+  *has_metrics = false;
+  if (!L_) return true;
+  if (lua_getglobal(L_, "post_experiment") != LUA_TFUNCTION) {
+    lua_pop(L_, 1);
+    return true;
+  }
+  if (!PCall(0, 1, "post_experiment", error)) return false;
+  if (lua_istable(L_, -1)) {
+    std::string err;
+    if (!ToJson(L_, -1, metrics, 0, &err)) {
+      *error = "loop functions: post_experiment() result: " + err;
+      lua_settop(L_, 0);
+      return false;
+    }
+    *has_metrics = true;
+  }
+  lua_settop(L_, 0);
+  return true;
+}
+
+}  // namespace essaim

@@ -1,0 +1,60 @@
+// Lua loop functions (docs/loop-functions.md): experiment logic in a script of its own
+// state, reading and steering every robot through handles.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/json.h"
+#include "devices/robot_state.h"
+#include "model/model.h"
+#include "physics/physics_world.h"
+
+struct lua_State;
+
+namespace essaim {
+
+struct Timeseries {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+};
+
+class LoopFunctions {
+ public:
+  LoopFunctions() = default;
+  ~LoopFunctions();
+  LoopFunctions(const LoopFunctions&) = delete;
+  LoopFunctions& operator=(const LoopFunctions&) = delete;
+
+  /// Loads the script and runs its top-level chunk. `robots` and `physics` must outlive it.
+  bool Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
+            const std::string& output_dir, std::string* error);
+  bool Loaded() const { return L_ != nullptr; }
+  void SetTick(uint64_t tick);
+
+  bool HasFunction(const char* name);
+  /// floor_color(x, y) → colour; false with `error` on a Lua error or bad return.
+  bool FloorColor(double x, double y, Color* out, std::string* error);
+  bool Call(const char* name, std::string* error);  // init, pre_step, post_step, reset, destroy
+  bool IsExperimentFinished(bool* finished, std::string* error);
+  /// post_experiment(): the returned table as JSON (`has_metrics` false when nil).
+  bool PostExperiment(Json* metrics, bool* has_metrics, std::string* error);
+
+  const Timeseries& Series() const { return series_; }
+  std::string& LogBuffer() { return log_; }
+
+ private:
+  bool PCall(int nargs, int nresults, const char* what, std::string* error);
+  lua_State* L_ = nullptr;
+  std::string script_;
+  int traceback_ref_ = -1;
+  std::string log_;
+  Timeseries series_;
+  Rng rng_;
+  // Context the robot handles reach through the registry.
+  const Model* model_ = nullptr;
+  std::vector<RobotState>* robots_ = nullptr;
+  PhysicsWorld* physics_ = nullptr;
+  friend struct LoopFunctionsAccess;
+};
+
+}  // namespace essaim

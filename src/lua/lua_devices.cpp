@@ -1,0 +1,64 @@
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+RobotState* UpvalueRobot(lua_State* L) { return static_cast<RobotState*>(lua_touserdata(L, lua_upvalueindex(1))); }
+
+void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot) {
+  t = lua_absindex(L, t);
+  lua_pushlightuserdata(L, robot);
+  lua_pushcclosure(L, f, 1);
+  lua_setfield(L, t, name);
+}
+
+int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref) {
+  robot_index = lua_absindex(L, robot_index);
+  if (lua_getfield(L, robot_index, key) != LUA_TTABLE) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, robot_index, key);
+  }
+  if (*ref < 0) {
+    lua_pushvalue(L, -1);
+    *ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  }
+  return lua_gettop(L);
+}
+
+void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot,
+                        LuaDeviceRefs* refs) {
+  int robot_t = lua_gettop(L);
+  for (const DeviceConfig& d : c.actuators) {
+    switch (d.type) {
+      case DeviceType::WheelsActuator:
+        CreateWheelsActuator(L, DeviceTable(L, robot_t, "wheels", &refs->wheels), robot);
+        break;
+      default: break;
+    }
+    lua_settop(L, robot_t);
+  }
+  for (const DeviceConfig& d : c.sensors) {
+    switch (d.type) {
+      case DeviceType::WheelsSensor: CreateWheelsSensor(L, DeviceTable(L, robot_t, "wheels", &refs->wheels)); break;
+      case DeviceType::PositioningSensor: DeviceTable(L, robot_t, "positioning", &refs->positioning); break;
+      case DeviceType::BatterySensor: DeviceTable(L, robot_t, "battery", &refs->battery); break;
+      default: break;
+    }
+    lua_settop(L, robot_t);
+  }
+}
+
+void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs) {
+  const Readings& rd = robot.rd;
+  for (const DeviceConfig& d : c.sensors) {
+    switch (d.type) {
+      case DeviceType::WheelsSensor: PushWheels(L, refs->wheels, rd); break;
+      case DeviceType::PositioningSensor: PushPositioning(L, refs->positioning, rd); break;
+      case DeviceType::BatterySensor: PushBattery(L, refs->battery, rd); break;
+      default: break;
+    }
+  }
+}
+
+}  // namespace essaim

@@ -1,0 +1,34 @@
+// Lua tables of the foot-bot devices (spec §8.3): created once per robot, refreshed in
+// place every tick. One Create/Push pair per device family in lua/bind_*.cpp; the
+// switches in lua_devices.cpp dispatch on DeviceType.
+#pragma once
+#include <lua.hpp>
+
+#include "devices/robot_state.h"
+#include "lua/lua_device_refs.h"
+#include "model/model.h"
+
+namespace essaim {
+
+
+/// With the `robot` table at the top of the stack, adds every device table of the
+/// controller (actuators then sensors, alphabetical, as ARGoS).
+void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef& def, RobotState* robot,
+                        LuaDeviceRefs* refs);
+/// Copies the readings of every sensor into the tables.
+void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs);
+
+/// Gets (creating if needed) robot[key] as a table, leaves it on the stack, returns a ref.
+int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref);
+/// Pushes the RobotState* upvalue closure into table at `t`.
+void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot);
+RobotState* UpvalueRobot(lua_State* L);
+
+// ---- device families (lua/bind_*.cpp)
+void CreateWheelsActuator(lua_State* L, int t, RobotState* robot);
+void CreateWheelsSensor(lua_State* L, int t);
+void PushWheels(lua_State* L, int ref, const Readings& rd);
+void PushPositioning(lua_State* L, int ref, const Readings& rd);
+void PushBattery(lua_State* L, int ref, const Readings& rd);
+
+}  // namespace essaim

@@ -1,0 +1,231 @@
+#include "lua/lua_state.h"
+
+#include <cstdlib>
+#include <cstring>
+
+#include <lua.hpp>
+
+#include "core/rng.h"
+#include "core/strings.h"
+#include "lua/lua_devices.h"
+#include "lua/lua_math_types.h"
+#include "lua/lua_random.h"
+
+namespace essaim {
+
+namespace {
+void* CountingAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
+  auto* a = static_cast<LuaAllocator*>(ud);
+  size_t old = ptr ? osize : 0;
+  if (nsize == 0) {
+    std::free(ptr);
+    a->bytes -= old;
+    return nullptr;
+  }
+  if (a->limit && a->bytes - old + nsize > a->limit) return nullptr;  // Lua raises "not enough memory"
+  void* p = std::realloc(ptr, nsize);
+  if (p) {
+    a->bytes = a->bytes - old + nsize;
+    if (a->bytes > a->peak) a->peak = a->bytes;
+    ++a->allocations;
+  }
+  return p;
+}
+
+int Traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) {
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  }
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
+// ARGoS's log(): arguments concatenated without separator; numbers as C++ streams print
+// them (6 significant digits), booleans 1/0, other types by name.
+void AppendArgs(lua_State* L, std::string* out, const char* sep) {
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    if (i > 1) *out += sep;
+    switch (lua_type(L, i)) {
+      case LUA_TNUMBER: {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", lua_tonumber(L, i));
+        *out += buf;
+        break;
+      }
+      case LUA_TSTRING: *out += lua_tostring(L, i); break;
+      case LUA_TBOOLEAN: *out += lua_toboolean(L, i) ? "1" : "0"; break;
+      default: *out += luaL_typename(L, i);
+    }
+  }
+}
+
+int LogTo(lua_State* L, char stream) {
+  auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  *log += stream;
+  AppendArgs(L, log, "");
+  *log += '\n';
+  return 0;
+}
+int Log(lua_State* L) { return LogTo(L, 'O'); }
+int LogErr(lua_State* L) { return LogTo(L, 'E'); }
+int Print(lua_State* L) {
+  // Lua's print, routed through the buffer so output keeps robot order under threads.
+  auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  *log += 'O';
+  int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    if (i > 1) *log += '\t';
+    *log += luaL_tolstring(L, i, nullptr);
+    lua_pop(L, 1);
+  }
+  *log += '\n';
+  return 0;
+}
+
+struct HookBudget {
+  long long limit = 0;
+  long long used = 0;
+};
+constexpr int kHookEvery = 1000;
+void InstructionHook(lua_State* L, lua_Debug*) {
+  lua_getfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+  auto* b = static_cast<HookBudget*>(lua_touserdata(L, -1));
+  lua_pop(L, 1);
+  if (b && (b->used += kHookEvery) > b->limit) luaL_error(L, "instruction limit exceeded (%lld per call)", b->limit);
+}
+}  // namespace
+
+/// Opens the standard libraries; the sandbox drops io, os and the loaders that reach files.
+void OpenLibraries(lua_State* L, bool sandbox) {
+  luaL_openlibs(L);
+  if (sandbox) {
+    for (const char* name : {"io", "os", "dofile", "loadfile"}) {
+      lua_pushnil(L);
+      lua_setglobal(L, name);
+    }
+  }
+}
+
+LuaController::~LuaController() {
+  if (L_) lua_close(L_);
+}
+
+bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
+                         const LuaOptions& options, std::string* error) {
+  robot_ = robot;
+  def_ = &def;
+  controller_ = &model.controllers[def.controller];
+  alloc_.limit = options.sandbox ? options.memory_limit : 0;
+  L_ = lua_newstate(CountingAlloc, &alloc_);
+  if (!L_) {
+    *error = "robot " + def.id + ": cannot create a Lua state";
+    return false;
+  }
+  lua_State* L = L_;
+  OpenLibraries(L, options.sandbox);
+  // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
+  {
+    uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index);
+    lua_getglobal(L, "math");
+    lua_getfield(L, -1, "randomseed");
+    lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
+    lua_pushinteger(L, static_cast<lua_Integer>(robot->index));
+    lua_call(L, 2, 0);
+    lua_pop(L, 1);
+  }
+  lua_pushcfunction(L, Traceback);
+  traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  if (options.sandbox && options.instruction_limit > 0) {
+    instruction_limit_ = options.instruction_limit;
+    auto* b = static_cast<HookBudget*>(lua_newuserdatauv(L, sizeof(HookBudget), 0));
+    *b = HookBudget{options.instruction_limit, 0};
+    lua_setfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+    lua_sethook(L, InstructionHook, LUA_MASKCOUNT, kHookEvery);
+  }
+  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
+    lua_pushlightuserdata(L, &log_);
+    lua_pushcclosure(L, fn, 1);
+    lua_setglobal(L, name);
+  }
+  OpenMathTypes(L);
+
+  // The robot table, in ARGoS's order: id, random, actuators, sensors, params.
+  lua_newtable(L);
+  lua_pushstring(L, def.id.c_str());
+  lua_setfield(L, -2, "id");
+  PushRandomTable(L, &robot->controller_rng);
+  lua_setfield(L, -2, "random");
+  CreateDeviceTables(L, *controller_, def, robot, &refs_);
+  lua_newtable(L);
+  for (const auto& kv : def.params) {
+    lua_pushstring(L, kv.second.c_str());
+    lua_setfield(L, -2, kv.first.c_str());
+  }
+  lua_setfield(L, -2, "params");
+  lua_setglobal(L, "robot");
+  PushReadings();
+
+  const std::string& script = controller_->script;
+  if (script.empty()) return true;  // ARGoS allows a controller without script
+  // `require` finds modules next to the script.
+  std::string dir = DirName(script);
+  std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "path");
+  std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
+  lua_pop(L, 1);
+  lua_pushstring(L, path.c_str());
+  lua_setfield(L, -2, "path");
+  lua_pop(L, 1);
+
+  lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
+  int base = lua_gettop(L);
+  if (luaL_loadfile(L, script.c_str()) != LUA_OK) {
+    *error = "robot " + def.id + ": " + lua_tostring(L, -1);
+    lua_settop(L, 0);
+    return false;
+  }
+  if (lua_pcall(L, 0, 0, base) != LUA_OK) {
+    *error = "robot " + def.id + ": " + lua_tostring(L, -1);
+    lua_settop(L, 0);
+    return false;
+  }
+  lua_settop(L, 0);
+  return true;
+}
+
+void LuaController::PushReadings() {
+  PushDeviceReadings(L_, *controller_, *robot_, &refs_);
+}
+
+bool LuaController::Call(const char* fn, bool required, std::string* error) {
+  lua_State* L = L_;
+  if (controller_->script.empty()) return true;
+  lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
+  int base = lua_gettop(L);
+  if (lua_getglobal(L, fn) != LUA_TFUNCTION) {
+    lua_settop(L, 0);
+    if (!required) return true;
+    *error = "robot " + def_->id + ": " + controller_->script + ": no global function '" + fn + "'";
+    return false;
+  }
+  if (instruction_limit_ > 0) {
+    lua_getfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+    static_cast<HookBudget*>(lua_touserdata(L, -1))->used = 0;
+    lua_pop(L, 1);
+  }
+  int status = lua_pcall(L, 0, 0, base);
+  if (status != LUA_OK) {
+    const char* msg = lua_tostring(L, -1);
+    *error = "robot " + def_->id + ": " + (msg ? msg : "error") + " (in " + fn + ")";
+    lua_settop(L, 0);
+    return false;
+  }
+  lua_settop(L, 0);
+  return true;
+}
+
+}  // namespace essaim

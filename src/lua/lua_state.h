@@ -1,0 +1,70 @@
+// One robot's Lua controller: its own lua_State, the `robot` table, and the ARGoS
+// lifecycle (init, step, reset, destroy). The only place besides loop_functions that
+// touches the Lua C API for controllers.
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "devices/robot_state.h"
+#include "lua/lua_device_refs.h"
+#include "model/model.h"
+
+struct lua_State;
+
+namespace essaim {
+
+struct LuaOptions {
+  bool sandbox = false;            // drop io/os, cap memory and instructions
+  size_t memory_limit = 0;         // bytes per state; 0 = none
+  long long instruction_limit = 0; // per call; 0 = none
+};
+
+/// Counts a state's bytes; enforces the memory cap.
+struct LuaAllocator {
+  size_t bytes = 0;
+  size_t peak = 0;
+  size_t limit = 0;
+  size_t allocations = 0;  // number of (re)allocations, for the no-churn test
+};
+
+class LuaController {
+ public:
+  LuaController() = default;
+  ~LuaController();
+  // Lua keeps a pointer to alloc_ and closures keep `this`: never copied or moved.
+  LuaController(const LuaController&) = delete;
+  LuaController& operator=(const LuaController&) = delete;
+
+  /// Builds the state and the robot table and runs the script's top-level chunk
+  /// (not init). On failure returns false with `error` naming the script and line.
+  bool Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
+            const LuaOptions& options, std::string* error);
+  /// Copies the robot's Readings into its Lua tables (in place).
+  void PushReadings();
+  /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
+  bool CallInit(std::string* error) { return Call("init", true, error); }
+  bool CallStep(std::string* error) { return Call("step", true, error); }
+  bool CallReset(std::string* error) { return Call("reset", false, error); }
+  bool CallDestroy(std::string* error) { return Call("destroy", false, error); }
+
+  /// log()/logerr() output since the last take, in call order ("" if none). Buffered so
+  /// robots stepped on several threads still print in robot order.
+  std::string& LogBuffer() { return log_; }
+  const LuaAllocator& Memory() const { return alloc_; }
+  ::lua_State* State() { return L_; }
+
+ private:
+  bool Call(const char* fn, bool required, std::string* error);
+
+  ::lua_State* L_ = nullptr;
+  LuaAllocator alloc_;
+  RobotState* robot_ = nullptr;
+  const RobotDef* def_ = nullptr;
+  const ControllerDef* controller_ = nullptr;
+  std::string log_;
+  int traceback_ref_ = -1;
+  long long instruction_limit_ = 0;
+  LuaDeviceRefs refs_;  // device tables refreshed each tick
+};
+
+}  // namespace essaim

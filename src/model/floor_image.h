@@ -1,0 +1,15 @@
+// Floor images: PNG files read with libpng, stored bottom row first (spec §4.3: the
+// image's bottom-left pixel sits at the arena's min corner).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace essaim {
+
+/// Loads `path` as RGB(A); false with `error` set when it cannot be read.
+bool LoadPngBottomUp(const std::string& path, int* width, int* height, std::vector<Color>* pixels,
+                     std::string* error);
+
+}  // namespace essaim

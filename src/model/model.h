@@ -1,0 +1,190 @@
+// The Model: everything fixed once an experiment is loaded (MuJoCo's mjModel). Plain defs
+// with defaults and units; built by the loader, then const and shared by every thread.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "model/device_params.h"
+#include "model/device_table.h"
+
+namespace essaim {
+
+/// Foot-bot constants (spec §1).
+namespace footbot {
+constexpr double kRadius = 0.085036758;          // m
+constexpr double kHeight = 0.146899733;          // m
+constexpr double kMass = 1.6;                    // kg
+constexpr double kAxisLength = 0.14;             // m between the wheels
+constexpr double kMaxForce = 15.0;               // N
+constexpr double kMaxTorque = 150.0;             // N·m
+constexpr double kRabElevation = 0.1;            // m
+constexpr double kProximityElevation = 0.06;     // m
+constexpr double kScannerElevation = 0.123199866;  // m
+constexpr double kCameraElevation = 0.288699733;   // m
+constexpr int kLedCount = 13;
+}  // namespace footbot
+
+/// Where something came from in the XML, for error messages.
+struct SourceLoc {
+  std::string file;
+  int line = 0;
+  std::string element;
+};
+
+using AttrMap = std::map<std::string, std::string>;
+
+struct DeviceConfig {
+  DeviceType type = DeviceType::Count;
+  std::string implementation;
+  AttrMap attrs;  // every attribute as written
+  DeviceParams params;  // parsed once at load
+  SourceLoc loc;
+  /// Attribute text, or the device table's default.
+  std::string Attr(const std::string& name) const;
+};
+
+struct ControllerDef {
+  std::string id;
+  std::string script;        // path as resolved (empty: no script)
+  AttrMap params;            // all <params> attributes, as strings (ARGoS)
+  std::vector<DeviceConfig> actuators;  // sorted by XML tag (ARGoS applies them so)
+  std::vector<DeviceConfig> sensors;    // sorted by XML tag
+  SourceLoc loc;
+  const DeviceConfig* Find(DeviceType type) const;
+  bool Has(DeviceType type) const { return Find(type) != nullptr; }
+};
+
+enum class DischargeModel { None, Time, Motion, TimeMotion };
+
+struct BatteryDef {
+  DischargeModel model = DischargeModel::None;  // no <battery>: never depletes (spec §9)
+  double start_charge = 1.0;
+  double full_charge = 1.0;
+  double delta = 1e-5;         // time: per tick
+  double pos_delta = 1e-3;     // motion: per m
+  double orient_delta = 1e-3;  // motion: per rad
+  double time_factor = 1e-5, pos_factor = 1e-3, orient_factor = 1e-3;  // time_motion
+};
+
+struct RobotDef {
+  std::string id;
+  Pose2 pose;
+  double z = 0;
+  int controller = -1;       // index into Model::controllers
+  std::string controller_id; // <controller config="...">
+  int controller_line = 0;
+  AttrMap params;            // the controller's, or the robot's own <params> (replaces)
+  double rab_range = 3.0;    // m
+  int rab_data_size = 10;    // bytes
+  double camera_aperture = DegToRad(70);
+  double max_force = footbot::kMaxForce;
+  double max_torque = footbot::kMaxTorque;
+  BatteryDef battery;
+  SourceLoc loc;
+};
+
+struct LedDef {
+  Vec3 offset = Vec3::Zero();
+  Color color;
+};
+
+enum class ShapeKind { Box, Cylinder };
+
+/// A box or a cylinder, static or movable.
+struct ObstacleDef {
+  std::string id;
+  ShapeKind kind = ShapeKind::Box;
+  Pose2 pose;                // centre of the base; yaw
+  double z = 0;
+  double size_x = 0, size_y = 0;  // box
+  double radius = 0;              // cylinder
+  double height = 0;
+  bool movable = false;
+  double mass = 0;           // kg, movable only
+  std::vector<LedDef> leds;
+  std::string led_medium;
+  SourceLoc loc;
+};
+
+struct LightDef {
+  std::string id;
+  Vec3 position = Vec3::Zero();
+  Color color;
+  double intensity = 1.0;
+  std::string medium;
+  SourceLoc loc;
+};
+
+enum class FloorSource { None, Image, LoopFunctions };
+
+struct FloorDef {
+  FloorSource source = FloorSource::None;
+  std::string path;          // image, resolved
+  double pixels_per_meter = 100;  // loop-function floors are rasterised at this density
+  /// Image pixels, bottom row first (row 0 = arena min y), RGB. Filled by the loader for
+  /// images, by the sim from floor_color() for loop functions.
+  int width = 0, height = 0;
+  std::vector<Color> pixels;
+  SourceLoc loc;
+};
+
+struct RabMediumDef {
+  std::string id;
+  bool check_occlusions = true;
+};
+
+struct LedMediumDef {
+  std::string id;
+};
+
+struct LoopFunctionsDef {
+  std::string script;        // resolved path; empty = none
+  AttrMap params;
+  SourceLoc loc;
+};
+
+struct ExperimentDef {
+  int threads = 0;           // 0 = main thread only
+  int ticks_per_second = 10;
+  uint64_t length_ticks = 0; // 0 = unlimited
+  uint64_t seed = 0;
+  double TickLength() const { return 1.0 / ticks_per_second; }
+};
+
+struct PhysicsDef {
+  std::string id = "dyn2d";
+  int iterations = 10;       // sub-steps per tick
+  double box_linear_friction = 1.49, box_angular_friction = 1.49;
+  double cylinder_linear_friction = 1.49, cylinder_angular_friction = 1.49;
+};
+
+struct ArenaDef {
+  Vec3 size = Vec3(10, 10, 1);
+  Vec3 center = Vec3::Zero();
+  Vec2 Min() const { return {center.x() - size.x() / 2, center.y() - size.y() / 2}; }
+  Vec2 Max() const { return {center.x() + size.x() / 2, center.y() + size.y() / 2}; }
+};
+
+struct Model {
+  std::string file;          // the .argos path as given
+  std::string dir;           // its folder
+  std::string file_hash;     // fnv1a64 of the file content
+  std::vector<std::string> overrides;  // --set lines applied
+  ExperimentDef experiment;
+  ArenaDef arena;
+  PhysicsDef physics;
+  std::vector<ControllerDef> controllers;
+  std::vector<RobotDef> robots;        // explicit ones, then <distribute> blocks
+  std::vector<ObstacleDef> obstacles;
+  std::vector<LightDef> lights;
+  FloorDef floor;
+  std::vector<RabMediumDef> rab_media;
+  std::vector<LedMediumDef> led_media;
+  LoopFunctionsDef loop_functions;
+};
+
+}  // namespace essaim

@@ -1,0 +1,800 @@
+#include "model/xml_loader.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+
+#include "core/color.h"
+#include "core/hash.h"
+#include "core/rng.h"
+#include "core/strings.h"
+#include "model/distribute.h"
+#include "model/floor_image.h"
+#include "model/xml_overrides.h"
+
+namespace essaim {
+
+namespace {
+using tinyxml2::XMLElement;
+
+// Reads one document into a Model, collecting every error on the way.
+class Loader {
+ public:
+  Loader(const std::string& path, const LoadOptions& options, ErrorList* errors, ErrorList* warnings)
+      : path_(path), options_(options), errors_(errors), warnings_(warnings) {}
+
+  std::unique_ptr<Model> Load(const std::string& text);
+
+ private:
+  // ---- error helpers
+  void Error(const XMLElement* e, const std::string& msg) {
+    errors_->Add(path_, e ? e->GetLineNum() : 0, e ? e->Name() : "", msg);
+  }
+  void Warn(const XMLElement* e, const std::string& msg) {
+    if (warnings_) warnings_->Add(path_, e ? e->GetLineNum() : 0, e ? e->Name() : "", msg);
+  }
+  SourceLoc Loc(const XMLElement* e) const { return {path_, e->GetLineNum(), e->Name()}; }
+
+  // ---- typed attribute access: report and return a default on bad text
+  bool Has(const XMLElement* e, const char* name) { return e->Attribute(name) != nullptr; }
+  std::string Str(const XMLElement* e, const char* name, const std::string& def = "") {
+    const char* v = e->Attribute(name);
+    return v ? v : def;
+  }
+  std::string Required(const XMLElement* e, const char* name) {
+    const char* v = e->Attribute(name);
+    if (!v) Error(e, std::string("missing required attribute '") + name + "'");
+    return v ? v : "";
+  }
+  double Double(const XMLElement* e, const char* name, double def, bool required = false);
+  long long Int(const XMLElement* e, const char* name, long long def, bool required = false);
+  bool Bool(const XMLElement* e, const char* name, bool def);
+  Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
+  void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
+
+  std::string ResolvePath(const std::string& rel) const;
+
+  // ---- sections
+  void LoadFramework(const XMLElement* e);
+  void LoadControllers(const XMLElement* e);
+  void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
+  void LoadArena(const XMLElement* e);
+  void LoadPhysics(const XMLElement* e);
+  void LoadMedia(const XMLElement* e);
+  void LoadLoopFunctions(const XMLElement* e);
+  bool LoadFootBot(const XMLElement* e, RobotDef* r);
+  bool LoadObstacle(const XMLElement* e, ObstacleDef* o);
+  bool LoadLight(const XMLElement* e, LightDef* l);
+  void LoadFloor(const XMLElement* e);
+  void LoadBody(const XMLElement* body, Pose2* pose, double* z);
+  void LoadDistribute(const XMLElement* e);
+  bool ParseGenerator(const XMLElement* e, Generator* g);
+  void CheckReferences();
+
+  Footprint FootprintOf(const RobotDef& r) const {
+    Footprint f;
+    f.center = {r.pose.x, r.pose.y};
+    f.radius = footbot::kRadius;
+    return f;
+  }
+  Footprint FootprintOf(const ObstacleDef& o) const {
+    Footprint f;
+    f.center = {o.pose.x, o.pose.y};
+    if (o.kind == ShapeKind::Cylinder) {
+      f.radius = o.radius;
+    } else {
+      f.is_circle = false;
+      f.half_x = o.size_x / 2, f.half_y = o.size_y / 2, f.yaw = o.pose.yaw;
+    }
+    return f;
+  }
+  bool Collides(const Footprint& f) const {
+    for (const Footprint& p : placed_)
+      if (FootprintsOverlap(f, p)) return true;
+    return false;
+  }
+
+  std::string path_;
+  std::string dir_;
+  const LoadOptions& options_;
+  ErrorList* errors_;
+  ErrorList* warnings_;
+  std::unique_ptr<Model> model_;
+  std::set<std::string> ids_;
+  std::vector<Footprint> placed_;
+  Rng sim_rng_;
+};
+
+double Loader::Double(const XMLElement* e, const char* name, double def, bool required) {
+  const char* v = e->Attribute(name);
+  if (!v) {
+    if (required) Error(e, std::string("missing required attribute '") + name + "'");
+    return def;
+  }
+  auto d = ParseDouble(v);
+  if (!d) {
+    Error(e, std::string("attribute '") + name + "': '" + v + "' is not a number");
+    return def;
+  }
+  return *d;
+}
+
+long long Loader::Int(const XMLElement* e, const char* name, long long def, bool required) {
+  const char* v = e->Attribute(name);
+  if (!v) {
+    if (required) Error(e, std::string("missing required attribute '") + name + "'");
+    return def;
+  }
+  auto d = ParseInt(v);
+  if (!d) {
+    Error(e, std::string("attribute '") + name + "': '" + v + "' is not an integer");
+    return def;
+  }
+  return *d;
+}
+
+bool Loader::Bool(const XMLElement* e, const char* name, bool def) {
+  const char* v = e->Attribute(name);
+  if (!v) return def;
+  auto b = ParseBool(v);
+  if (!b) {
+    Error(e, std::string("attribute '") + name + "': '" + v + "' must be true or false");
+    return def;
+  }
+  return *b;
+}
+
+Vec3 Loader::Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required) {
+  const char* v = e->Attribute(name);
+  if (!v) {
+    if (required) Error(e, std::string("missing required attribute '") + name + "'");
+    return def;
+  }
+  auto d = ParseVector(v, 3);
+  if (!d) {
+    Error(e, std::string("attribute '") + name + "': '" + v + "' must be three comma-separated numbers");
+    return def;
+  }
+  return {(*d)[0], (*d)[1], (*d)[2]};
+}
+
+void Loader::CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what) {
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+    if (!allowed.count(c->Name()))
+      Error(c, std::string("unknown element inside <") + e->Name() + "> (" + what + ")");
+}
+
+std::string Loader::ResolvePath(const std::string& rel) const {
+  if (rel.empty() || rel[0] == '/') return rel;
+  std::string beside = JoinPath(dir_, rel);
+  if (FileExists(beside)) return beside;
+  std::string cwd = JoinPath(options_.working_dir == "." ? "" : options_.working_dir, rel);
+  if (FileExists(cwd)) return cwd;
+  return beside;  // reported as missing by the caller
+}
+
+std::unique_ptr<Model> Loader::Load(const std::string& text) {
+  model_ = std::make_unique<Model>();
+  model_->file = path_;
+  dir_ = DirName(path_);
+  model_->dir = dir_;
+  Fnv1a64 h;
+  h.Add(text.data(), text.size());
+  model_->file_hash = h.Hex();
+  model_->overrides = options_.overrides;
+
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
+    errors_->Add(path_, doc.ErrorLineNum(), "", std::string("malformed XML: ") + doc.ErrorStr());
+    return nullptr;
+  }
+  for (const std::string& o : options_.overrides) {
+    std::string err;
+    if (!ApplyXmlOverride(doc, o, &err)) errors_->Add(path_, 0, "", err);
+  }
+  XMLElement* root = doc.RootElement();
+  if (!root) {
+    errors_->Add(path_, 0, "", "empty document");
+    return nullptr;
+  }
+  CheckChildren(root,
+                {"framework", "controllers", "arena", "physics_engines", "media", "loop_functions",
+                 "visualization"},
+                "expected framework, controllers, arena, physics_engines, media, loop_functions, visualization");
+  auto required = [&](const char* name) -> XMLElement* {
+    XMLElement* e = root->FirstChildElement(name);
+    if (!e) errors_->Add(path_, root->GetLineNum(), root->Name(), std::string("missing required <") + name + ">");
+    return e;
+  };
+  XMLElement* framework = required("framework");
+  XMLElement* controllers = required("controllers");
+  XMLElement* arena = required("arena");
+  XMLElement* physics = required("physics_engines");
+  XMLElement* media = required("media");
+  if (framework) LoadFramework(framework);
+  // The simulator's own stream places <distribute> entities.
+  sim_rng_.Seed(DeriveSeed(model_->experiment.seed, StreamKind::Simulator, 0));
+  if (controllers) LoadControllers(controllers);
+  if (physics) LoadPhysics(physics);
+  if (media) LoadMedia(media);
+  if (XMLElement* lf = root->FirstChildElement("loop_functions")) LoadLoopFunctions(lf);
+  if (root->FirstChildElement("visualization")) {
+    XMLElement* vis = root->FirstChildElement("visualization");
+    if (vis->FirstChildElement()) Warn(vis, "ignored: essaim is headless (see `essaim replay`)");
+  }
+  if (arena) LoadArena(arena);
+  CheckReferences();
+  if (!errors_->Empty()) return nullptr;
+  return std::move(model_);
+}
+
+void Loader::LoadFramework(const XMLElement* e) {
+  CheckChildren(e, {"system", "experiment", "profiling"}, "expected system, experiment, profiling");
+  ExperimentDef& x = model_->experiment;
+  if (const XMLElement* sys = e->FirstChildElement("system")) {
+    x.threads = static_cast<int>(Int(sys, "threads", 0));
+    if (x.threads < 0) Error(sys, "threads must be >= 0");
+    std::string method = Str(sys, "method", "balance_quantity");
+    if (method != "balance_quantity" && method != "balance_length")
+      Error(sys, "method must be balance_quantity or balance_length");
+  }
+  const XMLElement* exp = e->FirstChildElement("experiment");
+  if (!exp) {
+    Error(e, "missing required <experiment>");
+    return;
+  }
+  x.ticks_per_second = static_cast<int>(Int(exp, "ticks_per_second", 10, true));
+  if (x.ticks_per_second <= 0) {
+    Error(exp, "ticks_per_second must be > 0");
+    x.ticks_per_second = 10;
+  }
+  double length = Double(exp, "length", 0);
+  if (length < 0) Error(exp, "length must be >= 0");
+  // ARGoS truncates length × ticks_per_second (spec §10.1, quirk 11).
+  x.length_ticks = static_cast<uint64_t>(std::max(0.0, length * x.ticks_per_second));
+  long long seed = Int(exp, "random_seed", 0);
+  if (seed < 0) Error(exp, "random_seed must be >= 0");
+  x.seed = static_cast<uint64_t>(std::max(0LL, seed));
+  if (x.seed == 0) {
+    // ARGoS seeds from the clock when no seed is given; the summary records which.
+    x.seed = static_cast<uint64_t>(
+                 std::chrono::system_clock::now().time_since_epoch().count() / 1000 % 1000000) + 1;
+  }
+  if (Has(exp, "real_time") && Bool(exp, "real_time", false))
+    Warn(exp, "real_time ignored: essaim runs as fast as it can");
+  if (options_.ticks) x.length_ticks = *options_.ticks;
+  if (options_.seed) x.seed = *options_.seed;
+  if (options_.threads) x.threads = *options_.threads;
+}
+
+void Loader::LoadControllers(const XMLElement* e) {
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (std::string(c->Name()) != "lua_controller") {
+      Error(c, "unsupported controller type: essaim runs Lua controllers (<lua_controller>)");
+      continue;
+    }
+    ControllerDef def;
+    def.id = Required(c, "id");
+    def.loc = Loc(c);
+    if (Has(c, "library")) Warn(c, "attribute 'library' ignored for a Lua controller");
+    for (const ControllerDef& other : model_->controllers)
+      if (other.id == def.id) Error(c, "duplicate controller id '" + def.id + "'");
+    CheckChildren(c, {"actuators", "sensors", "params"}, "expected actuators, sensors, params");
+    const XMLElement* act = c->FirstChildElement("actuators");
+    const XMLElement* sen = c->FirstChildElement("sensors");
+    const XMLElement* par = c->FirstChildElement("params");
+    if (!act) Error(c, "missing required <actuators> (may be empty)");
+    if (!sen) Error(c, "missing required <sensors> (may be empty)");
+    if (!par) Error(c, "missing required <params> (may be empty)");
+    if (act) LoadDevices(act, false, &def);
+    if (sen) LoadDevices(sen, true, &def);
+    if (par) {
+      for (auto* a = par->FirstAttribute(); a; a = a->Next()) def.params[a->Name()] = a->Value();
+      std::string script = Str(par, "script");
+      if (!script.empty()) {
+        def.script = ResolvePath(script);
+        if (!FileExists(def.script)) Error(par, "script '" + script + "' not found (looked beside the .argos file and in the working directory)");
+      }
+    }
+    model_->controllers.push_back(std::move(def));
+  }
+}
+
+void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c) {
+  std::vector<DeviceConfig>& out = sensors ? c->sensors : c->actuators;
+  for (auto* d = list->FirstChildElement(); d; d = d->NextSiblingElement()) {
+    const DeviceRow* row = FindDevice(d->Name(), sensors);
+    if (!row) {
+      Error(d, std::string("unknown ") + (sensors ? "sensor" : "actuator") + " (see `essaim devices`)");
+      continue;
+    }
+    if (!row->supported) {
+      Error(d, std::string(sensors ? "sensor" : "actuator") + " '" + d->Name() +
+                   "' is an ARGoS device essaim does not support yet");
+      continue;
+    }
+    DeviceConfig cfg;
+    cfg.type = row->type;
+    cfg.loc = Loc(d);
+    cfg.implementation = Str(d, "implementation");
+    if (cfg.implementation.empty()) Error(d, "missing required attribute 'implementation'");
+    else {
+      std::vector<std::string> impls = Split(row->implementations, ',');
+      if (std::find(impls.begin(), impls.end(), cfg.implementation) == impls.end())
+        Error(d, "implementation '" + cfg.implementation + "' unknown; expected " + row->implementations);
+    }
+    for (auto* a = d->FirstAttribute(); a; a = a->Next()) {
+      cfg.attrs[a->Name()] = a->Value();
+      std::string name = a->Name();
+      if (name == "implementation") continue;
+      bool known = false;
+      for (const DeviceAttr& da : row->attrs) known |= name == da.name;
+      if (!known) Warn(d, "attribute '" + name + "' is not used by essaim");
+    }
+    for (const DeviceAttr& da : row->attrs)
+      if (da.required && !Has(d, da.name)) Error(d, std::string("missing required attribute '") + da.name + "'");
+    for (const DeviceConfig& prev : out)
+      if (prev.type == cfg.type) Error(d, "device declared twice");
+    ParseDeviceParams(&cfg, errors_);
+    out.push_back(std::move(cfg));
+  }
+  // ARGoS applies devices in alphabetical tag order (spec §12).
+  std::stable_sort(out.begin(), out.end(), [](const DeviceConfig& a, const DeviceConfig& b) {
+    return std::string(GetDeviceRow(a.type).xml_name) < GetDeviceRow(b.type).xml_name;
+  });
+}
+
+void Loader::LoadPhysics(const XMLElement* e) {
+  int engines = 0;
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    std::string name = c->Name();
+    if (name != "dynamics2d") {
+      Error(c, "unsupported physics engine: essaim simulates <dynamics2d> only");
+      continue;
+    }
+    if (++engines > 1) {
+      Warn(c, "several dynamics2d engines: essaim uses one engine for the whole arena");
+      continue;
+    }
+    PhysicsDef& p = model_->physics;
+    p.id = Str(c, "id", "dyn2d");
+    p.iterations = static_cast<int>(Int(c, "iterations", 10));
+    if (p.iterations < 1) Error(c, "iterations must be >= 1");
+    CheckChildren(c, {"friction", "spatial_hash", "boundaries"}, "expected friction, spatial_hash, boundaries");
+    if (const XMLElement* f = c->FirstChildElement("friction")) {
+      p.box_linear_friction = Double(f, "box_linear_friction", p.box_linear_friction);
+      p.box_angular_friction = Double(f, "box_angular_friction", p.box_angular_friction);
+      p.cylinder_linear_friction = Double(f, "cylinder_linear_friction", p.cylinder_linear_friction);
+      p.cylinder_angular_friction = Double(f, "cylinder_angular_friction", p.cylinder_angular_friction);
+    }
+    if (const XMLElement* b = c->FirstChildElement("boundaries"))
+      Warn(b, "ignored: one engine covers the whole arena");
+    if (Has(c, "elevation") && Double(c, "elevation", 0) != 0) Warn(c, "elevation ignored");
+  }
+  if (engines == 0) Error(e, "no physics engine: add <dynamics2d id=\"dyn2d\"/>");
+}
+
+void Loader::LoadMedia(const XMLElement* e) {
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    std::string name = c->Name();
+    if (name == "range_and_bearing") {
+      RabMediumDef m;
+      m.id = Required(c, "id");
+      m.check_occlusions = Bool(c, "check_occlusions", true);
+      std::string index = Str(c, "index", "grid");
+      if (index != "grid" && index != "dummy") Error(c, "index must be grid or dummy");
+      model_->rab_media.push_back(m);
+    } else if (name == "led") {
+      LedMediumDef m;
+      m.id = Required(c, "id");
+      model_->led_media.push_back(m);
+    } else {
+      Error(c, "unknown medium: expected <range_and_bearing> or <led>");
+    }
+  }
+}
+
+void Loader::LoadLoopFunctions(const XMLElement* e) {
+  if (Has(e, "library")) {
+    Error(e, "C++ loop functions (library=\"" + Str(e, "library") +
+                 "\") cannot be loaded: essaim's loop functions are Lua scripts, "
+                 "<loop_functions script=\"file.lua\"/> (docs/loop-functions.md)");
+    return;
+  }
+  LoopFunctionsDef& lf = model_->loop_functions;
+  lf.loc = Loc(e);
+  for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
+  std::string script = Str(e, "script");
+  if (script.empty()) {
+    Error(e, "missing attribute 'script' (a Lua file, docs/loop-functions.md)");
+    return;
+  }
+  lf.script = ResolvePath(script);
+  if (!FileExists(lf.script)) Error(e, "script '" + script + "' not found");
+}
+
+void Loader::LoadBody(const XMLElement* body, Pose2* pose, double* z) {
+  Vec3 p = Vector3(body, "position", Vec3::Zero());
+  Vec3 o = Vector3(body, "orientation", Vec3::Zero());
+  pose->x = p.x();
+  pose->y = p.y();
+  *z = p.z();
+  pose->yaw = DegToRad(o.x());
+  if (o.y() != 0 || o.z() != 0) Warn(body, "pitch and roll ignored: essaim is planar");
+}
+
+bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
+  size_t before = errors_->Size();
+  r->id = Required(e, "id");
+  r->loc = Loc(e);
+  r->rab_range = Double(e, "rab_range", 3.0);
+  r->rab_data_size = static_cast<int>(Int(e, "rab_data_size", 10));
+  if (r->rab_range < 0) Error(e, "rab_range must be >= 0");
+  if (r->rab_data_size < 0 || r->rab_data_size > 65536) Error(e, "rab_data_size out of range");
+  r->camera_aperture = DegToRad(Double(e, "omnidirectional_camera_aperture", 70));
+  CheckChildren(e, {"body", "controller", "battery", "dynamics2d"}, "expected body, controller, battery, dynamics2d");
+  if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &r->pose, &r->z);
+  const XMLElement* ctrl = e->FirstChildElement("controller");
+  if (!ctrl) {
+    Error(e, "missing required <controller config=\"...\"/>");
+  } else {
+    r->controller_id = Required(ctrl, "config");
+    r->controller_line = ctrl->GetLineNum();
+    if (const XMLElement* params = ctrl->FirstChildElement("params")) {
+      // Per-robot <params> replaces the controller's entirely (spec quirk 15).
+      r->params.clear();
+      r->params["__own__"] = "";
+      for (auto* a = params->FirstAttribute(); a; a = a->Next()) r->params[a->Name()] = a->Value();
+    }
+  }
+  if (const XMLElement* b = e->FirstChildElement("battery")) {
+    BatteryDef& bd = r->battery;
+    std::string m = Str(b, "discharge_model", "time");
+    if (m == "time") bd.model = DischargeModel::Time;
+    else if (m == "motion") bd.model = DischargeModel::Motion;
+    else if (m == "time_motion") bd.model = DischargeModel::TimeMotion;
+    else Error(b, "discharge_model must be time, motion or time_motion");
+    if (Has(b, "model")) Warn(b, "attribute 'model' is not read by ARGoS either; use discharge_model");
+    bd.start_charge = Double(b, "start_charge", 1.0);
+    bd.full_charge = Double(b, "full_charge", 1.0);
+    bd.delta = Double(b, "delta", 1e-5);
+    bd.pos_delta = Double(b, "pos_delta", 1e-3);
+    bd.orient_delta = Double(b, "orient_delta", 1e-3);
+    bd.time_factor = Double(b, "time_factor", 1e-5);
+    bd.pos_factor = Double(b, "pos_factor", 1e-3);
+    bd.orient_factor = Double(b, "orient_factor", 1e-3);
+    if (bd.full_charge <= 0) Error(b, "full_charge must be > 0");
+  }
+  if (const XMLElement* d = e->FirstChildElement("dynamics2d")) {
+    if (const XMLElement* ds = d->FirstChildElement("differential_steering")) {
+      r->max_force = Double(ds, "max_force", footbot::kMaxForce);
+      r->max_torque = Double(ds, "max_torque", footbot::kMaxTorque);
+    }
+  }
+  return errors_->Size() == before;
+}
+
+bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o) {
+  size_t before = errors_->Size();
+  std::string tag = e->Name();
+  o->kind = tag == "box" ? ShapeKind::Box : ShapeKind::Cylinder;
+  o->id = Required(e, "id");
+  o->loc = Loc(e);
+  if (o->kind == ShapeKind::Box) {
+    Vec3 s = Vector3(e, "size", Vec3::Zero(), true);
+    o->size_x = s.x(), o->size_y = s.y(), o->height = s.z();
+    if (s.x() <= 0 || s.y() <= 0 || s.z() <= 0) Error(e, "size components must be > 0");
+  } else {
+    o->radius = Double(e, "radius", 0, true);
+    o->height = Double(e, "height", 0, true);
+    if (o->radius <= 0 || o->height <= 0) Error(e, "radius and height must be > 0");
+  }
+  o->movable = Bool(e, "movable", false);
+  if (!Has(e, "movable")) Error(e, "missing required attribute 'movable'");
+  if (o->movable) {
+    o->mass = Double(e, "mass", 0, true);
+    if (o->mass <= 0) Error(e, "mass must be > 0 for a movable object");
+  }
+  CheckChildren(e, {"body", "leds"}, "expected body, leds");
+  if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &o->pose, &o->z);
+  else Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
+  if (const XMLElement* leds = e->FirstChildElement("leds")) {
+    o->led_medium = Required(leds, "medium");
+    for (auto* l = leds->FirstChildElement(); l; l = l->NextSiblingElement()) {
+      if (std::string(l->Name()) != "led") {
+        Error(l, "expected <led offset color/>");
+        continue;
+      }
+      LedDef led;
+      led.offset = Vector3(l, "offset", Vec3::Zero(), true);
+      auto c = ParseColor(Str(l, "color", "black"));
+      if (!c) Error(l, "bad colour '" + Str(l, "color") + "'");
+      else led.color = *c;
+      o->leds.push_back(led);
+    }
+  }
+  return errors_->Size() == before;
+}
+
+bool Loader::LoadLight(const XMLElement* e, LightDef* l) {
+  size_t before = errors_->Size();
+  l->id = Required(e, "id");
+  l->loc = Loc(e);
+  l->position = Vector3(e, "position", Vec3::Zero(), true);
+  Vector3(e, "orientation", Vec3::Zero(), true);
+  std::string c = Required(e, "color");
+  auto col = ParseColor(c);
+  if (!c.empty() && !col) Error(e, "bad colour '" + c + "'");
+  if (col) l->color = *col;
+  l->intensity = Double(e, "intensity", 1.0, true);
+  l->medium = Required(e, "medium");
+  return errors_->Size() == before;
+}
+
+void Loader::LoadFloor(const XMLElement* e) {
+  FloorDef& f = model_->floor;
+  f.loc = Loc(e);
+  std::string source = Required(e, "source");
+  if (source == "image") {
+    f.source = FloorSource::Image;
+    std::string path = Required(e, "path");
+    if (path.empty()) return;
+    f.path = ResolvePath(path);
+    std::string err;
+    if (!FileExists(f.path)) Error(e, "floor image '" + path + "' not found");
+    else if (!LoadPngBottomUp(f.path, &f.width, &f.height, &f.pixels, &err)) Error(e, "floor image '" + path + "': " + err);
+  } else if (source == "loop_functions") {
+    f.source = FloorSource::LoopFunctions;
+    f.pixels_per_meter = Double(e, "pixels_per_meter", 100);
+    if (f.pixels_per_meter <= 0 || f.pixels_per_meter > 1000) Error(e, "pixels_per_meter must be in (0, 1000]");
+  } else if (!source.empty()) {
+    Error(e, "source must be image or loop_functions");
+  }
+}
+
+void Loader::LoadArena(const XMLElement* e) {
+  model_->arena.size = Vector3(e, "size", Vec3(10, 10, 1), true);
+  model_->arena.center = Vector3(e, "center", Vec3::Zero());
+  if (model_->arena.size.x() <= 0 || model_->arena.size.y() <= 0) Error(e, "size must be > 0");
+  if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
+  // Explicit entities in document order, then <distribute> blocks (spec §10.4).
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    std::string name = c->Name();
+    if (name == "foot-bot") {
+      RobotDef r;
+      if (LoadFootBot(c, &r)) {
+        placed_.push_back(FootprintOf(r));
+        model_->robots.push_back(std::move(r));
+      }
+    } else if (name == "box" || name == "cylinder") {
+      ObstacleDef o;
+      if (LoadObstacle(c, &o)) {
+        placed_.push_back(FootprintOf(o));
+        model_->obstacles.push_back(std::move(o));
+      }
+    } else if (name == "light") {
+      LightDef l;
+      if (LoadLight(c, &l)) model_->lights.push_back(std::move(l));
+    } else if (name == "floor") {
+      LoadFloor(c);
+    } else if (name == "distribute") {
+      // later
+    } else {
+      Error(c, "unsupported entity: essaim simulates foot-bot, box, cylinder, light, floor and distribute");
+    }
+    if (const char* id = c->Attribute("id")) {
+      if (name != "distribute" && !ids_.insert(id).second) Error(c, std::string("duplicate id '") + id + "'");
+    }
+  }
+  for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute"))
+    LoadDistribute(c);
+}
+
+bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
+  size_t before = errors_->Size();
+  std::string method = Required(e, "method");
+  using K = Generator::Kind;
+  if (method == "uniform") {
+    g->kind = K::Uniform;
+    g->a = Vector3(e, "min", Vec3::Zero(), true);
+    g->b = Vector3(e, "max", Vec3::Zero(), true);
+    for (int i = 0; i < 3; ++i)
+      if (g->a[i] > g->b[i]) Error(e, "min must be <= max component-wise");
+  } else if (method == "gaussian") {
+    g->kind = K::Gaussian;
+    g->a = Vector3(e, "mean", Vec3::Zero(), true);
+    g->b = Vector3(e, "std_dev", Vec3::Zero(), true);
+  } else if (method == "constant") {
+    g->kind = K::Constant;
+    g->a = Vector3(e, "values", Vec3::Zero(), true);
+  } else if (method == "grid") {
+    g->kind = K::Grid;
+    g->a = Vector3(e, "center", Vec3::Zero(), true);
+    g->b = Vector3(e, "distances", Vec3::Zero(), true);
+    auto layout = ParseVector(Str(e, "layout"), 3);
+    if (!layout) {
+      Error(e, "layout must be three integers nx,ny,nz");
+    } else {
+      for (int i = 0; i < 3; ++i) {
+        g->layout[i] = static_cast<int>((*layout)[i]);
+        if (g->layout[i] <= 0) Error(e, "layout components must be > 0");
+      }
+    }
+  } else if (!method.empty()) {
+    Error(e, "method must be uniform, gaussian, constant or grid");
+  }
+  return errors_->Size() == before;
+}
+
+void Loader::LoadDistribute(const XMLElement* e) {
+  const XMLElement* pos = e->FirstChildElement("position");
+  const XMLElement* ori = e->FirstChildElement("orientation");
+  const XMLElement* ent = e->FirstChildElement("entity");
+  if (!pos || !ori || !ent) {
+    Error(e, "needs <position>, <orientation> and <entity> children");
+    return;
+  }
+  Generator gp, go;
+  bool ok = ParseGenerator(pos, &gp) & ParseGenerator(ori, &go);
+  long long quantity = Int(ent, "quantity", 0, true);
+  long long max_trials = Int(ent, "max_trials", 0, Has(ent, "max_trials") ? false : false);
+  long long base_num = Int(ent, "base_num", 0);
+  if (quantity < 0) Error(ent, "quantity must be >= 0");
+  if (max_trials < 0) Error(ent, "max_trials must be >= 0");
+  const XMLElement* proto = ent->FirstChildElement();
+  if (!proto) {
+    Error(ent, "needs one entity element (e.g. <foot-bot>)");
+    return;
+  }
+  std::string kind = proto->Name();
+  if (kind != "foot-bot" && kind != "box" && kind != "cylinder" && kind != "light") {
+    Error(proto, "cannot distribute this entity: foot-bot, box, cylinder or light");
+    return;
+  }
+  if (!ok) return;
+  std::string base_id = Str(proto, "id");
+  if (base_id.empty()) {
+    Error(proto, "missing required attribute 'id' (the base of the generated ids)");
+    return;
+  }
+  int draw = 0;  // grid cell counter: every attempt consumes one (a retry is fatal on a grid)
+  for (long long i = 0; i < quantity; ++i) {
+    std::string id = base_id + std::to_string(i + base_num);
+    if (!ids_.insert(id).second) {
+      Error(proto, "generated id '" + id + "' is already used");
+      return;
+    }
+    bool placed = false;
+    for (long long trial = 0; trial <= max_trials && !placed; ++trial) {
+      Vec3 p, o;
+      if (!gp.Next(sim_rng_, draw, &p) || !go.Next(sim_rng_, draw, &o)) {
+        Error(e, "grid exhausted: layout has fewer cells than quantity (or a placement failed)");
+        return;
+      }
+      ++draw;
+      for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
+      Pose2 pose{p.x(), p.y(), DegToRad(o.x())};
+      if (kind == "light") {
+        LightDef l;
+        if (!LoadLight(proto, &l)) return;
+        l.id = id;
+        l.position = p;
+        model_->lights.push_back(l);
+        placed = true;
+      } else if (kind == "foot-bot") {
+        RobotDef r;
+        if (!LoadFootBot(proto, &r)) return;
+        r.id = id;
+        r.pose = pose;
+        r.z = p.z();
+        Footprint f = FootprintOf(r);
+        if (Collides(f)) continue;
+        placed_.push_back(f);
+        model_->robots.push_back(std::move(r));
+        placed = true;
+      } else {
+        ObstacleDef ob;
+        // The prototype has no <body>; LoadObstacle would complain, so fill a copy.
+        tinyxml2::XMLDocument scratch;
+        XMLElement* copy = proto->DeepClone(&scratch)->ToElement();
+        scratch.InsertEndChild(copy);
+        if (!copy->FirstChildElement("body")) copy->InsertEndChild(scratch.NewElement("body"));
+        if (!LoadObstacle(copy, &ob)) return;
+        ob.loc = Loc(proto);
+        ob.id = id;
+        ob.pose = pose;
+        ob.z = p.z();
+        Footprint f = FootprintOf(ob);
+        if (Collides(f)) continue;
+        placed_.push_back(f);
+        model_->obstacles.push_back(std::move(ob));
+        placed = true;
+      }
+      if (gp.kind == Generator::Kind::Grid && !placed) break;
+    }
+    if (!placed) {
+      Error(ent, "could not place '" + id + "' without overlap after " + std::to_string(max_trials + 1) +
+                     " attempts (raise max_trials or give more room)");
+      return;
+    }
+  }
+}
+
+void Loader::CheckReferences() {
+  // Bind each robot to its controller config now that all are known.
+  for (RobotDef& r : model_->robots) {
+    for (size_t i = 0; i < model_->controllers.size(); ++i)
+      if (model_->controllers[i].id == r.controller_id) r.controller = static_cast<int>(i);
+    if (r.controller < 0) {
+      if (!r.controller_id.empty())
+        errors_->Add(path_, r.controller_line, "controller", "no controller with id '" + r.controller_id + "'");
+      continue;
+    }
+    const ControllerDef& c = model_->controllers[r.controller];
+    if (r.params.count("__own__")) {
+      r.params.erase("__own__");
+    } else {
+      r.params = c.params;
+    }
+  }
+  auto check_medium = [&](const ControllerDef& c, DeviceType t, bool rab) {
+    const DeviceConfig* d = c.Find(t);
+    if (!d) return;
+    std::string m = d->Attr("medium");
+    bool found = false;
+    if (rab) for (auto& x : model_->rab_media) found |= x.id == m;
+    else for (auto& x : model_->led_media) found |= x.id == m;
+    if (!found)
+      errors_->Add(d->loc.file, d->loc.line, d->loc.element,
+                   "medium '" + m + "' is not declared in <media> (<" + (rab ? "range_and_bearing" : "led") + " id=\"" + m + "\"/>)");
+  };
+  for (const ControllerDef& c : model_->controllers) {
+    check_medium(c, DeviceType::RabSensor, true);
+    check_medium(c, DeviceType::LedsActuator, false);
+    check_medium(c, DeviceType::CameraSensor, false);
+    bool ground = c.Has(DeviceType::BaseGroundSensor) || c.Has(DeviceType::MotorGroundSensor);
+    if (ground && model_->floor.source == FloorSource::None)
+      errors_->Add(c.loc.file, c.loc.line, c.loc.element,
+                   "ground sensors need a <floor> in the <arena> (ARGoS: \"No floor entity has been added\")");
+  }
+  if (model_->floor.source == FloorSource::LoopFunctions && model_->loop_functions.script.empty())
+    errors_->Add(model_->floor.loc.file, model_->floor.loc.line, "floor",
+                 "source=\"loop_functions\" needs <loop_functions script=\"...\"> with floor_color(x, y)");
+}
+}  // namespace
+
+std::string DeviceConfig::Attr(const std::string& name) const {
+  auto it = attrs.find(name);
+  if (it != attrs.end()) return it->second;
+  for (const DeviceAttr& a : GetDeviceRow(type).attrs)
+    if (name == a.name) return a.default_value;
+  return "";
+}
+
+const DeviceConfig* ControllerDef::Find(DeviceType t) const {
+  for (const DeviceConfig& d : actuators)
+    if (d.type == t) return &d;
+  for (const DeviceConfig& d : sensors)
+    if (d.type == t) return &d;
+  return nullptr;
+}
+
+std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path,
+                                          const LoadOptions& options, ErrorList* errors, ErrorList* warnings) {
+  Loader loader(path, options, errors, warnings);
+  return loader.Load(xml);
+}
+
+std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options,
+                                          ErrorList* errors, ErrorList* warnings) {
+  std::string text;
+  if (!ReadFile(path, &text)) {
+    errors->Add(path, 0, "", "cannot read the experiment file");
+    return nullptr;
+  }
+  return LoadExperimentText(text, path, options, errors, warnings);
+}
+
+}  // namespace essaim

@@ -1,0 +1,249 @@
+#include "physics/physics_world.h"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace essaim {
+
+namespace {
+// Fixture user data: kind in the low 2 bits, index above. Heights live in a side table.
+uintptr_t PackTag(BodyKind kind, int index) {
+  return (static_cast<uintptr_t>(index) << 2) | static_cast<uintptr_t>(kind);
+}
+BodyKind TagKind(uintptr_t tag) { return static_cast<BodyKind>(tag & 3); }
+int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
+
+b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
+}  // namespace
+
+struct PhysicsWorld::Impl {
+  b2World world{b2Vec2(0, 0)};
+  b2Body* ground = nullptr;
+  std::vector<b2Body*> controls;     // kinematic servo targets, one per robot
+  std::vector<double> obstacle_top;  // m, top of each obstacle
+  std::vector<double> obstacle_bottom;
+};
+
+PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
+  b2World& w = impl_->world;
+  b2BodyDef gd;
+  impl_->ground = w.CreateBody(&gd);
+
+  const PhysicsDef& phys = model.physics;
+  for (size_t i = 0; i < model.obstacles.size(); ++i) {
+    const ObstacleDef& o = model.obstacles[i];
+    b2BodyDef bd;
+    bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
+    bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
+    bd.angle = static_cast<float>(o.pose.yaw);
+    b2Body* body = w.CreateBody(&bd);
+    b2FixtureDef fd;
+    b2PolygonShape poly;
+    b2CircleShape circle;
+    double area;
+    if (o.kind == ShapeKind::Box) {
+      poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
+      fd.shape = &poly;
+      area = o.size_x * o.size_y;
+    } else {
+      circle.m_radius = static_cast<float>(o.radius);
+      fd.shape = &circle;
+      area = kPi * o.radius * o.radius;
+    }
+    // ARGoS: static friction 0.1, movable 0.7, no bounce.
+    fd.friction = o.movable ? 0.7f : 0.1f;
+    fd.restitution = 0;
+    fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
+    fd.userData.pointer = PackTag(BodyKind::Obstacle, static_cast<int>(i));
+    body->CreateFixture(&fd);
+    if (o.movable) {
+      if (o.kind == ShapeKind::Cylinder) {
+        // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
+        b2MassData md;
+        md.mass = static_cast<float>(o.mass);
+        md.center.SetZero();
+        md.I = static_cast<float>(o.mass * (2 * o.radius) * (2 * o.radius) / 2);
+        body->SetMassData(&md);
+      }
+      // Floor friction: drag towards zero velocity with capped force and torque.
+      b2FrictionJointDef jd;
+      jd.Initialize(impl_->ground, body, body->GetPosition());
+      bool box = o.kind == ShapeKind::Box;
+      jd.maxForce = static_cast<float>(box ? phys.box_linear_friction : phys.cylinder_linear_friction);
+      jd.maxTorque = static_cast<float>(box ? phys.box_angular_friction : phys.cylinder_angular_friction);
+      w.CreateJoint(&jd);
+    }
+    obstacles_.push_back(body);
+    impl_->obstacle_bottom.push_back(o.z);
+    impl_->obstacle_top.push_back(o.z + o.height);
+  }
+
+  for (size_t i = 0; i < model.robots.size(); ++i) {
+    const RobotDef& r = model.robots[i];
+    b2BodyDef bd;
+    bd.type = b2_dynamicBody;
+    bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
+    bd.angle = static_cast<float>(r.pose.yaw);
+    bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
+    b2Body* body = w.CreateBody(&bd);
+    b2CircleShape circle;
+    circle.m_radius = static_cast<float>(footbot::kRadius);
+    b2FixtureDef fd;
+    fd.shape = &circle;
+    fd.friction = 0.7f;
+    fd.restitution = 0;
+    fd.density = static_cast<float>(footbot::kMass / (kPi * footbot::kRadius * footbot::kRadius));
+    fd.userData.pointer = PackTag(BodyKind::Robot, static_cast<int>(i));
+    body->CreateFixture(&fd);
+    b2MassData md;
+    md.mass = static_cast<float>(footbot::kMass);
+    md.center.SetZero();
+    // ARGoS quirk 1: I = m (2r)^2 / 2.
+    md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
+    body->SetMassData(&md);
+
+    // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
+    // a friction joint, which drives their relative velocity to zero with capped force
+    // and torque — Chipmunk's pivot + gear with maxBias 0 in ARGoS.
+    b2BodyDef cd;
+    cd.type = b2_kinematicBody;
+    cd.position = bd.position;
+    cd.angle = bd.angle;
+    b2Body* control = w.CreateBody(&cd);
+    b2FrictionJointDef jd;
+    jd.bodyA = control;
+    jd.bodyB = body;
+    jd.localAnchorA.SetZero();
+    jd.localAnchorB.SetZero();
+    jd.maxForce = static_cast<float>(r.max_force);
+    jd.maxTorque = static_cast<float>(r.max_torque);
+    w.CreateJoint(&jd);
+    robots_.push_back(body);
+    impl_->controls.push_back(control);
+  }
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+
+void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
+  b2Body* body = AsBody(robots_[robot]);
+  b2Body* control = impl_->controls[robot];
+  if (left == 0 && right == 0) {
+    control->SetLinearVelocity(b2Vec2(0, 0));
+    control->SetAngularVelocity(0);
+    return;
+  }
+  double a = body->GetAngle();
+  double v = (left + right) / 2;
+  double w = (right - left) / footbot::kAxisLength;
+  control->SetLinearVelocity(b2Vec2(static_cast<float>(v * std::cos(a)), static_cast<float>(v * std::sin(a))));
+  control->SetAngularVelocity(static_cast<float>(w));
+}
+
+void PhysicsWorld::Step(double dt, int substeps) {
+  const float h = static_cast<float>(dt / substeps);
+  for (int i = 0; i < substeps; ++i) impl_->world.Step(h, 8, 3);
+}
+
+Pose2 PhysicsWorld::RobotPose(int robot) const {
+  const b2Body* b = AsBody(robots_[robot]);
+  return {b->GetPosition().x, b->GetPosition().y, b->GetAngle()};
+}
+
+Vec2 PhysicsWorld::RobotVelocity(int robot) const {
+  const b2Vec2 v = AsBody(robots_[robot])->GetLinearVelocity();
+  return {v.x, v.y};
+}
+
+double PhysicsWorld::RobotAngularVelocity(int robot) const {
+  return AsBody(robots_[robot])->GetAngularVelocity();
+}
+
+void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
+  b2Body* b = AsBody(robots_[robot]);
+  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  b->SetLinearVelocity(b2Vec2(0, 0));
+  b->SetAngularVelocity(0);
+}
+
+Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {
+  const b2Body* b = AsBody(obstacles_[obstacle]);
+  return {b->GetPosition().x, b->GetPosition().y, b->GetAngle()};
+}
+
+void PhysicsWorld::FreezeRobot(int robot) { SetWheelSpeeds(robot, 0, 0); }
+
+namespace {
+class ClosestRay : public b2RayCastCallback {
+ public:
+  ClosestRay(const std::vector<double>& tops, const std::vector<double>& bottoms, double z, int exclude)
+      : tops_(tops), bottoms_(bottoms), z_(z), exclude_(exclude) {}
+  float ReportFixture(b2Fixture* f, const b2Vec2& point, const b2Vec2&, float fraction) override {
+    uintptr_t tag = f->GetUserData().pointer;
+    BodyKind kind = TagKind(tag);
+    int index = TagIndex(tag);
+    if (kind == BodyKind::Robot) {
+      if (index == exclude_ || z_ > footbot::kHeight || z_ < 0) return -1;
+    } else if (kind == BodyKind::Obstacle) {
+      if (z_ > tops_[index] || z_ < bottoms_[index]) return -1;
+    } else {
+      return -1;
+    }
+    hit.kind = kind;
+    hit.index = index;
+    hit.point = {point.x, point.y};
+    fraction_ = fraction;
+    return fraction;  // clip: keep looking for closer hits only
+  }
+  RayHit hit;
+  float fraction_ = 1;
+
+ private:
+  const std::vector<double>& tops_;
+  const std::vector<double>& bottoms_;
+  double z_;
+  int exclude_;
+};
+
+class RobotQuery : public b2QueryCallback {
+ public:
+  RobotQuery(const Vec2& c, double r, std::vector<int>* out) : c_(c), r2_(r * r), out_(out) {}
+  bool ReportFixture(b2Fixture* f) override {
+    uintptr_t tag = f->GetUserData().pointer;
+    if (TagKind(tag) != BodyKind::Robot) return true;
+    b2Vec2 p = f->GetBody()->GetPosition();
+    if ((Vec2(p.x, p.y) - c_).squaredNorm() <= r2_) out_->push_back(TagIndex(tag));
+    return true;
+  }
+
+ private:
+  Vec2 c_;
+  double r2_;
+  std::vector<int>* out_;
+};
+}  // namespace
+
+RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const {
+  ClosestRay cb(impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot);
+  b2Vec2 p1(static_cast<float>(from.x()), static_cast<float>(from.y()));
+  b2Vec2 p2(static_cast<float>(to.x()), static_cast<float>(to.y()));
+  if (b2DistanceSquared(p1, p2) <= 0) return {};
+  impl_->world.RayCast(&cb, p1, p2);
+  if (cb.hit.Hit()) cb.hit.distance = (to - from).norm() * cb.fraction_;
+  return cb.hit;
+}
+
+void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const {
+  out->clear();
+  RobotQuery q(center, radius, out);
+  b2AABB box;
+  box.lowerBound.Set(static_cast<float>(center.x() - radius), static_cast<float>(center.y() - radius));
+  box.upperBound.Set(static_cast<float>(center.x() + radius), static_cast<float>(center.y() + radius));
+  impl_->world.QueryAABB(&q, box);
+  // The tree's order depends on insertion history, not on indices: sort for determinism.
+  std::sort(out->begin(), out->end());
+}
+
+}  // namespace essaim

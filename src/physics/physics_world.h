@@ -1,0 +1,65 @@
+// The only Box2D user (Box2D 2.4.1 from Debian). Robots, boxes and cylinders as bodies;
+// wheel commands as a velocity servo with capped force and torque (spec §11.2); ray and
+// overlap queries through Box2D's dynamic tree. No Box2D type crosses this header.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/math.h"
+#include "model/model.h"
+
+namespace essaim {
+
+/// What a ray or query touched.
+enum class BodyKind : int { None = 0, Robot = 1, Obstacle = 2 };
+
+struct RayHit {
+  BodyKind kind = BodyKind::None;
+  int index = -1;          // robot or obstacle index
+  double distance = 0;     // m from the ray start
+  Vec2 point = Vec2::Zero();
+  bool Hit() const { return kind != BodyKind::None; }
+};
+
+struct PhysicsProfile {
+  double step_seconds = 0;
+};
+
+class PhysicsWorld {
+ public:
+  explicit PhysicsWorld(const Model& model);
+  ~PhysicsWorld();
+  PhysicsWorld(const PhysicsWorld&) = delete;
+  PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+  /// Wheel speeds in m/s. The heading used is the body's at this call (ARGoS freezes it
+  /// per tick). Both zero: the robot brakes, resisting pushes up to its force caps.
+  void SetWheelSpeeds(int robot, double left, double right);
+  /// One tick: `substeps` Box2D steps of dt/substeps.
+  void Step(double dt, int substeps);
+
+  int RobotCount() const { return static_cast<int>(robots_.size()); }
+  int ObstacleCount() const { return static_cast<int>(obstacles_.size()); }
+  /// Yaw is Box2D's accumulated, unwrapped body angle (ARGoS's quaternion uses it).
+  Pose2 RobotPose(int robot) const;
+  Vec2 RobotVelocity(int robot) const;
+  double RobotAngularVelocity(int robot) const;
+  void SetRobotPose(int robot, const Pose2& pose);
+  Pose2 ObstaclePose(int obstacle) const;
+  /// The body of a dead robot stays (an obstacle others bump into) but is braked.
+  void FreezeRobot(int robot);
+
+  /// Closest hit along from→to among shapes whose height reaches `z` (m above the floor),
+  /// ignoring robot `exclude_robot` (-1: none). Thread-safe (read-only).
+  RayHit CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const;
+  /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
+  void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<void*> robots_;     // b2Body*
+  std::vector<void*> obstacles_;  // b2Body*
+};
+
+}  // namespace essaim

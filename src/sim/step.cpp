@@ -1,0 +1,142 @@
+#include "sim/step.h"
+
+#include <chrono>
+
+#include "devices/devices.h"
+#include "sim/thread_pool.h"
+
+namespace essaim {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double Seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+void FlushLog(World& w, std::string& buffer) {
+  if (buffer.empty()) return;
+  if (w.options.log_sink) {
+    size_t start = 0;
+    while (start < buffer.size()) {
+      size_t end = buffer.find('\n', start);
+      if (end == std::string::npos) end = buffer.size();
+      w.options.log_sink(buffer[start], buffer.substr(start + 1, end - start - 1));
+      start = end + 1;
+    }
+  }
+  buffer.clear();  // keeps capacity: no churn once warm
+}
+
+bool LoopCall(World& w, const char* hook) {
+  std::string err;
+  if (!w.loop_functions.Call(hook, &err)) {
+    w.failure = err;
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+bool LengthReached(const World& w) {
+  return w.model.experiment.length_ticks > 0 && w.tick >= w.model.experiment.length_ticks;
+}
+
+StepStatus Step(World& w) {
+  const Model& m = w.model;
+  const int n = static_cast<int>(w.robots.size());
+  const double dt = m.experiment.TickLength();
+  ++w.tick;
+  w.loop_functions.SetTick(w.tick);
+
+  auto t0 = Clock::now();
+  for (int i = 0; i < n; ++i) ActRobot(m, m.robots[i], w.robots[i], w.physics);
+  auto t1 = Clock::now();
+  w.physics.Step(dt, m.physics.iterations);
+  for (int i = 0; i < n; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
+  auto t2 = Clock::now();
+  UpdateMedia(m, w.physics, w.robots, &w.media);
+  auto t3 = Clock::now();
+  bool ok = LoopCall(w, "pre_step");
+  FlushLog(w, w.loop_functions.LogBuffer());
+  auto t4 = Clock::now();
+  w.times.act += Seconds(t0, t1);
+  w.times.physics += Seconds(t1, t2);
+  w.times.media += Seconds(t2, t3);
+  w.times.loop_functions += Seconds(t3, t4);
+  if (!ok) return StepStatus::Failed;
+
+  // Sense + control: robots are independent here (each writes only its own state).
+  const SenseContext ctx{m, w.physics, w.media, w.floor, w.robots, w.tick, dt};
+  auto work = [&](int begin, int end) {
+    World::ChunkTimes local;
+    for (int i = begin; i < end; ++i) {
+      RobotState& r = w.robots[i];
+      if (!r.alive || !r.controller_ok) continue;
+      auto a = Clock::now();
+      SenseRobot(ctx, m.robots[i], r);
+      LuaController& c = *w.controllers[i];
+      c.PushReadings();
+      auto b = Clock::now();
+      if (!c.CallStep(&w.pending_errors[i])) {
+        r.controller_ok = false;
+        // The robot stops: zero wheels from the next act on (spec: never stepped again).
+        r.cmd.wheel_left = r.cmd.wheel_right = 0;
+        r.cmd.wheels_new = true;
+      }
+      auto e = Clock::now();
+      local.sense += Seconds(a, b);
+      local.control += Seconds(b, e);
+    }
+    // Chunks are disjoint, so the chunk's first robot names its slot: no shared writes.
+    w.chunk_times[static_cast<size_t>(begin)] = local;
+  };
+  w.pool->ParallelFor(n, work);
+  for (World::ChunkTimes& t : w.chunk_times) {
+    w.times.sense += t.sense;
+    w.times.control += t.control;
+    t = World::ChunkTimes();
+  }
+
+  auto t5 = Clock::now();
+  bool failed = false;
+  for (int i = 0; i < n; ++i) {
+    FlushLog(w, w.controllers[i]->LogBuffer());
+    if (!w.pending_errors[i].empty()) {
+      w.controller_errors.push_back({m.robots[i].id, w.tick, w.pending_errors[i]});
+      if (w.options.log_sink) w.options.log_sink('E', w.pending_errors[i]);
+      w.pending_errors[i].clear();
+      if (w.options.strict) {
+        w.failure = w.controller_errors.back().message;
+        failed = true;
+      }
+    }
+  }
+  if (failed) return StepStatus::Failed;
+  ok = LoopCall(w, "post_step");
+  bool finished = false;
+  if (ok) {
+    std::string err;
+    ok = w.loop_functions.IsExperimentFinished(&finished, &err);
+    if (!ok) w.failure = err;
+  }
+  FlushLog(w, w.loop_functions.LogBuffer());
+  w.times.loop_functions += Seconds(t5, Clock::now());
+  if (!ok) return StepStatus::Failed;
+  if (finished) {
+    w.finished_by_loop_functions = true;
+    return StepStatus::Finished;
+  }
+  return LengthReached(w) ? StepStatus::Finished : StepStatus::Running;
+}
+
+bool FinishRun(World& w, Json* metrics, bool* has_metrics, std::string* error) {
+  bool ok = w.loop_functions.PostExperiment(metrics, has_metrics, error);
+  FlushLog(w, w.loop_functions.LogBuffer());
+  for (size_t i = 0; i < w.controllers.size(); ++i) {
+    std::string err;
+    if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err))
+      w.controller_errors.push_back({w.model.robots[i].id, w.tick, err});
+    FlushLog(w, w.controllers[i]->LogBuffer());
+  }
+  return ok;
+}
+
+}  // namespace essaim

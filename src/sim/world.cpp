@@ -1,0 +1,89 @@
+#include "sim/world.h"
+
+#include "core/rng.h"
+#include "devices/devices.h"
+#include "sim/thread_pool.h"
+
+namespace essaim {
+
+World::World(const Model& m, const SimOptions& o) : model(m), options(o), physics(m) {}
+World::~World() = default;
+
+namespace {
+bool BuildFloor(World& w, std::string* error) {
+  const Model& m = w.model;
+  FloorRaster& f = w.floor;
+  f.min = m.arena.Min();
+  f.size = Vec2(m.arena.size.x(), m.arena.size.y());
+  if (m.floor.source == FloorSource::Image) {
+    f.width = m.floor.width;
+    f.height = m.floor.height;
+    f.pixels = m.floor.pixels;
+  } else if (m.floor.source == FloorSource::LoopFunctions) {
+    if (!w.loop_functions.HasFunction("floor_color")) {
+      *error = m.loop_functions.script + ": the floor comes from the loop functions but they define no floor_color(x, y)";
+      return false;
+    }
+    // Sampled once at pixel centres: ground sensors then read a raster, thread-safe and
+    // fast. A floor that changes during the run is not supported (docs/compatibility.md).
+    f.width = std::max(1, static_cast<int>(m.arena.size.x() * m.floor.pixels_per_meter));
+    f.height = std::max(1, static_cast<int>(m.arena.size.y() * m.floor.pixels_per_meter));
+    f.pixels.resize(static_cast<size_t>(f.width) * f.height);
+    for (int py = 0; py < f.height; ++py)
+      for (int px = 0; px < f.width; ++px) {
+        double x = f.min.x() + (px + 0.5) * f.size.x() / f.width;
+        double y = f.min.y() + (py + 0.5) * f.size.y() / f.height;
+        if (!w.loop_functions.FloorColor(x, y, &f.pixels[static_cast<size_t>(py) * f.width + px], error)) return false;
+      }
+  }
+  return true;
+}
+}  // namespace
+
+std::unique_ptr<World> World::Create(const Model& model, const SimOptions& options, std::string* error) {
+  std::unique_ptr<World> w(new World(model, options));
+  const uint64_t seed = model.experiment.seed;
+  const size_t n = model.robots.size();
+  w->robots.resize(n);
+  w->pending_errors.resize(n);
+  w->chunk_times.resize(n + 1);
+  w->media.rab_inbox.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    RobotState& r = w->robots[i];
+    r.index = static_cast<int>(i);
+    r.controller_rng.Seed(DeriveSeed(seed, StreamKind::Controller, i));
+    r.sensor_rng.Seed(DeriveSeed(seed, StreamKind::SensorNoise, i));
+    r.actuator_rng.Seed(DeriveSeed(seed, StreamKind::ActuatorNoise, i));
+    w->media.rab_inbox[i].reserve(n);
+    InitRobotDevices(model, model.robots[i], r, w->physics);
+  }
+  w->threads = options.threads >= 0 ? options.threads : model.experiment.threads;
+  if (w->threads < 1) w->threads = 1;
+  w->pool = std::make_unique<ThreadPool>(w->threads);
+
+  // Loop functions load first so the floor exists before anything senses it.
+  if (!w->loop_functions.Load(model, &w->robots, &w->physics, options.output_dir, error)) return nullptr;
+  if (!BuildFloor(*w, error)) return nullptr;
+
+  w->controllers.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    auto c = std::make_unique<LuaController>();
+    if (!c->Load(model, model.robots[i], &w->robots[i], seed, options.lua, error)) return nullptr;
+    w->controllers.push_back(std::move(c));
+  }
+  for (size_t i = 0; i < n; ++i) {
+    std::string err;
+    if (!w->controllers[i]->CallInit(&err)) {
+      w->robots[i].controller_ok = false;
+      w->controller_errors.push_back({model.robots[i].id, 0, err});
+      if (options.strict) {
+        *error = err;
+        return nullptr;
+      }
+    }
+  }
+  if (!w->loop_functions.Call("init", error)) return nullptr;
+  return w;
+}
+
+}  // namespace essaim

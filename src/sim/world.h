@@ -1,0 +1,76 @@
+// The World: everything that changes during a run (MuJoCo's mjData), built from a const
+// Model. Steps take the World; reset rebuilds it from the Model.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "devices/floor.h"
+#include "devices/media.h"
+#include "devices/robot_state.h"
+#include "lua/loop_functions.h"
+#include "lua/lua_state.h"
+#include "model/model.h"
+#include "physics/physics_world.h"
+
+namespace essaim {
+
+/// Seconds spent per stage, summed over the run.
+struct StageTimes {
+  double act = 0, physics = 0, media = 0, loop_functions = 0, sense = 0, control = 0;
+  double Total() const { return act + physics + media + loop_functions + sense + control; }
+};
+
+struct ControllerError {
+  std::string robot;
+  uint64_t tick = 0;
+  std::string message;
+};
+
+struct SimOptions {
+  LuaOptions lua;
+  std::string output_dir;      // given to the loop functions
+  bool strict = false;         // first controller error ends the run
+  int threads = -1;            // -1: the model's <system threads>
+  /// Receives log()/logerr() lines in robot order ('O' stdout, 'E' stderr). Null: dropped.
+  std::function<void(char stream, const std::string& line)> log_sink;
+};
+
+class ThreadPool;
+
+class World {
+ public:
+  /// Builds physics, robot states, Lua controllers (running their init()) and loop
+  /// functions. Returns nullptr with `error` when a script fails to load.
+  static std::unique_ptr<World> Create(const Model& model, const SimOptions& options, std::string* error);
+  ~World();
+
+  const Model& model;
+  SimOptions options;
+  uint64_t tick = 0;
+  PhysicsWorld physics;
+  std::vector<RobotState> robots;
+  std::vector<std::unique_ptr<LuaController>> controllers;
+  LoopFunctions loop_functions;
+  Media media;
+  FloorRaster floor;
+  StageTimes times;
+  std::vector<ControllerError> controller_errors;
+  std::string failure;         // set when the run must stop (strict, loop-function error)
+  bool finished_by_loop_functions = false;
+  int threads = 1;
+  std::unique_ptr<ThreadPool> pool;
+  /// Per-robot error text of the current tick (written by the robot's own thread).
+  std::vector<std::string> pending_errors;
+  /// Stage time of each parallel chunk, indexed by its first robot (no shared writes).
+  struct ChunkTimes {
+    double sense = 0, control = 0;
+  };
+  std::vector<ChunkTimes> chunk_times;
+
+ private:
+  World(const Model& m, const SimOptions& o);
+};
+
+}  // namespace essaim
