@@ -1,7 +1,7 @@
 -- A controller that never goes home: it wanders (straight lines, turning away from obstacles it
 -- feels with the proximity ring) and keeps clear of the nest, so the foraging loop functions
 -- never refill it. Used to check that a robot dies when its battery runs out.
--- Devices: differential_steering, footbot_proximity, positioning. Params (optional, metres):
+-- Devices: differential_steering, positioning, footbot_proximity (optional). Params (optional, metres):
 -- NEST_X, NEST_Y, AVOID_NEST (stay this far from the nest centre, default 1.2).
 local speed = 30
 local nest_x, nest_y, keep_out
@@ -18,7 +18,7 @@ local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 function step()
   -- obstacle felt: spin away from it
   local best, best_angle = 0, 0
-  for i = 1, #robot.proximity do
+  for i = 1, #(robot.proximity or {}) do
     local r = robot.proximity[i]
     if r.value > best then best, best_angle = r.value, r.angle end
   end
