@@ -289,7 +289,18 @@ def run_key(point: dict, seed: int, names: dict[str, str]) -> str:
 
 
 def stderr_tail(text: str, n: int = ERROR_LINES) -> str:
-    lines = [ln for ln in text.splitlines() if ln.strip()]
+    """The last n lines of stderr that say something: no blank lines, no Lua traceback
+    frames (`stack traceback:` and the tab-indented lines under it; stderr.txt has them)."""
+    lines, in_traceback = [], False
+    for ln in text.splitlines():
+        if ln.strip() == "stack traceback:":
+            in_traceback = True
+            continue
+        if in_traceback and ln.startswith(("\t", " ")):
+            continue
+        in_traceback = False
+        if ln.strip():
+            lines.append(ln.rstrip())
     return "\n".join(lines[-n:])
 
 
@@ -721,7 +732,7 @@ def main(argv=None) -> int:
             summary = read_json(run_dir / "summary.json")
             err = stderr_tail(result.get("stderr", "")) or (
                 summary.get("failure") if isinstance(summary, dict) else None) or (
-                f"exit {result['returncode']}" if result["returncode"] != 0
+                exit_text(result["returncode"]) if result["returncode"] != 0
                 else "essaim exited 0 without writing summary.json")
             failures[run.key] = failed_row(run, result["returncode"], err, result.get("host"),
                                            run_dir)
@@ -774,15 +785,29 @@ def _sigterm(signum, frame):
 
 
 def report_failures(rows: list[dict]) -> None:
-    """How many runs failed and why, grouped by the last line of their error."""
-    groups: dict[str, list[dict]] = {}
+    """How many runs failed and why, grouped by exit status and the last line of their error
+    with numbers blanked (robot fb3 and fb7, line 12 and 13 fall together); each group shows
+    the message of its first run."""
+    groups: dict[tuple, list[dict]] = {}
     for row in rows:
-        last = (row["error"] or "").strip().splitlines()[-1:] or [""]
-        groups.setdefault(f"exit {row['returncode']}: {last[0]}", []).append(row)
+        last = ((row["error"] or "").strip().splitlines()[-1:] or [""])[0]
+        groups.setdefault((row["returncode"], re.sub(r"\d+", "#", last)), []).append(row)
     print(f"sweep: {len(rows)} failed runs:", file=sys.stderr)
-    for why, grp in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+    for (rc, _), grp in sorted(groups.items(), key=lambda kv: -len(kv[1])):
+        last = ((grp[0]["error"] or "").strip().splitlines()[-1:] or [""])[0]
         examples = ", ".join(r["run"] for r in grp[:3]) + (", ..." if len(grp) > 3 else "")
-        print(f"  {len(grp):5d} x {why}\n          e.g. {examples}", file=sys.stderr)
+        print(f"  {len(grp):5d} x {exit_text(rc)}: {last}\n          e.g. {examples}",
+              file=sys.stderr)
+
+
+def exit_text(rc: int) -> str:
+    """`exit 2`, or `killed by SIGABRT` for a negative return code (death by signal)."""
+    if rc is not None and rc < 0:
+        try:
+            return f"killed by {signal.Signals(-rc).name}"
+        except ValueError:
+            return f"killed by signal {-rc}"
+    return f"exit {rc}"
 
 
 if __name__ == "__main__":

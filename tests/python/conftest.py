@@ -26,14 +26,19 @@ def need_python_deps():
 
 
 @pytest.fixture(scope="session")
-def essaim():
+def essaim(tmp_path_factory):
+    """The essaim binary from $ESSAIM, behind a wrapper capping its memory: the tiny test
+    experiments need a few MB, and a runaway run must not take the machine's memory."""
     path = os.environ.get("ESSAIM")
     if not path:
         pytest.skip("ESSAIM is not set: point it at the essaim binary (ctest does) "
                     "to run the sweep tests that run simulations")
     if not os.access(path, os.X_OK):
         pytest.skip(f"ESSAIM={path} is not an executable file (build the essaim target)")
-    return path
+    wrapper = tmp_path_factory.mktemp("bin") / "essaim"
+    wrapper.write_text(f'#!/bin/sh\nulimit -v 4194304\nexec "{os.path.abspath(path)}" "$@"\n')
+    wrapper.chmod(0o755)
+    return str(wrapper)
 
 
 def toml_value(v) -> str:
@@ -64,10 +69,12 @@ def write_sweep(path: Path, experiment: str = "tiny.argos", **keys) -> Path:
     return path
 
 
-def run_sweep(*args, env=None, timeout=120):
+def run_sweep(*args, env=None, essaim=None, timeout=120):
     """scripts/sweep.py as a user runs it; returns the CompletedProcess."""
     e = dict(os.environ)
     e.update(env or {})
+    if essaim:
+        e["ESSAIM"] = essaim
     return subprocess.run([sys.executable, str(SCRIPTS / "sweep.py"), "--no-progress", *map(str, args)],
                           capture_output=True, text=True, timeout=timeout, env=e)
 

@@ -50,17 +50,16 @@ def test_plot_cli_writes_png_and_svg(tmp_path):
 
 
 def test_plot_reads_a_sweep_folder_and_csv(tmp_path):
-    synthetic_table().to_csv(tmp_path / "results.csv", index=False)
     synthetic_table().to_parquet(tmp_path / "results.parquet", index=False)
-    r = subprocess.run([sys.executable, str(SCRIPTS / "plot.py"), str(tmp_path),
-                        "--errorbars", "ci95"], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    assert sorted(p.name for p in (tmp_path / "figures").iterdir()) == \
+    synthetic_table().to_csv(tmp_path / "results.csv", index=False)
+    df, where = plot.load_table(tmp_path)
+    assert where == tmp_path and len(df) == 10
+    csv, _ = plot.load_table(tmp_path / "results.csv")
+    assert csv["trips_per_source.A"].equals(df["trips_per_source.A"])
+    files = plot.make_figures(csv, tmp_path / "figures", errorbars="ci95")
+    assert sorted(p.name for p in files) == \
         sorted(f"{n}.{e}" for n in FIGURES for e in ("png", "svg"))
-    r = subprocess.run([sys.executable, str(SCRIPTS / "plot.py"), str(tmp_path / "results.csv"),
-                        "--out", str(tmp_path / "csvfig")], capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    assert len(list((tmp_path / "csvfig").glob("*.png"))) == 4
+    assert "95 % CI" in (tmp_path / "figures" / "trips_per_robot.svg").read_text()
 
 
 def test_error_bars():

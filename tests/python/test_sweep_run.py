@@ -49,7 +49,7 @@ def check_table_against_runs(out):
 
 def test_local_sweep_then_resume(tmp_path, essaim):
     s, out = tiny_sweep(tmp_path)
-    r = run_sweep(s, "-j", "2")
+    r = run_sweep(s, "-j", "2", essaim=essaim)
     assert r.returncode == 0, r.stderr
     df = check_table_against_runs(out)
     assert df["run"].tolist() == ["quantity=2__seed=1", "quantity=2__seed=2",
@@ -63,7 +63,7 @@ def test_local_sweep_then_resume(tmp_path, essaim):
         f.unlink()
     (out / "runs" / gone).rmdir()
     time.sleep(0.05)
-    r = run_sweep(s, "-j", "2")
+    r = run_sweep(s, "-j", "2", essaim=essaim)
     assert r.returncode == 0, r.stderr
     assert "3 already done, 1 to run" in r.stderr
     for k, m in mtimes.items():
@@ -72,7 +72,7 @@ def test_local_sweep_then_resume(tmp_path, essaim):
     check_table_against_runs(out)
 
     # Nothing left to do: nothing runs, the table is rewritten the same.
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert r.returncode == 0 and "4 already done, 0 to run" in r.stderr
 
 
@@ -81,7 +81,7 @@ def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
     # (exit 1), next to runs that succeed.
     s, out = tiny_sweep(tmp_path, params={"controllers.ctrl.params.fail": [0, 1]},
                         strict=True, seeds=1)
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert r.returncode == 1, r.stderr
     df = pd.read_parquet(out / "results.parquet").set_index("run")
     assert df.loc["fail=0__seed=1", "status"] == "ok"
@@ -91,13 +91,13 @@ def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
     assert "1 failed" in r.stderr and "deliberate failure" in r.stderr
     # A rerun keeps the run that succeeded and tries the failed one again (essaim may have
     # written a summary.json for it: it is not a finished run).
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert r.returncode == 1 and "1 already done, 1 to run" in r.stderr
 
     s, out = tiny_sweep(tmp_path, name="badpath", params={QUANTITY: [2],
                                                           "arena.nosuchthing.attr": [1, 2]},
                         seeds=1)
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert r.returncode == 1
     df = pd.read_parquet(out / "results.parquet")
     assert df["status"].tolist() == ["failed", "failed"]
@@ -106,18 +106,18 @@ def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
     assert "2 failed" in r.stderr and "2 x exit 2" in r.stderr
 
     # A rerun tries the failed runs again (they have no summary.json).
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert "0 already done, 2 to run" in r.stderr
 
 
 def test_dask_cluster_gives_the_same_table(tmp_path, essaim):
     distributed = pytest.importorskip("distributed")
     s, out_local = tiny_sweep(tmp_path, name="local")
-    assert run_sweep(s).returncode == 0
+    assert run_sweep(s, essaim=essaim).returncode == 0
     s, out = tiny_sweep(tmp_path, name="dask")
     with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
                                   dashboard_address=None) as cluster:
-        r = run_sweep(s, "--scheduler", cluster.scheduler_address)
+        r = run_sweep(s, "--scheduler", cluster.scheduler_address, essaim=essaim)
     assert r.returncode == 0, r.stderr
     df = check_table_against_runs(out)
     local = pd.read_parquet(out_local / "results.parquet")
@@ -133,7 +133,7 @@ def test_dask_cluster_gives_the_same_table(tmp_path, essaim):
 def test_loop_function_metrics_become_columns(tmp_path, essaim):
     s, out = tiny_sweep(tmp_path, experiment="tiny_loop.argos", params={QUANTITY: [3]},
                         seeds=1)
-    r = run_sweep(s)
+    r = run_sweep(s, essaim=essaim)
     assert r.returncode == 0, r.stderr
     df = pd.read_parquet(out / "results.parquet")
     metrics = read_json(out / "runs" / df["run"][0] / "metrics.json")

@@ -199,3 +199,11 @@ def test_only_successful_runs_count_as_finished(tmp_path):
     assert not sweep.finished(d, argv + ["--ticks", "5"])  # made by another command line
     (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 1}))
     assert not sweep.finished(d, argv)
+
+
+def test_error_is_the_stderr_tail_without_lua_tracebacks():
+    err = ("robot fb0: tiny.lua:13: boom\nstack traceback:\n\t[C]: in function 'error'\n"
+           "\ttiny.lua:13: in function 'step'\n\nessaim run: robot fb0: tiny.lua:13: boom\n"
+           "stack traceback:\n\t[C]: in function 'error'\n")
+    assert sweep.stderr_tail(err) == "robot fb0: tiny.lua:13: boom\nessaim run: robot fb0: tiny.lua:13: boom"
+    assert sweep.stderr_tail("\n".join(f"l{i}" for i in range(9))) == "l4\nl5\nl6\nl7\nl8"
