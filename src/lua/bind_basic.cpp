@@ -27,7 +27,7 @@ void SetNumber(lua_State* L, int t, const char* k, double v) {
 void CreateWheelsActuator(lua_State* L, int t, RobotState* robot) { SetClosure(L, t, "set_velocity", SetVelocity, robot); }
 
 void CreateWheelsSensor(lua_State* L, int t) {
-  SetNumber(L, t, "axis_length", footbot::kAxisLength * 100);
+  SetNumber(L, t, "axis_length", 14.0);  // cm; 0.14 * 100 is not exactly 14 in binary
   for (const char* k : {"velocity_left", "velocity_right", "distance_left", "distance_right"}) SetNumber(L, t, k, 0);
 }
 

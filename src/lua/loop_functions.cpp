@@ -183,7 +183,14 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
         all_int &= lua_isinteger(L, -2) != 0;
         lua_pop(L, 1);
       }
-      if (count == static_cast<size_t>(n) && all_int) {
+      // A metatable field __jsontype = "array" | "object" settles empty or ambiguous tables.
+      std::string forced;
+      if (luaL_getmetafield(L, idx, "__jsontype") != LUA_TNIL) {
+        if (lua_type(L, -1) == LUA_TSTRING) forced = lua_tostring(L, -1);
+        lua_pop(L, 1);
+      }
+      bool as_array = forced.empty() ? count == static_cast<size_t>(n) && all_int : forced == "array";
+      if (as_array) {
         *out = Json::Array();
         for (lua_Integer k = 1; k <= n; ++k) {
           lua_rawgeti(L, idx, k);
@@ -198,12 +205,14 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
       std::sort(keys.begin(), keys.end());
       *out = Json::Object();
       for (const std::string& k : keys) {
+        // Keys were collected as text; integer keys are looked up as integers.
         auto as_int = ParseInt(k);
-        if (as_int && lua_rawgeti(L, idx, *as_int) != LUA_TNIL) {
-        } else {
-          lua_pop(L, 1);
-          lua_getfield(L, idx, k.c_str());
+        bool found = false;
+        if (as_int) {
+          found = lua_rawgeti(L, idx, *as_int) != LUA_TNIL;
+          if (!found) lua_pop(L, 1);
         }
+        if (!found) lua_getfield(L, idx, k.c_str());
         Json v;
         bool ok = ToJson(L, -1, &v, depth + 1, error);
         lua_pop(L, 1);

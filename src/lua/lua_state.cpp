@@ -94,7 +94,7 @@ void InstructionHook(lua_State* L, lua_Debug*) {
   lua_getfield(L, LUA_REGISTRYINDEX, "essaim.budget");
   auto* b = static_cast<HookBudget*>(lua_touserdata(L, -1));
   lua_pop(L, 1);
-  if (b && (b->used += kHookEvery) > b->limit) luaL_error(L, "instruction limit exceeded (%lld per call)", b->limit);
+  if (b && (b->used += kHookEvery) > b->limit) luaL_error(L, "instruction limit exceeded (%I per call)", static_cast<lua_Integer>(b->limit));
 }
 }  // namespace
 

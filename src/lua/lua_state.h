@@ -42,7 +42,7 @@ class LuaController {
   /// Copies the robot's Readings into its Lua tables (in place).
   void PushReadings();
   /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
-  bool CallInit(std::string* error) { return Call("init", true, error); }
+  bool CallInit(std::string* error) { return Call("init", false, error); }
   bool CallStep(std::string* error) { return Call("step", true, error); }
   bool CallReset(std::string* error) { return Call("reset", false, error); }
   bool CallDestroy(std::string* error) { return Call("destroy", false, error); }

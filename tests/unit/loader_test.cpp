@@ -1,1 +1,191 @@
+// The .argos loader: every error with file:line and element, --set, <distribute>.
 #include <gtest/gtest.h>
+
+#include "support/scene.h"
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+std::unique_ptr<Model> LoadText(const TempDir& dir, const std::string& xml, ErrorList* errors, LoadOptions opt = {}) {
+  return LoadExperimentFile(dir.Write("x.argos", xml), opt, errors);
+}
+
+const char* kCtrl =
+    "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/></actuators>"
+    "<sensors/><params script=\"c.lua\" speed=\"10\"/></lua_controller>";
+
+TEST(Loader, MinimalExperiment) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  ErrorList e;
+  auto m = LoadText(d, Experiment(FootBot("fb0", 1, 2, 90, "c"), kCtrl, 50), &e);
+  ASSERT_TRUE(m) << e.Format();
+  ASSERT_EQ(m->robots.size(), 1u);
+  EXPECT_EQ(m->robots[0].id, "fb0");
+  EXPECT_DOUBLE_EQ(m->robots[0].pose.x, 1);
+  EXPECT_NEAR(m->robots[0].pose.yaw, kPi / 2, 1e-12);
+  EXPECT_EQ(m->robots[0].params.at("speed"), "10");
+  EXPECT_EQ(m->robots[0].params.at("script"), "c.lua");
+  EXPECT_EQ(m->experiment.length_ticks, 50u);
+  EXPECT_EQ(m->controllers[0].script, d.path() + "/c.lua");  // resolved beside the .argos
+}
+
+TEST(Loader, LengthIsTruncatedAsArgos) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  std::string xml = Experiment("", kCtrl);
+  // 2.3 s at 100 ticks/s is 229.99999999999997 ticks: ARGoS runs 229.
+  size_t a = xml.find("length=\""), b = xml.find('"', a + 8);
+  xml.replace(a, b - a + 1, "length=\"2.3\"");
+  a = xml.find("ticks_per_second=\""), b = xml.find('"', a + 18);
+  xml.replace(a, b - a + 1, "ticks_per_second=\"100\"");
+  auto m = LoadText(d, xml, &e);
+  ASSERT_TRUE(m) << e.Format();
+  EXPECT_EQ(m->experiment.length_ticks, 229u);
+}
+
+TEST(Loader, ReportsEveryErrorWithLineAndElement) {
+  TempDir d;
+  std::string xml =
+      "<argos-configuration>\n"                                          // 1
+      "  <framework><experiment ticks_per_second=\"ten\"/></framework>\n"  // 2
+      "  <controllers>\n"                                                // 3
+      "    <lua_controller id=\"c\"><actuators><warp_drive implementation=\"default\"/></actuators>\n"  // 4
+      "      <sensors/><params script=\"missing.lua\"/></lua_controller>\n"  // 5
+      "  </controllers>\n"                                               // 6
+      "  <arena size=\"10,10\">\n"                                         // 7
+      "    <teapot id=\"t\"/>\n"                                          // 8
+      "    <box id=\"b\" size=\"1,1,1\" movable=\"true\"><body position=\"0,0,0\"/></box>\n"  // 9
+      "  </arena>\n"
+      "  <physics_engines><dynamics2d id=\"d\"/></physics_engines><media/>\n"
+      "</argos-configuration>\n";
+  ErrorList e;
+  auto m = LoadText(d, xml, &e);
+  EXPECT_FALSE(m);
+  std::string all = e.Format();
+  EXPECT_NE(all.find("x.argos:2: <experiment>: attribute 'ticks_per_second': 'ten' is not an integer"), std::string::npos) << all;
+  EXPECT_NE(all.find(":4: <warp_drive>: unknown actuator"), std::string::npos) << all;
+  EXPECT_NE(all.find(":5: <params>: script 'missing.lua' not found"), std::string::npos) << all;
+  EXPECT_NE(all.find(":7: <arena>: attribute 'size'"), std::string::npos) << all;
+  EXPECT_NE(all.find(":8: <teapot>: unsupported entity"), std::string::npos) << all;
+  EXPECT_NE(all.find(":9: <box>: missing required attribute 'mass'"), std::string::npos) << all;
+  EXPECT_GE(e.Size(), 6u);
+}
+
+TEST(Loader, MalformedXmlNamesTheLine) {
+  TempDir d;
+  ErrorList e;
+  EXPECT_FALSE(LoadText(d, "<argos-configuration>\n<framework>\n</arena>\n", &e));
+  EXPECT_NE(e.Format().find("x.argos:2: malformed XML"), std::string::npos) << e.Format();
+}
+
+TEST(Loader, CppLoopFunctionsAreAClearError) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libx\" label=\"x\"/>"), &e));
+  EXPECT_NE(e.Format().find("essaim's loop functions are Lua scripts"), std::string::npos) << e.Format();
+}
+
+TEST(Loader, UnsupportedDeviceIsNamed) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  std::string c = "<lua_controller id=\"c\"><actuators/><sensors><perspective_camera implementation=\"default\"/></sensors><params/></lua_controller>";
+  EXPECT_FALSE(LoadText(d, Experiment("", c), &e));
+  EXPECT_NE(e.Format().find("<perspective_camera>: unknown sensor"), std::string::npos) << e.Format();
+}
+
+TEST(Loader, SetOverridesAttributesByPath) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  LoadOptions o;
+  o.overrides = {"controllers.c.params.speed=25", "framework.experiment.random_seed=99", "arena.fb0.rab_range=2"};
+  auto m = LoadText(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), kCtrl), &e, o);
+  ASSERT_TRUE(m) << e.Format();
+  EXPECT_EQ(m->robots[0].params.at("speed"), "25");
+  EXPECT_EQ(m->experiment.seed, 99u);
+  EXPECT_DOUBLE_EQ(m->robots[0].rab_range, 2);
+  ErrorList bad;
+  o.overrides = {"controllers.nope.params.speed=1"};
+  EXPECT_FALSE(LoadText(d, Experiment("", kCtrl), &bad, o));
+  EXPECT_NE(bad.Format().find("no element at 'controllers.nope'"), std::string::npos) << bad.Format();
+}
+
+TEST(Loader, PerRobotParamsReplaceTheControllers) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  std::string bot = "<foot-bot id=\"fb0\"><controller config=\"c\"><params script=\"c.lua\" mine=\"1\"/></controller></foot-bot>";
+  auto m = LoadText(d, Experiment(bot, kCtrl), &e);
+  ASSERT_TRUE(m) << e.Format();
+  EXPECT_EQ(m->robots[0].params.count("speed"), 0u);
+  EXPECT_EQ(m->robots[0].params.at("mine"), "1");
+}
+
+TEST(Loader, GridDistributeFollowsTheFormulaAndNamesIds) {
+  TempDir d;
+  d.Write("c.lua", "");
+  ErrorList e;
+  std::string dist =
+      "<distribute><position method=\"grid\" center=\"1,2,0\" distances=\"0.5,0.4,0\" layout=\"3,2,1\"/>"
+      "<orientation method=\"constant\" values=\"45,0,0\"/>"
+      "<entity quantity=\"5\" max_trials=\"10\" base_num=\"7\"><foot-bot id=\"bot\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  auto m = LoadText(d, Experiment(dist, kCtrl), &e);
+  ASSERT_TRUE(m) << e.Format();
+  ASSERT_EQ(m->robots.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(m->robots[k].id, "bot" + std::to_string(k + 7));
+    // x = cx + (nx-1)dx/2 - (k mod nx)dx ; y = cy + (ny-1)dy/2 - ((k div nx) mod ny)dy
+    EXPECT_NEAR(m->robots[k].pose.x, 1 + 0.5 - (k % 3) * 0.5, 1e-9);
+    EXPECT_NEAR(m->robots[k].pose.y, 2 + 0.2 - ((k / 3) % 2) * 0.4, 1e-9);
+    EXPECT_NEAR(m->robots[k].pose.yaw, kPi / 4, 1e-6);
+  }
+}
+
+TEST(Loader, DistributeAvoidsOverlapsOrFailsClearly) {
+  TempDir d;
+  d.Write("c.lua", "");
+  auto dist = [](int n) {
+    return "<distribute><position method=\"uniform\" min=\"-0.5,-0.5,0\" max=\"0.5,0.5,0\"/>"
+           "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/>"
+           "<entity quantity=\"" + std::to_string(n) + "\" max_trials=\"200\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  };
+  ErrorList e;
+  auto m = LoadText(d, Experiment(dist(10), kCtrl), &e);
+  ASSERT_TRUE(m) << e.Format();
+  for (size_t i = 0; i < m->robots.size(); ++i)
+    for (size_t j = i + 1; j < m->robots.size(); ++j) {
+      double dx = m->robots[i].pose.x - m->robots[j].pose.x, dy = m->robots[i].pose.y - m->robots[j].pose.y;
+      EXPECT_GE(std::hypot(dx, dy), 2 * footbot::kRadius);
+    }
+  ErrorList full;
+  EXPECT_FALSE(LoadText(d, Experiment(dist(500), kCtrl), &full));
+  EXPECT_NE(full.Format().find("could not place"), std::string::npos) << full.Format();
+}
+
+TEST(Loader, SameSeedSamePlacementDifferentSeedDiffers) {
+  TempDir d;
+  d.Write("c.lua", "");
+  std::string dist =
+      "<distribute><position method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"/>"
+      "<orientation method=\"gaussian\" mean=\"0,0,0\" std_dev=\"90,0,0\"/>"
+      "<entity quantity=\"20\" max_trials=\"50\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  ErrorList e;
+  auto a = LoadText(d, Experiment(dist, kCtrl, 10, 5), &e);
+  auto b = LoadText(d, Experiment(dist, kCtrl, 10, 5), &e);
+  auto c = LoadText(d, Experiment(dist, kCtrl, 10, 6), &e);
+  ASSERT_TRUE(a && b && c) << e.Format();
+  EXPECT_EQ(a->robots[3].pose.x, b->robots[3].pose.x);
+  EXPECT_NE(a->robots[3].pose.x, c->robots[3].pose.x);
+  // ARGoS writes generated values with 6 significant digits.
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", a->robots[3].pose.x);
+  EXPECT_EQ(std::strtod(buf, nullptr), a->robots[3].pose.x);
+}
+
+}  // namespace
+}  // namespace essaim
