@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what is missing on Debian 12, makes the Python venv, builds essaim.
+# Idempotent: rerunning only rebuilds what changed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(build-essential cmake ninja-build pkg-config
+          libbox2d-dev liblua5.4-dev lua5.4 libtinyxml2-dev libeigen3-dev libpng-dev libcairo2-dev
+          libgtest-dev googletest python3 python3-venv python3-pip chromium)
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "essaim setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -x .venv/bin/python3 ]; then
+  python3 -m venv .venv
+fi
+.venv/bin/python3 -m pip install -q --disable-pip-version-check -r scripts/requirements.txt
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DESSAIM_PYTHON="$PWD/.venv/bin/python3" > /dev/null
+cmake --build build
+echo "essaim setup: built build/essaim"
