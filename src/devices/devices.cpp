@@ -21,6 +21,8 @@ void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, Physic
   for (const DeviceConfig& d : c.actuators) {
     switch (d.type) {
       case DeviceType::WheelsActuator: ActWheels(&d, robot, physics); break;
+      case DeviceType::GripperActuator: ActGripper(robot, physics); break;
+      case DeviceType::TurretActuator: ActTurret(robot, physics, model.experiment.TickLength()); break;
       default: break;
     }
   }
@@ -39,6 +41,7 @@ void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot)
       case DeviceType::WheelsSensor: SenseWheels(d, robot, ctx.dt); break;
       case DeviceType::PositioningSensor: SensePositioning(d, robot, ctx.physics); break;
       case DeviceType::BatterySensor: SenseBattery(d, def.battery, robot, ctx.dt); break;
+      case DeviceType::TurretEncoderSensor: SenseTurretEncoder(robot); break;
       default: break;
     }
   }

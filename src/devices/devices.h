@@ -39,5 +39,11 @@ void SensePositioning(const DeviceConfig& cfg, RobotState& robot, const PhysicsW
 void InitBattery(const BatteryDef& def, RobotState& robot, const Pose2& pose);
 void DischargeBattery(const BatteryDef& def, RobotState& robot, const Pose2& pose, uint64_t tick);
 void SenseBattery(const DeviceConfig& cfg, const BatteryDef& def, RobotState& robot, double dt);
+// ---- gripper and turret (gripper.cpp, turret.cpp; spec §7.5)
+/// Locked: grips what touches the gripper disc (if holding nothing); unlocked: releases.
+void ActGripper(RobotState& robot, PhysicsWorld& physics);
+/// Advances the turret by one tick of `dt` s in its mode and turns a held object with it.
+void ActTurret(RobotState& robot, PhysicsWorld& physics, double dt);
+void SenseTurretEncoder(RobotState& robot);
 
 }  // namespace essaim

@@ -98,7 +98,9 @@ struct RobotState {
   Color leds[footbot::kLedCount];
   std::vector<uint8_t> rab_data;   // applied payload, broadcast this tick
   double gripper_aperture = 0;
-  double turret_rotation = 0;
+  double turret_rotation = 0;      // rad relative to the body, in [-pi, pi] (devices/turret.cpp)
+  TurretMode turret_mode = TurretMode::Off;
+  double turret_previous_error = 0;  // rad, position mode's last error (the PD's D term)
   BatteryState battery;
   ScannerState scanner;
 };

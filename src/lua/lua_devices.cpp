@@ -34,6 +34,12 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
       case DeviceType::WheelsActuator:
         CreateWheelsActuator(L, DeviceTable(L, robot_t, "wheels", &refs->wheels), robot);
         break;
+      case DeviceType::GripperActuator:
+        CreateGripperActuator(L, DeviceTable(L, robot_t, "gripper", &refs->gripper), robot);
+        break;
+      case DeviceType::TurretActuator:
+        CreateTurretActuator(L, DeviceTable(L, robot_t, "turret", &refs->turret), robot);
+        break;
       default: break;
     }
     lua_settop(L, robot_t);
@@ -43,6 +49,7 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
       case DeviceType::WheelsSensor: CreateWheelsSensor(L, DeviceTable(L, robot_t, "wheels", &refs->wheels)); break;
       case DeviceType::PositioningSensor: DeviceTable(L, robot_t, "positioning", &refs->positioning); break;
       case DeviceType::BatterySensor: DeviceTable(L, robot_t, "battery", &refs->battery); break;
+      case DeviceType::TurretEncoderSensor: CreateTurretSensor(L, DeviceTable(L, robot_t, "turret", &refs->turret)); break;
       default: break;
     }
     lua_settop(L, robot_t);
@@ -56,6 +63,7 @@ void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& 
       case DeviceType::WheelsSensor: PushWheels(L, refs->wheels, rd); break;
       case DeviceType::PositioningSensor: PushPositioning(L, refs->positioning, rd); break;
       case DeviceType::BatterySensor: PushBattery(L, refs->battery, rd); break;
+      case DeviceType::TurretEncoderSensor: PushTurret(L, refs->turret, rd); break;
       default: break;
     }
   }

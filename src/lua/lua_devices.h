@@ -30,5 +30,10 @@ void CreateWheelsSensor(lua_State* L, int t);
 void PushWheels(lua_State* L, int ref, const Readings& rd);
 void PushPositioning(lua_State* L, int ref, const Readings& rd);
 void PushBattery(lua_State* L, int ref, const Readings& rd);
+// gripper (lock_positive/lock_negative/unlock) and turret (set_* and rotation)
+void CreateGripperActuator(lua_State* L, int t, RobotState* robot);
+void CreateTurretActuator(lua_State* L, int t, RobotState* robot);
+void CreateTurretSensor(lua_State* L, int t);
+void PushTurret(lua_State* L, int ref, const Readings& rd);
 
 }  // namespace essaim

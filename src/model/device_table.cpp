@@ -28,9 +28,9 @@ std::vector<DeviceRow> MakeTable() {
        "robot.range_and_bearing.set_data / clear_data", {}},
       {T::ScannerActuator, "footbot_distance_scanner", false, "distance_scanner", "default", false,
        "robot.distance_scanner.enable / disable / set_angle / set_rpm", {}},
-      {T::GripperActuator, "footbot_gripper", false, "gripper", "default", false,
+      {T::GripperActuator, "footbot_gripper", false, "gripper", "default", true,
        "robot.gripper.lock_positive / lock_negative / unlock", {}},
-      {T::TurretActuator, "footbot_turret", false, "turret", "default", false,
+      {T::TurretActuator, "footbot_turret", false, "turret", "default", true,
        "robot.turret.set_rotation / set_rotation_speed / set_*_mode", {}},
       // ---- sensors
       {T::WheelsSensor, "differential_steering", true, "wheels", "default", true,
@@ -67,7 +67,7 @@ std::vector<DeviceRow> MakeTable() {
       {T::BatterySensor, "battery", true, "battery", "default", true,
        "robot.battery.available_charge (0..1), time_left (s)",
        {{"noise_range", "0:0", "uniform noise on the charge"}}},
-      {T::TurretEncoderSensor, "footbot_turret_encoder", true, "turret", "default", false,
+      {T::TurretEncoderSensor, "footbot_turret_encoder", true, "turret", "default", true,
        "robot.turret.rotation (rad)", {}},
   };
 }

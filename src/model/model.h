@@ -160,6 +160,7 @@ struct PhysicsDef {
   int iterations = 10;       // sub-steps per tick
   double box_linear_friction = 1.49, box_angular_friction = 1.49;
   double cylinder_linear_friction = 1.49, cylinder_angular_friction = 1.49;
+  double gripping_rigidity = 10000;  // N: force cap of a gripper's hold (N·m for its torque)
 };
 
 struct ArenaDef {

@@ -362,6 +362,8 @@ void Loader::LoadPhysics(const XMLElement* e) {
     p.id = Str(c, "id", "dyn2d");
     p.iterations = static_cast<int>(Int(c, "iterations", 10));
     if (p.iterations < 1) Error(c, "iterations must be >= 1");
+    p.gripping_rigidity = Double(c, "gripping_rigidity", p.gripping_rigidity);
+    if (p.gripping_rigidity <= 0) Error(c, "gripping_rigidity must be > 0");
     CheckChildren(c, {"friction", "spatial_hash", "boundaries"}, "expected friction, spatial_hash, boundaries");
     if (const XMLElement* f = c->FirstChildElement("friction")) {
       p.box_linear_friction = Double(f, "box_linear_friction", p.box_linear_friction);

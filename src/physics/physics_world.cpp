@@ -1,5 +1,6 @@
 #include "physics/physics_world.h"
 
+#include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
 #include <algorithm>
@@ -24,6 +25,19 @@ struct PhysicsWorld::Impl {
   std::vector<b2Body*> controls;     // kinematic servo targets, one per robot
   std::vector<double> obstacle_top;  // m, top of each obstacle
   std::vector<double> obstacle_bottom;
+  /// One gripper per robot. The grip is a motor joint (robot = body A, held = body B):
+  /// Box2D's form of ARGoS's gripper pivot with capped force; its target offsets turn
+  /// with the turret, so a held object orbits the robot's centre.
+  struct Grip {
+    b2MotorJoint* joint = nullptr;
+    GripTarget target;
+    b2Vec2 offset0{0, 0};  // held body's origin in the robot frame at grip time (m)
+    float angle0 = 0;      // held angle minus robot angle at grip time (rad, unwrapped)
+    double turret = 0;     // turret angle last applied (rad)
+    double turned = 0;     // turret rotation since the grip, unwrapped (rad)
+  };
+  std::vector<Grip> grips;
+  float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
 };
 
 PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
@@ -32,6 +46,8 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->ground = w.CreateBody(&gd);
 
   const PhysicsDef& phys = model.physics;
+  impl_->grips.resize(model.robots.size());
+  impl_->gripping_rigidity = static_cast<float>(phys.gripping_rigidity);
   for (size_t i = 0; i < model.obstacles.size(); ++i) {
     const ObstacleDef& o = model.obstacles[i];
     b2BodyDef bd;
@@ -163,9 +179,19 @@ double PhysicsWorld::RobotAngularVelocity(int robot) const {
 
 void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   b2Body* b = AsBody(robots_[robot]);
+  const b2Transform before = b->GetTransform();
+  const float turn = static_cast<float>(pose.yaw) - b->GetAngle();
   b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
   b->SetLinearVelocity(b2Vec2(0, 0));
   b->SetAngularVelocity(0);
+  // A held object moves with the robot instead of being dragged across the arena.
+  if (b2MotorJoint* j = impl_->grips[robot].joint) {
+    b2Body* held = j->GetBodyB();
+    b2Vec2 local = b2MulT(before, held->GetPosition());
+    held->SetTransform(b2Mul(b->GetTransform(), local), held->GetAngle() + turn);
+    held->SetLinearVelocity(b2Vec2(0, 0));
+    held->SetAngularVelocity(0);
+  }
 }
 
 Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {
@@ -207,6 +233,50 @@ class ClosestRay : public b2RayCastCallback {
   int exclude_;
 };
 
+// Grippable fixtures overlapping the gripper disc; keeps the deepest (ties: robots before
+// obstacles, then lower index), so the choice never depends on the tree's order.
+class GripQuery : public b2QueryCallback {
+ public:
+  GripQuery(const b2Vec2& centre, int self) : centre_(centre), self_(self) {}
+  bool ReportFixture(b2Fixture* f) override {
+    uintptr_t tag = f->GetUserData().pointer;
+    BodyKind kind = TagKind(tag);
+    int index = TagIndex(tag);
+    if (kind == BodyKind::Robot && index == self_) return true;
+    if (kind == BodyKind::None || f->GetBody()->GetType() != b2_dynamicBody) return true;  // static: not grippable
+    b2DistanceInput in;
+    in.proxyA.Set(&centre_, 1, 0.0f);
+    in.proxyB.Set(f->GetShape(), 0);
+    in.transformA.SetIdentity();
+    in.transformB = f->GetBody()->GetTransform();
+    in.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput out;
+    b2Distance(&out, &cache, &in);
+    // Signed gap between the disc and the shape (its radius: circle radius, polygon skin).
+    double gap = out.distance - f->GetShape()->m_radius - kGripperRadius;
+    if (gap >= 0) return true;
+    bool better = best.kind == BodyKind::None || gap < gap_ ||
+                  (gap == gap_ && (static_cast<int>(kind) < static_cast<int>(best.kind) ||
+                                   (kind == best.kind && index < best.index)));
+    if (better) {
+      best.kind = kind;
+      best.index = index;
+      body = f->GetBody();
+      gap_ = gap;
+    }
+    return true;
+  }
+  GripTarget best;
+  b2Body* body = nullptr;
+
+ private:
+  b2Vec2 centre_;
+  int self_;
+  double gap_ = 0;
+};
+
 class RobotQuery : public b2QueryCallback {
  public:
   RobotQuery(const Vec2& c, double r, std::vector<int>* out) : c_(c), r2_(r * r), out_(out) {}
@@ -245,5 +315,59 @@ void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int
   // The tree's order depends on insertion history, not on indices: sort for determinism.
   std::sort(out->begin(), out->end());
 }
+
+// ---- gripper
+
+Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
+  const b2Body* b = AsBody(robots_[robot]);
+  double a = b->GetAngle() + turret;
+  return {b->GetPosition().x + footbot::kRadius * std::cos(a), b->GetPosition().y + footbot::kRadius * std::sin(a)};
+}
+
+bool PhysicsWorld::TryGrip(int robot, double turret) {
+  Impl::Grip& g = impl_->grips[robot];
+  if (g.joint) return true;
+  Vec2 c = GripperPoint(robot, turret);
+  GripQuery q(b2Vec2(static_cast<float>(c.x()), static_cast<float>(c.y())), robot);
+  b2AABB box;
+  box.lowerBound.Set(static_cast<float>(c.x() - kGripperRadius), static_cast<float>(c.y() - kGripperRadius));
+  box.upperBound.Set(static_cast<float>(c.x() + kGripperRadius), static_cast<float>(c.y() + kGripperRadius));
+  impl_->world.QueryAABB(&q, box);
+  if (!q.body) return false;
+  b2Body* self = AsBody(robots_[robot]);
+  b2MotorJointDef jd;
+  jd.Initialize(self, q.body);  // target offsets = the current relative pose: hold it where it is
+  jd.maxForce = impl_->gripping_rigidity;
+  jd.maxTorque = impl_->gripping_rigidity;
+  jd.correctionFactor = 0.3f;
+  jd.collideConnected = false;  // robot and held object no longer push each other
+  g.joint = static_cast<b2MotorJoint*>(impl_->world.CreateJoint(&jd));
+  g.target = q.best;
+  g.offset0 = jd.linearOffset;
+  g.angle0 = jd.angularOffset;
+  g.turret = turret;
+  g.turned = 0;
+  q.body->SetAwake(true);
+  return true;
+}
+
+void PhysicsWorld::Release(int robot) {
+  Impl::Grip& g = impl_->grips[robot];
+  if (!g.joint) return;
+  impl_->world.DestroyJoint(g.joint);
+  g = Impl::Grip();
+}
+
+void PhysicsWorld::SetGripTurret(int robot, double turret) {
+  Impl::Grip& g = impl_->grips[robot];
+  if (!g.joint || turret == g.turret) return;
+  g.turned += WrapSigned(turret - g.turret);  // unwrapped: a turret in speed mode may turn many times
+  g.turret = turret;
+  b2Rot r(static_cast<float>(g.turned));
+  g.joint->SetLinearOffset(b2Mul(r, g.offset0));
+  g.joint->SetAngularOffset(g.angle0 + static_cast<float>(g.turned));
+}
+
+GripTarget PhysicsWorld::Gripped(int robot) const { return impl_->grips[robot].target; }
 
 }  // namespace essaim

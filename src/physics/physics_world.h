@@ -13,6 +13,17 @@ namespace essaim {
 /// What a ray or query touched.
 enum class BodyKind : int { None = 0, Robot = 1, Obstacle = 2 };
 
+/// What a robot's gripper holds (kind None: nothing).
+struct GripTarget {
+  BodyKind kind = BodyKind::None;
+  int index = -1;  // robot or obstacle index
+  bool Holding() const { return kind != BodyKind::None; }
+};
+
+/// Radius of the foot-bot gripper's contact disc, centred at the body radius in front of
+/// the turret (ARGoS's dynamics2d gripper sensor shape, spec §11.2).
+constexpr double kGripperRadius = 0.01;  // m
+
 struct RayHit {
   BodyKind kind = BodyKind::None;
   int index = -1;          // robot or obstacle index
@@ -54,6 +65,22 @@ class PhysicsWorld {
   RayHit CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const;
   /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
   void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
+
+  // ---- gripper (spec §7.5): the turret angle `turret` (rad, relative to the body) is
+  // robot state kept by devices/turret.cpp; physics only holds the joint.
+  /// Centre of the gripper disc: body radius in direction yaw + turret.
+  Vec2 GripperPoint(int robot, double turret) const;
+  /// If the robot holds nothing, grips the grippable shape (movable box or cylinder,
+  /// another robot) overlapping its gripper disc — the deepest if several — with a joint
+  /// that keeps it where it is relative to the turret, force and torque capped by
+  /// `gripping_rigidity`. Returns whether the robot now holds something. A grip event
+  /// allocates one joint (Box2D's pooled allocator); holding allocates nothing.
+  bool TryGrip(int robot, double turret);
+  /// Lets go of what the robot holds (no-op if nothing).
+  void Release(int robot);
+  /// Carries the held object round the robot's centre as the turret turns.
+  void SetGripTurret(int robot, double turret);
+  GripTarget Gripped(int robot) const;
 
  private:
   struct Impl;

@@ -1,0 +1,28 @@
+// robot.gripper (spec §7.5): lock_positive() / lock_negative() / unlock() set the
+// aperture (+pi/2, -pi/2, 0) applied in the next Act. Arguments are ignored, as ARGoS.
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+namespace {
+int LockPositive(lua_State* L) {
+  UpvalueRobot(L)->cmd.gripper_aperture = kPi / 2;
+  return 0;
+}
+int LockNegative(lua_State* L) {
+  UpvalueRobot(L)->cmd.gripper_aperture = -kPi / 2;
+  return 0;
+}
+int Unlock(lua_State* L) {
+  UpvalueRobot(L)->cmd.gripper_aperture = 0;
+  return 0;
+}
+}  // namespace
+
+void CreateGripperActuator(lua_State* L, int t, RobotState* robot) {
+  SetClosure(L, t, "lock_positive", LockPositive, robot);
+  SetClosure(L, t, "lock_negative", LockNegative, robot);
+  SetClosure(L, t, "unlock", Unlock, robot);
+}
+
+}  // namespace essaim

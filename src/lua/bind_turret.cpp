@@ -1,0 +1,59 @@
+// robot.turret (spec §7.5): the actuator's set_rotation(rad), set_rotation_speed(x)
+// (x·pi/30 rad/s), set_position_control_mode(), set_speed_control_mode(),
+// set_passive_mode(); the encoder's rotation (rad, relative to the body). Both devices
+// share the table. Commands apply in the next Act (devices/turret.cpp).
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+namespace {
+// One number argument, dot-call (colon syntax fails the count, as ARGoS's checks do).
+double OneNumber(lua_State* L, const char* fn) {
+  if (lua_gettop(L) != 1) luaL_error(L, "robot.turret.%s() expects 1 argument", fn);
+  return luaL_checknumber(L, 1);
+}
+int SetRotation(lua_State* L) {
+  double a = OneNumber(L, "set_rotation");
+  UpvalueRobot(L)->cmd.turret_rotation = a;
+  return 0;
+}
+int SetRotationSpeed(lua_State* L) {
+  double x = OneNumber(L, "set_rotation_speed");
+  UpvalueRobot(L)->cmd.turret_speed = x * kPi / 30;
+  return 0;
+}
+int SetPositionMode(lua_State* L) {
+  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Position;
+  return 0;
+}
+int SetSpeedMode(lua_State* L) {
+  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Speed;
+  return 0;
+}
+int SetPassiveMode(lua_State* L) {
+  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Passive;
+  return 0;
+}
+}  // namespace
+
+void CreateTurretActuator(lua_State* L, int t, RobotState* robot) {
+  SetClosure(L, t, "set_rotation", SetRotation, robot);
+  SetClosure(L, t, "set_rotation_speed", SetRotationSpeed, robot);
+  SetClosure(L, t, "set_position_control_mode", SetPositionMode, robot);
+  SetClosure(L, t, "set_speed_control_mode", SetSpeedMode, robot);
+  SetClosure(L, t, "set_passive_mode", SetPassiveMode, robot);
+}
+
+void CreateTurretSensor(lua_State* L, int t) {
+  lua_pushnumber(L, 0);
+  lua_setfield(L, t, "rotation");
+}
+
+void PushTurret(lua_State* L, int ref, const Readings& rd) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  lua_pushnumber(L, rd.turret_rotation);
+  lua_setfield(L, -2, "rotation");
+  lua_pop(L, 1);
+}
+
+}  // namespace essaim
