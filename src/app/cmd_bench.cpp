@@ -22,6 +22,7 @@ struct Scenario {
 const Scenario kScenarios[] = {
     {"diffusion-minimal", "diffusion_1000.argos", ""},
     {"diffusion-minimal-100", "diffusion_1000.argos", "arena.distribute[2].entity.quantity=100"},
+    {"rays-1000", "rays_1000.argos", ""},
 };
 
 double PeakRssMb() {

@@ -21,6 +21,7 @@ void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, Physic
   for (const DeviceConfig& d : c.actuators) {
     switch (d.type) {
       case DeviceType::WheelsActuator: ActWheels(&d, robot, physics); break;
+      case DeviceType::ScannerActuator: ActScanner(robot); break;
       case DeviceType::GripperActuator: ActGripper(robot, physics); break;
       case DeviceType::TurretActuator: ActTurret(robot, physics, model.experiment.TickLength()); break;
       default: break;
@@ -28,10 +29,11 @@ void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, Physic
   }
 }
 
-void UpdateRobotComponents(const Model&, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics,
+void UpdateRobotComponents(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics,
                            uint64_t tick) {
   if (!robot.alive) return;
   DischargeBattery(def.battery, robot, physics.RobotPose(robot.index), tick);
+  UpdateScanner(robot, model.experiment.TickLength());
 }
 
 void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot) {
@@ -41,6 +43,11 @@ void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot)
       case DeviceType::WheelsSensor: SenseWheels(d, robot, ctx.dt); break;
       case DeviceType::PositioningSensor: SensePositioning(d, robot, ctx.physics); break;
       case DeviceType::BatterySensor: SenseBattery(d, def.battery, robot, ctx.dt); break;
+      case DeviceType::ProximitySensor: SenseProximity(d, robot, ctx.physics); break;
+      case DeviceType::LightSensor: SenseLight(d, ctx.model, def, robot, ctx.physics); break;
+      case DeviceType::BaseGroundSensor: SenseBaseGround(d, robot, ctx.physics, ctx.floor); break;
+      case DeviceType::MotorGroundSensor: SenseMotorGround(d, robot, ctx.physics, ctx.floor); break;
+      case DeviceType::ScannerSensor: SenseScanner(robot, ctx.physics); break;
       case DeviceType::TurretEncoderSensor: SenseTurretEncoder(robot); break;
       default: break;
     }

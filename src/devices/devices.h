@@ -39,6 +39,29 @@ void SensePositioning(const DeviceConfig& cfg, RobotState& robot, const PhysicsW
 void InitBattery(const BatteryDef& def, RobotState& robot, const Pose2& pose);
 void DischargeBattery(const BatteryDef& def, RobotState& robot, const Pose2& pose, uint64_t tick);
 void SenseBattery(const DeviceConfig& cfg, const BatteryDef& def, RobotState& robot, double dt);
+
+// ---- ray and ground sensors (proximity.cpp, distance_scanner.cpp, light.cpp, ground.cpp)
+constexpr int kRingSensorCount = 24;   // proximity and light rings
+constexpr int kBaseGroundCount = 8;
+constexpr int kMotorGroundCount = 4;
+/// Angle of ring sensor k (0..23), robot frame: 7.5° + 15°·k, signed-normalized (rad).
+double RingSensorAngle(int k);
+/// Proximity value for a hit at `d` m from the ray start (spec §2).
+double ProximityValue(double d);
+/// Ground sensor points in the robot frame (cm, x forward, y left).
+extern const double kBaseGroundOffsets[kBaseGroundCount][2];
+extern const double kMotorGroundOffsets[kMotorGroundCount][2];
+void SenseProximity(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics);
+void ActScanner(RobotState& robot);
+/// After physics: speed mode advances the platform by speed·dt, wrapped into [0, 2π).
+void UpdateScanner(RobotState& robot, double dt);
+void SenseScanner(RobotState& robot, const PhysicsWorld& physics);
+/// Whether a shape blocks the 3D segment from → light (robot `self` ignored).
+bool LightOccluded(const Model& model, const PhysicsWorld& physics, int self, const Vec3& from, const Vec3& light);
+void SenseLight(const DeviceConfig& cfg, const Model& model, const RobotDef& def, RobotState& robot,
+                const PhysicsWorld& physics);
+void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
+void SenseMotorGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
 // ---- gripper and turret (gripper.cpp, turret.cpp; spec §7.5)
 /// Locked: grips what touches the gripper disc (if holding nothing); unlocked: releases.
 void ActGripper(RobotState& robot, PhysicsWorld& physics);

@@ -9,6 +9,10 @@ struct LuaDeviceRefs {
       motor_ground = -1, rab = -1, scanner = -1, camera = -1, turret = -1, leds = -1, gripper = -1;
   int rab_count = 0;       // messages currently in robot.range_and_bearing
   int blob_count = 0;      // blobs currently in the camera table
+  // distance scanner: the short_range / long_range arrays, the pools of their 12 inner
+  // {angle, distance} tables (reused, never reallocated), and their current lengths
+  int scanner_short = -1, scanner_long = -1, scanner_short_pool = -1, scanner_long_pool = -1;
+  int scanner_short_count = 0, scanner_long_count = 0;
   bool camera_enabled = false;
 };
 

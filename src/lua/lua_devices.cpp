@@ -34,6 +34,9 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
       case DeviceType::WheelsActuator:
         CreateWheelsActuator(L, DeviceTable(L, robot_t, "wheels", &refs->wheels), robot);
         break;
+      case DeviceType::ScannerActuator:
+        CreateScannerActuator(L, DeviceTable(L, robot_t, "distance_scanner", &refs->scanner), robot);
+        break;
       case DeviceType::GripperActuator:
         CreateGripperActuator(L, DeviceTable(L, robot_t, "gripper", &refs->gripper), robot);
         break;
@@ -49,6 +52,19 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
       case DeviceType::WheelsSensor: CreateWheelsSensor(L, DeviceTable(L, robot_t, "wheels", &refs->wheels)); break;
       case DeviceType::PositioningSensor: DeviceTable(L, robot_t, "positioning", &refs->positioning); break;
       case DeviceType::BatterySensor: DeviceTable(L, robot_t, "battery", &refs->battery); break;
+      case DeviceType::ProximitySensor:
+        CreateProximitySensor(L, DeviceTable(L, robot_t, "proximity", &refs->proximity));
+        break;
+      case DeviceType::LightSensor: CreateLightSensor(L, DeviceTable(L, robot_t, "light", &refs->light)); break;
+      case DeviceType::BaseGroundSensor:
+        CreateBaseGroundSensor(L, DeviceTable(L, robot_t, "base_ground", &refs->base_ground));
+        break;
+      case DeviceType::MotorGroundSensor:
+        CreateMotorGroundSensor(L, DeviceTable(L, robot_t, "motor_ground", &refs->motor_ground));
+        break;
+      case DeviceType::ScannerSensor:
+        CreateScannerSensor(L, DeviceTable(L, robot_t, "distance_scanner", &refs->scanner), refs);
+        break;
       case DeviceType::TurretEncoderSensor: CreateTurretSensor(L, DeviceTable(L, robot_t, "turret", &refs->turret)); break;
       default: break;
     }
@@ -63,6 +79,11 @@ void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& 
       case DeviceType::WheelsSensor: PushWheels(L, refs->wheels, rd); break;
       case DeviceType::PositioningSensor: PushPositioning(L, refs->positioning, rd); break;
       case DeviceType::BatterySensor: PushBattery(L, refs->battery, rd); break;
+      case DeviceType::ProximitySensor: PushProximity(L, refs->proximity, rd); break;
+      case DeviceType::LightSensor: PushLight(L, refs->light, rd); break;
+      case DeviceType::BaseGroundSensor: PushBaseGround(L, refs->base_ground, rd); break;
+      case DeviceType::MotorGroundSensor: PushMotorGround(L, refs->motor_ground, rd); break;
+      case DeviceType::ScannerSensor: PushScanner(L, rd, refs); break;
       case DeviceType::TurretEncoderSensor: PushTurret(L, refs->turret, rd); break;
       default: break;
     }

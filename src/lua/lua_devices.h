@@ -30,6 +30,22 @@ void CreateWheelsSensor(lua_State* L, int t);
 void PushWheels(lua_State* L, int ref, const Readings& rd);
 void PushPositioning(lua_State* L, int ref, const Readings& rd);
 void PushBattery(lua_State* L, int ref, const Readings& rd);
+// 24 {value, angle} tables (proximity, light): created once, values refreshed in place
+void CreateRingSensor(lua_State* L, int t);
+void PushRingSensor(lua_State* L, int ref, const double* values);
+void CreateProximitySensor(lua_State* L, int t);
+void PushProximity(lua_State* L, int ref, const Readings& rd);
+void CreateLightSensor(lua_State* L, int t);
+void PushLight(lua_State* L, int ref, const Readings& rd);
+// {value, offset = vector2 (cm)} tables (base_ground 8, motor_ground 4)
+void CreateBaseGroundSensor(lua_State* L, int t);
+void CreateMotorGroundSensor(lua_State* L, int t);
+void PushBaseGround(lua_State* L, int ref, const Readings& rd);
+void PushMotorGround(lua_State* L, int ref, const Readings& rd);
+// distance scanner: enable/disable/set_angle/set_rpm; short_range/long_range arrays
+void CreateScannerActuator(lua_State* L, int t, RobotState* robot);
+void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs);
+void PushScanner(lua_State* L, const Readings& rd, LuaDeviceRefs* refs);
 // gripper (lock_positive/lock_negative/unlock) and turret (set_* and rotation)
 void CreateGripperActuator(lua_State* L, int t, RobotState* robot);
 void CreateTurretActuator(lua_State* L, int t, RobotState* robot);

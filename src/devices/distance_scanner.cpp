@@ -1,0 +1,100 @@
+// Foot-bot distance scanner, rot_z_only sensor and default actuator (spec §3).
+//
+// A platform 0.123199866 m above the robot origin carries four range sensors: short range
+// at θ and θ + π, long range at θ + π/2 and θ − π/2 (θ = platform rotation, robot frame).
+// Rays start on the body surface; readings are in cm from the ray start, −1 when the hit
+// is within the minimum distance (long range: 12 cm), −2 without a hit. Position mode
+// gives one ray per sensor; speed mode sweeps the span rotated since the previous sense
+// with 6 rays per sensor. Readings are kept sorted by angle, duplicates overwritten — the
+// std::map<CRadians, Real> of ARGoS. `noise_range` is ignored, as in ARGoS.
+#include <cmath>
+
+#include "devices/devices.h"
+
+namespace essaim {
+
+namespace {
+constexpr double kShortLength = 0.26;   // m, ray length from the body surface
+constexpr double kLongLength = 1.42;
+constexpr double kShortMin = 0.0;       // m: at or below reads -1
+constexpr double kLongMin = 0.12;
+constexpr int kSweepRays = 6;           // rays per sensor per tick in speed mode
+
+/// Inserts (angle, distance) into a sorted array of `*count` readings; an equal angle
+/// overwrites (map semantics).
+void Insert(ScanReading* readings, int* count, double angle, double distance) {
+  int i = *count;
+  while (i > 0 && readings[i - 1].angle > angle) --i;
+  if (i > 0 && readings[i - 1].angle == angle) {
+    readings[i - 1].distance = distance;
+    return;
+  }
+  for (int j = *count; j > i; --j) readings[j] = readings[j - 1];
+  readings[i] = {angle, distance};
+  ++*count;
+}
+
+double Cast(const PhysicsWorld& physics, const Pose2& p, int self, double angle, double length, double min) {
+  const double a = p.yaw + angle;
+  const double c = std::cos(a), s = std::sin(a);
+  const Vec2 from(p.x + footbot::kRadius * c, p.y + footbot::kRadius * s);
+  const Vec2 to(from.x() + length * c, from.y() + length * s);
+  const RayHit hit = physics.CastRay(from, to, footbot::kScannerElevation, self);
+  if (!hit.Hit()) return -2;
+  return hit.distance > min ? hit.distance * 100 : -1;
+}
+
+/// The four sensors at platform angle `theta`.
+void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double theta) {
+  Readings& rd = robot.rd;
+  const double angles[4] = {theta, theta + kPi / 2, theta + kPi, theta - kPi / 2};
+  for (int k = 0; k < 4; ++k) {
+    const double angle = WrapSigned(angles[k]);
+    const bool shortRange = (k % 2) == 0;
+    const double d = Cast(physics, p, robot.index, angle, shortRange ? kShortLength : kLongLength,
+                          shortRange ? kShortMin : kLongMin);
+    if (shortRange) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
+    else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+  }
+}
+}  // namespace
+
+void ActScanner(RobotState& robot) {
+  ScannerState& s = robot.scanner;
+  switch (robot.cmd.scanner_mode) {
+    case ScannerMode::Position:
+      s.mode = ScannerMode::Position;
+      s.rotation = WrapUnsigned(robot.cmd.scanner_angle);
+      break;
+    case ScannerMode::Speed:
+      s.mode = ScannerMode::Speed;
+      s.speed = robot.cmd.scanner_speed;
+      break;
+    case ScannerMode::Off:
+      s.mode = ScannerMode::Off;
+      break;
+  }
+}
+
+void UpdateScanner(RobotState& robot, double dt) {
+  ScannerState& s = robot.scanner;
+  if (s.mode == ScannerMode::Speed) s.rotation = WrapUnsigned(s.rotation + s.speed * dt);
+}
+
+void SenseScanner(RobotState& robot, const PhysicsWorld& physics) {
+  ScannerState& s = robot.scanner;
+  Readings& rd = robot.rd;
+  rd.scanner_short_count = 0;
+  rd.scanner_long_count = 0;
+  const Pose2 p = physics.RobotPose(robot.index);
+  if (s.mode == ScannerMode::Position) {
+    CastAll(physics, p, robot, s.rotation);
+  } else if (s.mode == ScannerMode::Speed) {
+    // The span is always swept counter-clockwise (ARGoS quirk: negative rpm mis-handled).
+    const double span = WrapUnsigned(s.rotation - s.previous_rotation) / kSweepRays;
+    for (int k = 0; k < kSweepRays; ++k) CastAll(physics, p, robot, s.previous_rotation + k * span);
+  }
+  s.previous_rotation = s.rotation;
+}
+
+}  // namespace essaim

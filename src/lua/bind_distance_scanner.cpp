@@ -1,0 +1,123 @@
+// Lua table of the distance scanner (spec §3.2–3.4): robot.distance_scanner with the
+// actuator's enable(), disable(), set_angle(rad), set_rpm(rpm) (exact argument counts,
+// dot-call) and the sensor's short_range / long_range arrays of {angle, distance}.
+//
+// ARGoS builds both arrays afresh every step. Here the two arrays and their inner tables
+// are made once: each tick fills entries 1..n in place from a pool of 12 tables per array
+// and sets the rest to nil, so the values a controller reads are the same without a
+// table allocation per tick. (Only a reference kept across steps can tell: it sees the
+// new readings instead of the old ones; docs/compatibility.md.)
+#include <cmath>
+
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+namespace {
+constexpr int kMaxReadings = 12;  // per array: 6 rays × 2 sensors when rotating
+
+int Enable(lua_State* L) {
+  if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.enable() expects no arguments");
+  UpvalueRobot(L)->cmd.scanner_mode = ScannerMode::Position;  // at the last requested angle
+  return 0;
+}
+
+int Disable(lua_State* L) {
+  if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.disable() expects no arguments");
+  UpvalueRobot(L)->cmd.scanner_mode = ScannerMode::Off;
+  return 0;
+}
+
+int SetAngle(lua_State* L) {
+  if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_angle(angle) expects 1 argument");
+  const double a = luaL_checknumber(L, 1);
+  RobotState* r = UpvalueRobot(L);
+  r->cmd.scanner_mode = ScannerMode::Position;
+  r->cmd.scanner_angle = a;
+  return 0;
+}
+
+int SetRpm(lua_State* L) {
+  if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_rpm(rpm) expects 1 argument");
+  const double rpm = luaL_checknumber(L, 1);
+  RobotState* r = UpvalueRobot(L);
+  r->cmd.scanner_mode = ScannerMode::Speed;
+  r->cmd.scanner_speed = rpm * kPi / 30;
+  return 0;
+}
+
+/// A new empty array set as scanner[key]; returns its registry ref.
+int NewArray(lua_State* L, int scanner, const char* key) {
+  lua_createtable(L, kMaxReadings, 0);
+  lua_pushvalue(L, -1);
+  lua_setfield(L, scanner, key);
+  return luaL_ref(L, LUA_REGISTRYINDEX);
+}
+
+/// A hidden pool of kMaxReadings {angle, distance} tables; returns its registry ref.
+int NewPool(lua_State* L) {
+  lua_createtable(L, kMaxReadings, 0);
+  for (int i = 1; i <= kMaxReadings; ++i) {
+    lua_createtable(L, 0, 2);
+    lua_pushnumber(L, 0.0);
+    lua_setfield(L, -2, "angle");
+    lua_pushnumber(L, 0.0);
+    lua_setfield(L, -2, "distance");
+    lua_rawseti(L, -2, i);
+  }
+  return luaL_ref(L, LUA_REGISTRYINDEX);
+}
+
+void Fill(lua_State* L, int scanner, const char* key, int array_ref, int pool_ref, const ScanReading* readings,
+          int count, int* shown) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, array_ref);
+  const int array = lua_gettop(L);
+  lua_pushvalue(L, array);
+  lua_setfield(L, scanner, key);  // put back, should the controller have replaced it
+  lua_rawgeti(L, LUA_REGISTRYINDEX, pool_ref);
+  const int pool = lua_gettop(L);
+  for (int i = 0; i < count; ++i) {
+    lua_rawgeti(L, pool, i + 1);
+    lua_pushnumber(L, readings[i].angle);
+    lua_setfield(L, -2, "angle");
+    lua_pushnumber(L, readings[i].distance);
+    lua_setfield(L, -2, "distance");
+    lua_rawseti(L, array, i + 1);
+  }
+  for (int i = count; i < *shown; ++i) {
+    lua_pushnil(L);
+    lua_rawseti(L, array, i + 1);
+  }
+  *shown = count;
+  lua_settop(L, array - 1);
+}
+}  // namespace
+
+void CreateScannerActuator(lua_State* L, int t, RobotState* robot) {
+  SetClosure(L, t, "enable", Enable, robot);
+  SetClosure(L, t, "disable", Disable, robot);
+  SetClosure(L, t, "set_angle", SetAngle, robot);
+  SetClosure(L, t, "set_rpm", SetRpm, robot);
+}
+
+void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {
+  t = lua_absindex(L, t);
+  // The scanner starts OFF: both arrays empty until it is switched on (spec §3.2).
+  refs->scanner_short = NewArray(L, t, "short_range");
+  refs->scanner_long = NewArray(L, t, "long_range");
+  refs->scanner_short_pool = NewPool(L);
+  refs->scanner_long_pool = NewPool(L);
+  refs->scanner_short_count = refs->scanner_long_count = 0;
+}
+
+void PushScanner(lua_State* L, const Readings& rd, LuaDeviceRefs* refs) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, refs->scanner);
+  const int scanner = lua_gettop(L);
+  Fill(L, scanner, "short_range", refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,
+       rd.scanner_short_count, &refs->scanner_short_count);
+  Fill(L, scanner, "long_range", refs->scanner_long, refs->scanner_long_pool, rd.scanner_long,
+       rd.scanner_long_count, &refs->scanner_long_count);
+  lua_pop(L, 1);
+}
+
+}  // namespace essaim

@@ -1,0 +1,10 @@
+// Lua table of the light sensor (spec §7.3): robot.light[1..24] = {value, angle}, the
+// proximity ring's layout (lua/bind_proximity.cpp).
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+void CreateLightSensor(lua_State* L, int t) { CreateRingSensor(L, t); }
+void PushLight(lua_State* L, int ref, const Readings& rd) { PushRingSensor(L, ref, rd.light); }
+
+}  // namespace essaim

@@ -1,0 +1,40 @@
+// Lua tables of the proximity sensor (spec §2) and the ring layout it shares with the
+// light sensor (§7.3): robot.<key>[1..24] = {value, angle}. The 24 inner tables are made
+// once with their constant angle; each tick only `value` is rewritten in place, so
+// controllers may keep references to them (ARGoS does the same).
+#include "devices/devices.h"
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+void CreateRingSensor(lua_State* L, int t) {
+  t = lua_absindex(L, t);
+  for (int k = 0; k < kRingSensorCount; ++k) {
+    lua_createtable(L, 0, 2);
+    lua_pushnumber(L, 0.0);
+    lua_setfield(L, -2, "value");
+    lua_pushnumber(L, RingSensorAngle(k));
+    lua_setfield(L, -2, "angle");
+    lua_rawseti(L, t, k + 1);
+  }
+}
+
+void PushRingSensor(lua_State* L, int ref, const double* values) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  const int t = lua_gettop(L);
+  for (int k = 0; k < kRingSensorCount; ++k) {
+    // Raw access: controllers may hang metatables on these tables. An entry the
+    // controller replaced by a non-table is left alone.
+    if (lua_rawgeti(L, t, k + 1) == LUA_TTABLE) {
+      lua_pushnumber(L, values[k]);
+      lua_setfield(L, -2, "value");
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+}
+
+void CreateProximitySensor(lua_State* L, int t) { CreateRingSensor(L, t); }
+void PushProximity(lua_State* L, int ref, const Readings& rd) { PushRingSensor(L, ref, rd.proximity); }
+
+}  // namespace essaim
