@@ -20,21 +20,19 @@ V2* CheckV2(lua_State* L, int i) { return static_cast<V2*>(luaL_checkudata(L, i,
 V3* CheckV3(lua_State* L, int i) { return static_cast<V3*>(luaL_checkudata(L, i, kV3)); }
 Q* CheckQ(lua_State* L, int i) { return static_cast<Q*>(luaL_checkudata(L, i, kQ)); }
 
-V2* NewV2(lua_State* L) {
-  auto* v = static_cast<V2*>(lua_newuserdatauv(L, sizeof(V2), 0));
-  luaL_setmetatable(L, kV2);
-  return v;
+// Metatables are also kept under light-userdata keys: fetching them by address avoids
+// interning the type name for every value pushed (positioning pushes two per robot-step).
+const char kV2Key = 0, kV3Key = 0, kQKey = 0;
+template <class T>
+T* NewUd(lua_State* L, const char* key) {
+  auto* p = static_cast<T*>(lua_newuserdatauv(L, sizeof(T), 0));
+  lua_rawgetp(L, LUA_REGISTRYINDEX, key);
+  lua_setmetatable(L, -2);
+  return p;
 }
-V3* NewV3(lua_State* L) {
-  auto* v = static_cast<V3*>(lua_newuserdatauv(L, sizeof(V3), 0));
-  luaL_setmetatable(L, kV3);
-  return v;
-}
-Q* NewQ(lua_State* L) {
-  auto* q = static_cast<Q*>(lua_newuserdatauv(L, sizeof(Q), 0));
-  luaL_setmetatable(L, kQ);
-  return q;
-}
+V2* NewV2(lua_State* L) { return NewUd<V2>(L, &kV2Key); }
+V3* NewV3(lua_State* L) { return NewUd<V3>(L, &kV3Key); }
+Q* NewQ(lua_State* L) { return NewUd<Q>(L, &kQKey); }
 
 std::string FormatNumber(double v) {
   char buf[32];
@@ -302,11 +300,11 @@ int QToString(lua_State* L) {
   return 1;
 }
 
-void MakeMeta(lua_State* L, const char* name, const luaL_Reg* meta, const luaL_Reg* methods) {
+void MakeMeta(lua_State* L, const char* name, const char* key, const luaL_Reg* meta, const luaL_Reg* methods) {
   luaL_newmetatable(L, name);
   luaL_setfuncs(L, meta, 0);
   luaL_setfuncs(L, methods, 0);  // methods live in the metatable, found by __index
-  lua_pop(L, 1);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, key);
 }
 }  // namespace
 
@@ -327,9 +325,9 @@ void OpenMathTypes(lua_State* L) {
   static const luaL_Reg q_methods[] = {{"normalize", QNormalize}, {"inverse", QInverse},
                                        {"toangleaxis", QToAngleAxis}, {"toeulerangles", QToEuler},
                                        {nullptr, nullptr}};
-  MakeMeta(L, kV2, v2_meta, v2_methods);
-  MakeMeta(L, kV3, v3_meta, v3_methods);
-  MakeMeta(L, kQ, q_meta, q_methods);
+  MakeMeta(L, kV2, &kV2Key, v2_meta, v2_methods);
+  MakeMeta(L, kV3, &kV3Key, v3_meta, v3_methods);
+  MakeMeta(L, kQ, &kQKey, q_meta, q_methods);
   lua_register(L, "vector2", V2New);
   lua_register(L, "vector3", V3New);
   lua_register(L, "quaternion", QNew);
