@@ -17,6 +17,8 @@ BodyKind TagKind(uintptr_t tag) { return static_cast<BodyKind>(tag & 3); }
 int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
 
 b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
+
+constexpr double kMaxStaticPiece = 1.0;  // m, longest side of one static box fixture
 }  // namespace
 
 struct PhysicsWorld::Impl {
@@ -76,7 +78,23 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
     fd.restitution = 0;
     fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
     fd.userData.pointer = PackTag(BodyKind::Obstacle, static_cast<int>(i));
-    body->CreateFixture(&fd);
+    if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece) {
+      // A long wall's bounding box overlaps most of the tree and makes every ray cast visit
+      // it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tile it into
+      // pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances.
+      int nx = static_cast<int>(std::ceil(o.size_x / kMaxStaticPiece));
+      int ny = static_cast<int>(std::ceil(o.size_y / kMaxStaticPiece));
+      float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+      for (int ix = 0; ix < nx; ++ix)
+        for (int iy = 0; iy < ny; ++iy) {
+          b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
+                   static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
+          poly.SetAsBox(hx, hy, c, 0);
+          body->CreateFixture(&fd);
+        }
+    } else {
+      body->CreateFixture(&fd);
+    }
     if (o.movable) {
       if (o.kind == ShapeKind::Cylinder) {
         // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
@@ -163,6 +181,8 @@ void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
 
 void PhysicsWorld::Step(double dt, int substeps) {
   const float h = static_cast<float>(dt / substeps);
+  // 4 velocity and 2 position iterations per sub-step: with ARGoS's 10 sub-steps that is 40
+  // solver passes per tick; 8/3 cost 9% more instructions with no change in any test.
   for (int i = 0; i < substeps; ++i) impl_->world.Step(h, 4, 2);
 }
 
