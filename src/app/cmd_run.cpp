@@ -10,6 +10,7 @@
 #include "core/strings.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
+#include "output/recording.h"
 #include "output/summary.h"
 #include "sim/step.h"
 
@@ -24,6 +25,7 @@ struct RunArgs {
   std::string out;
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
+  uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
 };
 
 bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string* error) {
@@ -65,6 +67,19 @@ bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string*
       r->strict = true;
     } else if (a == "--sandbox") {
       r->sandbox = true;
+    } else if (key == "--record") {
+      // --record, --record every=N, --record=every=N
+      if (a.size() > key.size()) v = a.substr(key.size() + 1);
+      else if (i + 1 < args.size() && args[i + 1].rfind("every=", 0) == 0) v = args[++i];
+      r->record_every = 1;
+      if (!v.empty()) {
+        auto n = v.rfind("every=", 0) == 0 ? ParseInt(v.substr(6)) : std::nullopt;
+        if (!n || *n < 1 || *n > 1000000) {
+          *error = "--record: '" + v + "' must be every=N with N a positive integer";
+          return false;
+        }
+        r->record_every = static_cast<uint32_t>(*n);
+      }
     } else if (!a.empty() && a[0] == '-') {
       *error = "unknown option " + a;
       return false;
@@ -155,6 +170,11 @@ int RunCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitBadInput;
   }
+  RecordingWriter recorder;
+  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error)) {
+    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+    return kExitRunFailed;
+  }
   std::signal(SIGINT, OnSigint);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   RunInfo info;
@@ -168,6 +188,7 @@ int RunCommand(const std::vector<std::string>& args) {
       break;
     }
     status = Step(*world);
+    if (recorder.IsOpen()) recorder.Record(*world);
     progress.Update(world->tick);
   }
   progress.Finish();
@@ -186,6 +207,14 @@ int RunCommand(const std::vector<std::string>& args) {
   }
   if (info.status == "ok" && !world->controller_errors.empty()) info.status = "controller_error";
   info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // The recording ends with the run, however it ended (interrupted and failed runs too).
+  if (recorder.IsOpen()) {
+    if (!recorder.Finish(*world, &error)) {
+      std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+      return kExitRunFailed;
+    }
+    info.outputs.push_back(kRecordingFile);
+  }
   if (!WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;

@@ -13,6 +13,10 @@ int RunCommand(const std::vector<std::string>& args);
 int CheckCommand(const std::vector<std::string>& args);
 int DevicesCommand(const std::vector<std::string>& args);
 int BenchCommand(const std::vector<std::string>& args);
+int ReplayCommand(const std::vector<std::string>& args);
+int SnapshotCommand(const std::vector<std::string>& args);
+/// A run folder's recording.bin, or the path itself when it is not a folder (replay, snapshot).
+std::string RecordingPathOf(const std::string& run);
 
 /// Progress line on a terminal: ticks, ticks/s, robots, ETA (nothing when not a TTY).
 class Progress {

@@ -20,9 +20,13 @@ const char* kUsage =
     "      --quiet            no progress line, no summary\n"
     "      --strict           the first controller error ends the run (exit 1)\n"
     "      --sandbox          controllers without io/os, with memory and instruction caps\n"
+    "      --record[=every=N] also write recording.bin (every tick, or every N ticks)\n"
     "  essaim check FILE.argos [--set ...]   validate, list every error\n"
     "  essaim devices                        list supported sensors and actuators\n"
     "  essaim bench [--quick] [--ticks N]    print robot-steps per second on fixed scenarios\n"
+    "  essaim replay RUN_DIR [-o FILE]       write RUN_DIR/replay.html, a self-contained replay page\n"
+    "  essaim snapshot RUN_DIR --tick T -o FILE.png [--trail N] [--size PX]\n"
+    "                                        draw one recorded tick as a PNG\n"
     "  essaim --version | --help\n"
     "\n"
     "exit codes: 0 ok, 1 run failed, 2 bad input (nothing run)\n";
@@ -44,6 +48,8 @@ int main(int argc, char** argv) {
   if (cmd == "check") return essaim::CheckCommand(args);
   if (cmd == "devices") return essaim::DevicesCommand(args);
   if (cmd == "bench") return essaim::BenchCommand(args);
+  if (cmd == "replay") return essaim::ReplayCommand(args);
+  if (cmd == "snapshot") return essaim::SnapshotCommand(args);
   std::fprintf(stderr, "essaim: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);
   return essaim::kExitBadInput;
 }

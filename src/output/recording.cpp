@@ -1,0 +1,515 @@
+#include "output/recording.h"
+
+#include <png.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+
+#include "core/strings.h"
+#include "sim/world.h"
+
+namespace essaim {
+
+namespace {
+
+constexpr char kMagic[8] = {'E', 'S', 'S', 'A', 'I', 'M', 'R', 'C'};
+
+// ---- little-endian encoding -------------------------------------------------------
+
+void Put16(uint8_t* p, uint16_t v) {
+  p[0] = static_cast<uint8_t>(v);
+  p[1] = static_cast<uint8_t>(v >> 8);
+}
+void Put32(uint8_t* p, uint32_t v) {
+  for (int i = 0; i < 4; ++i) p[i] = static_cast<uint8_t>(v >> (8 * i));
+}
+uint16_t Get16(const uint8_t* p) { return static_cast<uint16_t>(p[0] | (p[1] << 8)); }
+uint32_t Get32(const uint8_t* p) {
+  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) | (static_cast<uint32_t>(p[2]) << 16) |
+         (static_cast<uint32_t>(p[3]) << 24);
+}
+
+/// Appends values to a growing byte string (the header only; frames use a fixed buffer).
+struct ByteSink {
+  std::string out;
+  void U8(uint8_t v) { out.push_back(static_cast<char>(v)); }
+  void U16(uint16_t v) {
+    uint8_t b[2];
+    Put16(b, v);
+    out.append(reinterpret_cast<char*>(b), 2);
+  }
+  void U32(uint32_t v) {
+    uint8_t b[4];
+    Put32(b, v);
+    out.append(reinterpret_cast<char*>(b), 4);
+  }
+  void U64(uint64_t v) {
+    U32(static_cast<uint32_t>(v));
+    U32(static_cast<uint32_t>(v >> 32));
+  }
+  void F32(double v) {
+    float f = static_cast<float>(v);
+    uint32_t u;
+    std::memcpy(&u, &f, 4);
+    U32(u);
+  }
+  void F64(double v) {
+    uint64_t u;
+    std::memcpy(&u, &v, 8);
+    U64(u);
+  }
+  void Str(const std::string& s) {
+    size_t n = std::min<size_t>(s.size(), 65535);
+    U16(static_cast<uint16_t>(n));
+    out.append(s, 0, n);
+  }
+};
+
+/// Reads values with bounds checks; `ok` turns false at the first overrun.
+struct ByteSource {
+  const uint8_t* p;
+  size_t size, pos = 0;
+  bool ok = true;
+  const uint8_t* Take(size_t n) {
+    if (!ok || pos + n > size) {
+      ok = false;
+      return nullptr;
+    }
+    const uint8_t* r = p + pos;
+    pos += n;
+    return r;
+  }
+  uint8_t U8() {
+    const uint8_t* b = Take(1);
+    return b ? b[0] : 0;
+  }
+  uint16_t U16() {
+    const uint8_t* b = Take(2);
+    return b ? Get16(b) : 0;
+  }
+  uint32_t U32() {
+    const uint8_t* b = Take(4);
+    return b ? Get32(b) : 0;
+  }
+  uint64_t U64() {
+    uint64_t lo = U32();
+    return lo | (static_cast<uint64_t>(U32()) << 32);
+  }
+  double F32() {
+    uint32_t u = U32();
+    float f;
+    std::memcpy(&f, &u, 4);
+    return f;
+  }
+  double F64() {
+    uint64_t u = U64();
+    double d;
+    std::memcpy(&d, &u, 8);
+    return d;
+  }
+  std::string Str() {
+    uint16_t n = U16();
+    const uint8_t* b = Take(n);
+    return b ? std::string(reinterpret_cast<const char*>(b), n) : std::string();
+  }
+};
+
+// ---- quantisation -----------------------------------------------------------------
+
+int16_t QuantisePosition(double v, double center, double unit) {
+  double q = std::round((v - center) / unit);
+  if (!(q == q)) q = 0;  // NaN
+  return static_cast<int16_t>(std::clamp(q, -32767.0, 32767.0));
+}
+uint16_t QuantiseYaw(double yaw) {
+  if (!std::isfinite(yaw)) return 0;
+  double q = std::round(WrapUnsigned(yaw) * (65536.0 / kTwoPi));
+  return static_cast<uint16_t>(static_cast<uint32_t>(q) & 0xFFFF);
+}
+double YawOf(uint16_t q) { return q * (kTwoPi / 65536.0); }
+
+Color RepresentativeColor(const Color* leds, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!leds[i].IsBlack()) return leds[i];
+  return Color{0, 0, 0, 255};
+}
+
+// ---- floor ------------------------------------------------------------------------
+
+/// The raster downsampled (nearest pixel) to at most kRecordingFloorMaxSide per side, as a
+/// PNG whose top row is the arena's max y.
+bool EncodeFloor(const FloorRaster& f, std::string* png, int* out_w, int* out_h) {
+  png->clear();
+  *out_w = *out_h = 0;
+  if (f.Empty() || f.width <= 0 || f.height <= 0) return true;
+  double scale = std::min(1.0, static_cast<double>(kRecordingFloorMaxSide) / std::max(f.width, f.height));
+  int w = std::max(1, static_cast<int>(std::lround(f.width * scale)));
+  int h = std::max(1, static_cast<int>(std::lround(f.height * scale)));
+  std::vector<uint8_t> rgb(static_cast<size_t>(w) * h * 3);
+  for (int row = 0; row < h; ++row) {
+    int sy = std::min(f.height - 1, static_cast<int>((h - 1 - row + 0.5) * f.height / h));  // raster: bottom first
+    for (int col = 0; col < w; ++col) {
+      int sx = std::min(f.width - 1, static_cast<int>((col + 0.5) * f.width / w));
+      const Color& c = f.pixels[static_cast<size_t>(sy) * f.width + sx];
+      uint8_t* d = &rgb[(static_cast<size_t>(row) * w + col) * 3];
+      d[0] = c.r;
+      d[1] = c.g;
+      d[2] = c.b;
+    }
+  }
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(w);
+  image.height = static_cast<png_uint_32>(h);
+  image.format = PNG_FORMAT_RGB;
+  png_alloc_size_t bytes = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &bytes, 0, rgb.data(), 0, nullptr)) return false;
+  png->resize(bytes);
+  if (!png_image_write_to_memory(&image, &(*png)[0], &bytes, 0, rgb.data(), 0, nullptr)) return false;
+  png->resize(bytes);
+  *out_w = w;
+  *out_h = h;
+  return true;
+}
+
+std::string SerializeScene(const RecordingScene& s, uint32_t frame_bytes) {
+  ByteSink b;
+  b.out.append(kMagic, 8);
+  b.U32(kRecordingVersion);
+  b.U32(0);  // header bytes, patched below
+  b.U32(frame_bytes);
+  b.U32(s.every);
+  b.U32(s.ticks_per_second);
+  b.U32(s.length_ticks);
+  b.U32(static_cast<uint32_t>(s.robot_ids.size()));
+  b.U32(static_cast<uint32_t>(s.obstacles.size()));
+  b.U32(static_cast<uint32_t>(s.movable.size()));
+  b.U32(static_cast<uint32_t>(s.lights.size()));
+  b.U64(s.seed);
+  b.F64(s.arena_min.x());
+  b.F64(s.arena_min.y());
+  b.F64(s.arena_size.x());
+  b.F64(s.arena_size.y());
+  b.F64(s.position_unit);
+  b.F64(s.robot_radius);
+  // 104 bytes so far: the fixed part of the header
+  b.Str(s.experiment);
+  for (const std::string& id : s.robot_ids) b.Str(id);
+  for (const RecordedObstacle& o : s.obstacles) {
+    b.U8(o.cylinder ? 1 : 0);
+    b.U8(o.movable ? 1 : 0);
+    b.F32(o.pose.x);
+    b.F32(o.pose.y);
+    b.F32(o.pose.yaw);
+    b.F32(o.size_x);
+    b.F32(o.size_y);
+    b.F32(o.radius);
+    b.F32(o.height);
+    b.Str(o.id);
+  }
+  for (int k : s.movable) b.U32(static_cast<uint32_t>(k));
+  for (const RecordedLight& l : s.lights) {
+    b.F32(l.position.x());
+    b.F32(l.position.y());
+    b.F32(l.position.z());
+    b.U8(l.color.r);
+    b.U8(l.color.g);
+    b.U8(l.color.b);
+    b.U8(l.color.a);
+    b.F32(l.intensity);
+    b.Str(l.id);
+  }
+  b.U16(static_cast<uint16_t>(s.floor_width));
+  b.U16(static_cast<uint16_t>(s.floor_height));
+  b.U32(static_cast<uint32_t>(s.floor_png.size()));
+  b.out += s.floor_png;
+  while (b.out.size() % 4) b.U8(0);
+  Put32(reinterpret_cast<uint8_t*>(&b.out[12]), static_cast<uint32_t>(b.out.size()));
+  return b.out;
+}
+
+}  // namespace
+
+uint16_t PackRgb565(Color c) {
+  return static_cast<uint16_t>(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
+}
+
+Color UnpackRgb565(uint16_t v) {
+  unsigned r = (v >> 11) & 31, g = (v >> 5) & 63, b = v & 31;
+  Color c;
+  c.r = static_cast<unsigned char>((r << 3) | (r >> 2));
+  c.g = static_cast<unsigned char>((g << 2) | (g >> 4));
+  c.b = static_cast<unsigned char>((b << 3) | (b >> 2));
+  return c;
+}
+
+RecordingScene SceneOf(const World& w, uint32_t every) {
+  const Model& m = w.model;
+  RecordingScene s;
+  s.experiment = m.file;
+  s.seed = m.experiment.seed;
+  s.ticks_per_second = static_cast<uint32_t>(m.experiment.ticks_per_second);
+  s.length_ticks = static_cast<uint32_t>(std::min<uint64_t>(m.experiment.length_ticks, UINT32_MAX));
+  s.every = std::max<uint32_t>(1, every);
+  s.arena_min = m.arena.Min();
+  s.arena_size = Vec2(m.arena.size.x(), m.arena.size.y());
+  // int16 around the arena centre, covering 1.5 times the arena: 1 mm up to 43 m arenas.
+  s.position_unit = std::max(0.001, std::max(s.arena_size.x(), s.arena_size.y()) * 0.75 / 32767.0);
+  s.robot_radius = footbot::kRadius;
+  for (const RobotDef& r : m.robots) s.robot_ids.push_back(r.id);
+  for (size_t i = 0; i < m.obstacles.size(); ++i) {
+    const ObstacleDef& o = m.obstacles[i];
+    RecordedObstacle ro;
+    ro.id = o.id;
+    ro.cylinder = o.kind == ShapeKind::Cylinder;
+    ro.movable = o.movable;
+    ro.pose = o.pose;
+    ro.size_x = o.size_x;
+    ro.size_y = o.size_y;
+    ro.radius = o.radius;
+    ro.height = o.height;
+    s.obstacles.push_back(ro);
+    if (o.movable) s.movable.push_back(static_cast<int>(i));
+  }
+  for (const LightDef& l : m.lights) s.lights.push_back({l.id, l.position, l.color, l.intensity});
+  EncodeFloor(w.floor, &s.floor_png, &s.floor_width, &s.floor_height);
+  return s;
+}
+
+// ---- writer -----------------------------------------------------------------------
+
+RecordingWriter::~RecordingWriter() {
+  if (file_) {
+    Close();
+    std::remove(tmp_.c_str());
+  }
+}
+
+void RecordingWriter::Close() {
+  if (file_) std::fclose(file_);
+  file_ = nullptr;
+}
+
+bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t every, std::string* error) {
+  path_ = path;
+  tmp_ = path + ".tmp." + std::to_string(::getpid());
+  scene_ = SceneOf(world, every);
+  uint32_t frame_bytes = kFrameTickBytes + kRecordedRobotBytes * static_cast<uint32_t>(scene_.robot_ids.size()) +
+                         kRecordedMovableBytes * static_cast<uint32_t>(scene_.movable.size());
+  frame_.assign(frame_bytes, 0);
+  file_ = std::fopen(tmp_.c_str(), "wb");
+  if (!file_) {
+    *error = "cannot write " + tmp_ + ": " + std::strerror(errno);
+    return false;
+  }
+  // A buffer of many frames: the step loop only copies bytes into it.
+  io_buffer_.resize(std::max<size_t>(1 << 20, 4 * static_cast<size_t>(frame_bytes)));
+  std::setvbuf(file_, io_buffer_.data(), _IOFBF, io_buffer_.size());
+  std::string header = SerializeScene(scene_, frame_bytes);
+  if (std::fwrite(header.data(), 1, header.size(), file_) != header.size()) write_failed_ = true;
+  bytes_ = header.size();
+  WriteFrame(world);
+  return true;
+}
+
+void RecordingWriter::Record(const World& world) {
+  if (file_ && world.tick % scene_.every == 0 && world.tick != last_tick_) WriteFrame(world);
+}
+
+void RecordingWriter::WriteFrame(const World& w) {
+  uint8_t* p = frame_.data();
+  Put32(p, static_cast<uint32_t>(std::min<uint64_t>(w.tick, UINT32_MAX)));
+  p += kFrameTickBytes;
+  const Vec2 center = scene_.arena_min + scene_.arena_size / 2;
+  const double unit = scene_.position_unit;
+  const size_t n = scene_.robot_ids.size();
+  for (size_t i = 0; i < n; ++i, p += kRecordedRobotBytes) {
+    const RobotState& r = w.robots[i];
+    Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
+    Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
+    Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
+    Put16(p + 4, QuantiseYaw(pose.yaw));
+    Put16(p + 6, PackRgb565(RepresentativeColor(r.leds, footbot::kLedCount)));
+    double full = w.model.robots[i].battery.full_charge;
+    double frac = full > 0 ? r.battery.charge / full : 0;
+    if (!std::isfinite(frac)) frac = 0;
+    p[8] = static_cast<uint8_t>(std::lround(std::clamp(frac, 0.0, 1.0) * 255));
+    p[9] = static_cast<uint8_t>((r.alive ? kRecAlive : 0) | (r.controller_ok ? kRecControllerOk : 0));
+  }
+  for (int k : scene_.movable) {
+    Pose2 pose = w.physics.ObstaclePose(k);
+    Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
+    Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
+    Put16(p + 4, QuantiseYaw(pose.yaw));
+    p += kRecordedMovableBytes;
+  }
+  if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) write_failed_ = true;
+  bytes_ += frame_.size();
+  ++frames_;
+  last_tick_ = w.tick;
+}
+
+bool RecordingWriter::Finish(const World& world, std::string* error) {
+  if (!file_) {
+    *error = "recording " + path_ + " is not open";
+    return false;
+  }
+  if (world.tick != last_tick_) WriteFrame(world);
+  bool ok = !write_failed_;
+  ok &= std::fflush(file_) == 0;
+  ok &= ::fsync(fileno(file_)) == 0;
+  ok &= std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    *error = "cannot write " + path_ + ": " + std::strerror(errno);
+    std::remove(tmp_.c_str());
+    return false;
+  }
+  return true;
+}
+
+// ---- reader -----------------------------------------------------------------------
+
+bool Recording::Read(const std::string& path, Recording* out, std::string* error) {
+  std::string bytes;
+  if (!ReadFile(path, &bytes)) {
+    *error = "cannot read " + path;
+    return false;
+  }
+  if (!Parse(std::move(bytes), out, error)) {
+    *error = path + ": " + *error;
+    return false;
+  }
+  return true;
+}
+
+bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
+  Recording r;
+  r.bytes_ = std::move(bytes);
+  ByteSource in{reinterpret_cast<const uint8_t*>(r.bytes_.data()), r.bytes_.size()};
+  const uint8_t* magic = in.Take(8);
+  if (!magic || std::memcmp(magic, kMagic, 8) != 0) {
+    *error = "not an essaim recording";
+    return false;
+  }
+  uint32_t version = in.U32();
+  if (version != kRecordingVersion) {
+    *error = "recording version " + std::to_string(version) + " (this essaim reads version " +
+             std::to_string(kRecordingVersion) + ")";
+    return false;
+  }
+  RecordingScene& s = r.scene_;
+  r.header_bytes_ = in.U32();
+  r.frame_bytes_ = in.U32();
+  s.every = in.U32();
+  s.ticks_per_second = in.U32();
+  s.length_ticks = in.U32();
+  uint32_t robots = in.U32(), obstacles = in.U32(), movable = in.U32(), lights = in.U32();
+  s.seed = in.U64();
+  double mx = in.F64(), my = in.F64(), sx = in.F64(), sy = in.F64();
+  s.arena_min = Vec2(mx, my);
+  s.arena_size = Vec2(sx, sy);
+  s.position_unit = in.F64();
+  s.robot_radius = in.F64();
+  if (!in.ok || r.header_bytes_ > r.bytes_.size() ||
+      r.frame_bytes_ != kFrameTickBytes + kRecordedRobotBytes * robots + kRecordedMovableBytes * movable ||
+      movable > obstacles || !(s.position_unit > 0)) {
+    *error = "corrupt recording header";
+    return false;
+  }
+  s.experiment = in.Str();
+  for (uint32_t i = 0; i < robots && in.ok; ++i) s.robot_ids.push_back(in.Str());
+  for (uint32_t i = 0; i < obstacles && in.ok; ++i) {
+    RecordedObstacle o;
+    o.cylinder = in.U8() != 0;
+    o.movable = in.U8() != 0;
+    o.pose.x = in.F32();
+    o.pose.y = in.F32();
+    o.pose.yaw = in.F32();
+    o.size_x = in.F32();
+    o.size_y = in.F32();
+    o.radius = in.F32();
+    o.height = in.F32();
+    o.id = in.Str();
+    s.obstacles.push_back(o);
+  }
+  for (uint32_t i = 0; i < movable && in.ok; ++i) {
+    uint32_t k = in.U32();
+    if (k >= obstacles) in.ok = false;
+    s.movable.push_back(static_cast<int>(k));
+  }
+  for (uint32_t i = 0; i < lights && in.ok; ++i) {
+    RecordedLight l;
+    double x = in.F32(), y = in.F32(), z = in.F32();
+    l.position = Vec3(x, y, z);
+    l.color.r = in.U8();
+    l.color.g = in.U8();
+    l.color.b = in.U8();
+    l.color.a = in.U8();
+    l.intensity = in.F32();
+    l.id = in.Str();
+    s.lights.push_back(l);
+  }
+  s.floor_width = in.U16();
+  s.floor_height = in.U16();
+  uint32_t png_bytes = in.U32();
+  const uint8_t* png = in.Take(png_bytes);
+  if (!in.ok || in.pos > r.header_bytes_) {
+    *error = "corrupt recording scene";
+    return false;
+  }
+  s.floor_png.assign(reinterpret_cast<const char*>(png), png_bytes);
+  r.frame_count_ = (r.bytes_.size() - r.header_bytes_) / r.frame_bytes_;
+  if (r.frame_count_ == 0) {
+    *error = "recording has no frame";
+    return false;
+  }
+  *out = std::move(r);
+  return true;
+}
+
+uint64_t Recording::Tick(size_t frame) const {
+  return Get32(reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_);
+}
+
+RecordedRobot Recording::Robot(size_t frame, size_t robot) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + robot * kRecordedRobotBytes;
+  const Vec2 center = scene_.arena_min + scene_.arena_size / 2;
+  RecordedRobot r;
+  r.x = center.x() + static_cast<int16_t>(Get16(p)) * scene_.position_unit;
+  r.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
+  r.yaw = YawOf(Get16(p + 4));
+  r.color = UnpackRgb565(Get16(p + 6));
+  r.battery = p[8] / 255.0;
+  r.alive = (p[9] & kRecAlive) != 0;
+  r.controller_ok = (p[9] & kRecControllerOk) != 0;
+  return r;
+}
+
+Pose2 Recording::Movable(size_t frame, size_t k) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + RobotCount() * kRecordedRobotBytes + k * kRecordedMovableBytes;
+  const Vec2 center = scene_.arena_min + scene_.arena_size / 2;
+  Pose2 pose;
+  pose.x = center.x() + static_cast<int16_t>(Get16(p)) * scene_.position_unit;
+  pose.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
+  pose.yaw = YawOf(Get16(p + 4));
+  return pose;
+}
+
+size_t Recording::FrameAtOrBefore(uint64_t tick) const {
+  size_t lo = 0, hi = frame_count_;  // first frame with Tick > tick, by bisection
+  while (lo < hi) {
+    size_t mid = (lo + hi) / 2;
+    if (Tick(mid) <= tick) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo == 0 ? 0 : lo - 1;
+}
+
+}  // namespace essaim

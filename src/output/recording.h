@@ -1,0 +1,146 @@
+// Recorded runs (docs/recording.md): the static scene once, then one fixed-size frame of
+// quantised robot and movable-obstacle state every N ticks. The writer streams frames to
+// a temporary file during the run and renames it when the run ends; the reader gives
+// random access to any frame (frames are fixed-size, so frame k sits at a computed offset).
+#pragma once
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace essaim {
+
+class World;
+
+/// File name of a run's recording inside its output folder.
+constexpr const char* kRecordingFile = "recording.bin";
+constexpr uint32_t kRecordingVersion = 1;
+
+/// Bytes of one recorded robot and one movable obstacle in a frame.
+constexpr uint32_t kRecordedRobotBytes = 10;    // i16 x, i16 y, u16 yaw, u16 rgb565, u8 battery, u8 flags
+constexpr uint32_t kRecordedMovableBytes = 6;   // i16 x, i16 y, u16 yaw
+constexpr uint32_t kFrameTickBytes = 4;         // u32 tick
+
+/// Flags of a recorded robot.
+constexpr uint8_t kRecAlive = 1;         // not killed by the loop functions / battery
+constexpr uint8_t kRecControllerOk = 2;  // no controller error so far
+
+/// The floor raster is downsampled to at most this many pixels per side.
+constexpr int kRecordingFloorMaxSide = 512;
+
+struct RecordedObstacle {
+  std::string id;
+  bool cylinder = false;
+  bool movable = false;
+  Pose2 pose;                     // initial pose (m, rad); movable ones move per frame
+  double size_x = 0, size_y = 0;  // box (m)
+  double radius = 0;              // cylinder (m)
+  double height = 0;              // m
+};
+
+struct RecordedLight {
+  std::string id;
+  Vec3 position = Vec3::Zero();   // m
+  Color color;
+  double intensity = 1;
+};
+
+/// What never changes during a run.
+struct RecordingScene {
+  std::string experiment;         // the .argos path as given to essaim run
+  uint64_t seed = 0;
+  uint32_t ticks_per_second = 10;
+  uint32_t length_ticks = 0;      // planned length (0: unlimited)
+  uint32_t every = 1;             // a frame every `every` ticks (plus the last tick)
+  Vec2 arena_min = Vec2::Zero();  // m
+  Vec2 arena_size = Vec2::Ones(); // m
+  double position_unit = 0.001;   // m per quantisation step of a position
+  double robot_radius = 0;        // m
+  std::vector<std::string> robot_ids;
+  std::vector<RecordedObstacle> obstacles;
+  std::vector<int> movable;       // indices into obstacles that move, in frame order
+  std::vector<RecordedLight> lights;
+  /// Floor as PNG bytes (8-bit RGB, top row = arena max y, as any image); empty: none.
+  std::string floor_png;
+  int floor_width = 0, floor_height = 0;
+};
+
+/// One robot in one frame, dequantised.
+struct RecordedRobot {
+  double x = 0, y = 0, yaw = 0;   // m, m, rad in [0, 2pi)
+  Color color;                    // first non-black LED (RGB565 precision); black: none lit
+  double battery = 1;             // charge / full charge, 1/255 precision
+  bool alive = true;
+  bool controller_ok = true;
+};
+
+/// Streams a run into `path` (via path.tmp.PID). Record() after every Step; Finish() at
+/// the end. The frame buffer and the stdio buffer are allocated by Open(): Record() does
+/// not allocate.
+class RecordingWriter {
+ public:
+  RecordingWriter() = default;
+  ~RecordingWriter();  // an unfinished recording's temporary file is removed
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
+
+  /// Writes the scene and the frame of the world's current tick (usually 0).
+  bool Open(const std::string& path, const World& world, uint32_t every, std::string* error);
+  /// Writes a frame when the world's tick is a multiple of `every`.
+  void Record(const World& world);
+  /// Writes the last tick's frame if it was not recorded, flushes and renames the file.
+  bool Finish(const World& world, std::string* error);
+  bool IsOpen() const { return file_ != nullptr; }
+  uint64_t FramesWritten() const { return frames_; }
+  uint64_t BytesWritten() const { return bytes_; }
+
+ private:
+  void WriteFrame(const World& world);
+  void Close();
+  std::string path_, tmp_;
+  FILE* file_ = nullptr;
+  std::vector<char> io_buffer_;
+  std::vector<uint8_t> frame_;
+  RecordingScene scene_;
+  uint64_t last_tick_ = UINT64_MAX;
+  uint64_t frames_ = 0, bytes_ = 0;
+  bool write_failed_ = false;
+};
+
+/// A recording read back whole into memory; frames are decoded on demand.
+class Recording {
+ public:
+  /// Reads and validates a file. A trailing partial frame (a file cut short) is ignored.
+  static bool Read(const std::string& path, Recording* out, std::string* error);
+  static bool Parse(std::string bytes, Recording* out, std::string* error);
+
+  const RecordingScene& scene() const { return scene_; }
+  const std::string& bytes() const { return bytes_; }
+  size_t RobotCount() const { return scene_.robot_ids.size(); }
+  size_t FrameCount() const { return frame_count_; }
+  uint32_t FrameBytes() const { return frame_bytes_; }
+  uint64_t Tick(size_t frame) const;
+  RecordedRobot Robot(size_t frame, size_t robot) const;
+  Pose2 Movable(size_t frame, size_t k) const;  // pose of obstacles[scene.movable[k]]
+  /// The last frame whose tick is <= `tick` (0 if none is).
+  size_t FrameAtOrBefore(uint64_t tick) const;
+
+ private:
+  RecordingScene scene_;
+  std::string bytes_;
+  size_t header_bytes_ = 0;
+  uint32_t frame_bytes_ = 0;
+  size_t frame_count_ = 0;
+};
+
+/// The scene of a World as the recorder stores it (floor downsampled, positions' unit
+/// chosen from the arena size).
+RecordingScene SceneOf(const World& world, uint32_t every);
+
+/// RGB565 with bit replication on the way back (0 → 0, full → 255).
+uint16_t PackRgb565(Color c);
+Color UnpackRgb565(uint16_t v);
+
+}  // namespace essaim
