@@ -44,7 +44,15 @@ void SenseProximity(const DeviceConfig& cfg, RobotState& robot, const PhysicsWor
   const double cy = std::cos(p.yaw), sy = std::sin(p.yaw);
   const double noise = cfg.params.noise_level;
   double* out = robot.rd.proximity;
+  // Most robots have nothing within reach: one box query instead of 24 rays.
+  const bool near = physics.AnyShapeNear({p.x, p.y}, footbot::kRadius + kRange, footbot::kProximityElevation,
+                                         robot.index);
   for (int k = 0; k < kRingSensorCount; ++k) {
+    if (!near) {
+      double v = noise > 0 ? robot.sensor_rng.Uniform(-noise, noise) : 0.0;
+      out[k] = std::clamp(v, 0.0, 1.0);
+      continue;
+    }
     // Direction = yaw + θ_k, by the angle-sum identity on the precomputed ring.
     const double c = cy * kRing.cos[k] - sy * kRing.sin[k];
     const double s = sy * kRing.cos[k] + cy * kRing.sin[k];

@@ -318,6 +318,47 @@ class RobotQuery : public b2QueryCallback {
 };
 }  // namespace
 
+namespace {
+class AnyNear : public b2QueryCallback {
+ public:
+  AnyNear(const b2AABB& box, const std::vector<double>& tops, const std::vector<double>& bottoms, double z, int exclude)
+      : box_(box), tops_(tops), bottoms_(bottoms), z_(z), exclude_(exclude) {}
+  bool ReportFixture(b2Fixture* f) override {
+    uintptr_t tag = f->GetUserData().pointer;
+    BodyKind kind = TagKind(tag);
+    int index = TagIndex(tag);
+    if (kind == BodyKind::Robot) {
+      if (index == exclude_ || z_ > footbot::kHeight || z_ < 0) return true;
+    } else if (kind == BodyKind::Obstacle) {
+      if (z_ > tops_[index] || z_ < bottoms_[index]) return true;
+    } else {
+      return true;
+    }
+    // The tree reports fattened boxes (+0.1 m); test the fixture's own box.
+    if (!b2TestOverlap(f->GetAABB(0), box_)) return true;
+    found = true;
+    return false;  // one is enough
+  }
+  bool found = false;
+
+ private:
+  b2AABB box_;
+  const std::vector<double>& tops_;
+  const std::vector<double>& bottoms_;
+  double z_;
+  int exclude_;
+};
+}  // namespace
+
+bool PhysicsWorld::AnyShapeNear(const Vec2& center, double radius, double z, int exclude_robot) const {
+  b2AABB box;
+  box.lowerBound.Set(static_cast<float>(center.x() - radius), static_cast<float>(center.y() - radius));
+  box.upperBound.Set(static_cast<float>(center.x() + radius), static_cast<float>(center.y() + radius));
+  AnyNear q(box, impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot);
+  impl_->world.QueryAABB(&q, box);
+  return q.found;
+}
+
 RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const {
   ClosestRay cb(impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot);
   b2Vec2 p1(static_cast<float>(from.x()), static_cast<float>(from.y()));

@@ -63,6 +63,10 @@ class PhysicsWorld {
   /// Closest hit along from→to among shapes whose height reaches `z` (m above the floor),
   /// ignoring robot `exclude_robot` (-1: none). Thread-safe (read-only).
   RayHit CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const;
+  /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
+  /// bounding box within the square of half-side `radius` around `center`. A cheap,
+  /// conservative pre-test: false means no ray of that length from there can hit anything.
+  bool AnyShapeNear(const Vec2& center, double radius, double z, int exclude_robot) const;
   /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
   void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
 
