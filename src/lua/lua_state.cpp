@@ -125,6 +125,9 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     return false;
   }
   lua_State* L = L_;
+  // Generational collection: the per-step values (positions, messages) die young, and the
+  // incremental default lets them pile up to twice the live size before a cycle.
+  lua_gc(L, LUA_GCGEN, 0, 0);
   OpenLibraries(L, options.sandbox);
   // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
   {
