@@ -22,6 +22,8 @@ struct Scenario {
 const Scenario kScenarios[] = {
     {"diffusion-minimal", "diffusion_1000.argos", ""},
     {"diffusion-minimal-100", "diffusion_1000.argos", "arena.distribute[2].entity.quantity=100"},
+    {"rab-1000", "rab_1000.argos", ""},
+    {"camera-1000", "camera_1000.argos", ""},
     {"rays-1000", "rays_1000.argos", ""},
 };
 

@@ -1,13 +1,17 @@
 #include "devices/devices.h"
 
+#include <algorithm>
+
 namespace essaim {
 
 void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics) {
   const ControllerDef& c = model.controllers[def.controller];
   robot.cmd.rab_data.assign(def.rab_data_size, 0);
   robot.rab_data.assign(def.rab_data_size, 0);
-  robot.rd.rab.reserve(model.robots.size());
-  robot.rd.blobs.reserve(64);
+  // Bounded reservations (a full n-1 per robot would be O(n^2) memory): the vectors grow
+  // to the densest neighbourhood seen, then stay.
+  if (c.Has(DeviceType::RabSensor)) robot.rd.rab.reserve(std::min<size_t>(model.robots.size(), 128));
+  if (c.Has(DeviceType::CameraSensor)) robot.rd.blobs.reserve(64);
   for (const DeviceConfig& d : c.actuators)
     if (d.type == DeviceType::WheelsActuator) InitWheelNoise(d, robot);
   InitBattery(def.battery, robot, physics.RobotPose(robot.index));
@@ -24,6 +28,8 @@ void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, Physic
       case DeviceType::ScannerActuator: ActScanner(robot); break;
       case DeviceType::GripperActuator: ActGripper(robot, physics); break;
       case DeviceType::TurretActuator: ActTurret(robot, physics, model.experiment.TickLength()); break;
+      case DeviceType::LedsActuator: ActLeds(robot); break;
+      case DeviceType::RabActuator: ActRab(robot); break;
       default: break;
     }
   }
@@ -49,6 +55,8 @@ void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot)
       case DeviceType::MotorGroundSensor: SenseMotorGround(d, robot, ctx.physics, ctx.floor); break;
       case DeviceType::ScannerSensor: SenseScanner(robot, ctx.physics); break;
       case DeviceType::TurretEncoderSensor: SenseTurretEncoder(robot); break;
+      case DeviceType::RabSensor: SenseRab(ctx, d, robot); break;
+      case DeviceType::CameraSensor: SenseCamera(ctx, d, def, robot); break;
       default: break;
     }
   }

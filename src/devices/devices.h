@@ -68,5 +68,10 @@ void ActGripper(RobotState& robot, PhysicsWorld& physics);
 /// Advances the turret by one tick of `dt` s in its mode and turns a held object with it.
 void ActTurret(RobotState& robot, PhysicsWorld& physics, double dt);
 void SenseTurretEncoder(RobotState& robot);
+// ---- LEDs, range and bearing, camera (leds.cpp, range_and_bearing.cpp, camera.cpp; spec §5, §7.1, §7.2)
+void ActLeds(RobotState& robot);
+void ActRab(RobotState& robot);
+void SenseRab(const SenseContext& ctx, const DeviceConfig& cfg, RobotState& robot);
+void SenseCamera(const SenseContext& ctx, const DeviceConfig& cfg, const RobotDef& def, RobotState& robot);
 
 }  // namespace essaim

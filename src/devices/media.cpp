@@ -1,10 +1,449 @@
+// Media stage (spec §12 step 4): after physics, single-threaded, before any robot senses.
+// Range and bearing: who hears whom. Candidates come from a uniform grid of all robot
+// bodies with cells of the largest rab_range (a device looks at the 3x3 cells around it:
+// never all pairs). Occlusion uses exact circle and box tests against the bodies and
+// obstacles near the device: what one Box2D ray per pair would find, without walking
+// Box2D's tree for every pair.
+// LEDs: the lit LEDs of robots, boxes/cylinders and <light>s, bucketed in a grid that
+// the cameras query, plus grids of bodies and obstacles for their occlusion rays.
+// Every buffer is sized by InitMedia; a tick allocates nothing.
 #include "devices/media.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace essaim {
 
-void UpdateMedia(const Model&, const PhysicsWorld&, const std::vector<RobotState>&, Media* media) {
-  // Range-and-bearing routing is added with the RAB devices; until then nobody hears anyone.
-  for (auto& inbox : media->rab_inbox) inbox.clear();
+// ---------------------------------------------------------------- PointGrid
+
+void PointGrid::Setup(const Vec2& min, const Vec2& max, double cell_size, size_t max_items, size_t max_cells) {
+  origin = min;
+  Vec2 ext = (max - min).cwiseMax(Vec2(1e-3, 1e-3));
+  if (!(cell_size > 1e-3)) cell_size = 1e-3;  // also catches NaN
+  cell_size = std::min(cell_size, std::max(ext.x(), ext.y()));
+  max_cells = std::max<size_t>(max_cells, 1);
+  for (;;) {
+    nx = std::max(1, static_cast<int>(std::ceil(ext.x() / cell_size)));
+    ny = std::max(1, static_cast<int>(std::ceil(ext.y() / cell_size)));
+    if (static_cast<size_t>(nx) * ny <= max_cells) break;
+    cell_size *= 1.5;
+  }
+  cell = cell_size;
+  cell_start.assign(static_cast<size_t>(nx) * ny + 1, 0);
+  items.assign(max_items, 0);
+  cell_of.assign(max_items, 0);
+}
+
+size_t PointGrid::DiscEntries(double radius) const {
+  const size_t span = static_cast<size_t>(std::ceil(2 * radius / cell)) + 1;
+  return std::min<size_t>(span, nx) * std::min<size_t>(span, ny);
+}
+
+int PointGrid::CellX(double x) const {
+  double c = std::floor((x - origin.x()) / cell);
+  return c < 0 ? 0 : c >= nx ? nx - 1 : static_cast<int>(c);  // NaN lands in the last cell
+}
+
+int PointGrid::CellY(double y) const {
+  double c = std::floor((y - origin.y()) / cell);
+  return c < 0 ? 0 : c >= ny ? ny - 1 : static_cast<int>(c);
+}
+
+template <class PosFn>
+void PointGrid::Build(int n, PosFn pos) {
+  // Counting sort: counts, inclusive prefix sums (= cell ends), then fill backwards so
+  // each cell lists its points in ascending order and cell_start[c] ends as its start.
+  std::fill(cell_start.begin(), cell_start.end(), 0);
+  for (int i = 0; i < n; ++i) {
+    Vec2 p = pos(i);
+    int c = CellY(p.y()) * nx + CellX(p.x());
+    cell_of[i] = c;
+    ++cell_start[c];
+  }
+  const size_t cells = cell_start.size() - 1;
+  for (size_t c = 1; c < cells; ++c) cell_start[c] += cell_start[c - 1];
+  cell_start[cells] = n;
+  for (int i = n - 1; i >= 0; --i) items[--cell_start[cell_of[i]]] = i;
+}
+
+template <class PosFn, class RadiusFn>
+void PointGrid::BuildDiscs(int n, PosFn pos, RadiusFn radius) {
+  // As Build, over each disc's box of cells: count, prefix sums, fill backwards.
+  std::fill(cell_start.begin(), cell_start.end(), 0);
+  auto each_cell = [&](int i, auto&& f) {
+    const Vec2 p = pos(i);
+    const double r = radius(i);
+    for (int cy = CellY(p.y() - r), y1 = CellY(p.y() + r); cy <= y1; ++cy)
+      for (int cx = CellX(p.x() - r), x1 = CellX(p.x() + r); cx <= x1; ++cx) f(cy * nx + cx);
+  };
+  int total = 0;
+  for (int i = 0; i < n; ++i) each_cell(i, [&](int c) { ++cell_start[c], ++total; });
+  const size_t cells = cell_start.size() - 1;
+  for (size_t c = 1; c < cells; ++c) cell_start[c] += cell_start[c - 1];
+  cell_start[cells] = total;
+  for (int i = n - 1; i >= 0; --i) each_cell(i, [&](int c) { items[--cell_start[c]] = i; });
+}
+
+// ---------------------------------------------------------------- geometry
+
+Vec3 FootBotLedPosition(const Pose2& pose, double z, double turret, int i) {
+  constexpr double kRingRadius = 0.090036758;  // body radius + 5 mm (spec §1.1)
+  constexpr double kRingElevation = 0.085;
+  constexpr double kBeaconElevation = 0.174249733;
+  if (i >= 12) return Vec3(pose.x, pose.y, z + kBeaconElevation);
+  double a = pose.yaw + turret + DegToRad(15.0 + 30.0 * i);
+  return Vec3(pose.x + kRingRadius * std::cos(a), pose.y + kRingRadius * std::sin(a), z + kRingElevation);
+}
+
+double CircleEntry(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
+  // b2CircleShape::RayCast: the smaller root of |a + t(b - a) - c| = r, if in [0, 1].
+  const Vec2 s = c - a;
+  const double cc = s.squaredNorm() - r * r;
+  if (cc < 0) return 2;
+  const Vec2 d = b - a;
+  const double dd = d.squaredNorm();
+  const double bq = s.dot(d);
+  const double disc = bq * bq - dd * cc;
+  if (disc < 0 || dd <= 0) return 2;
+  const double t = (bq - std::sqrt(disc)) / dd;
+  return t >= 0 && t <= 1 ? t : 2;
+}
+
+double BoxEntry(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& cs, double hx, double hy) {
+  // b2PolygonShape::RayCast in the box frame: clip [0, 1] by the four edges; a hit needs
+  // an entering edge (a segment starting inside reports nothing).
+  const Vec2 ra = a - c, rb = b - c;
+  const Vec2 p(cs.x() * ra.x() + cs.y() * ra.y(), -cs.y() * ra.x() + cs.x() * ra.y());
+  const Vec2 q(cs.x() * rb.x() + cs.y() * rb.y(), -cs.y() * rb.x() + cs.x() * rb.y());
+  const Vec2 d = q - p;
+  double lower = 0, upper = 1;
+  bool entered = false;
+  const double h[2] = {hx, hy};
+  for (int k = 0; k < 2; ++k) {
+    for (double side : {-1.0, 1.0}) {
+      const double num = h[k] - side * p[k];  // edge with outward normal side·e_k
+      const double den = side * d[k];
+      if (den == 0) {
+        if (num < 0) return 2;
+      } else if (den < 0 && num < lower * den) {
+        lower = num / den;
+        entered = true;
+      } else if (den > 0 && num < upper * den) {
+        upper = num / den;
+      }
+      if (upper < lower) return 2;
+    }
+  }
+  return entered ? lower : 2;
+}
+
+namespace {
+double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b) {
+  return o.kind == ShapeKind::Cylinder ? CircleEntry(a, b, m.obstacle_xy[k], o.radius)
+                                       : BoxEntry(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
+}
+}  // namespace
+
+bool CameraRayBlocked(const Model& model, const Media& m, const Vec2& a, const Vec2& b, double z, int exclude_robot,
+                      int skip_obstacle) {
+  const Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  if (z >= 0 && z <= footbot::kHeight) {  // robots reach this height (PhysicsWorld::CastRay)
+    const PointGrid& g = m.camera_body_grid;
+    const double r = footbot::kRadius;
+    for (int cy = g.CellY(lo.y() - r), y1 = g.CellY(hi.y() + r); cy <= y1; ++cy)
+      for (int cx = g.CellX(lo.x() - r), x1 = g.CellX(hi.x() + r); cx <= x1; ++cx) {
+        const int c = cy * g.nx + cx;
+        for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+          const int j = g.items[s];
+          if (j != exclude_robot && CircleEntry(a, b, m.body_xy[j], r) <= 1) return true;
+        }
+      }
+  }
+  if (m.obstacle_xy.empty()) return false;
+  const PointGrid& g = m.camera_obstacle_grid;  // obstacles sit in every cell they overlap
+  for (int cy = g.CellY(lo.y()), y1 = g.CellY(hi.y()); cy <= y1; ++cy)
+    for (int cx = g.CellX(lo.x()), x1 = g.CellX(hi.x()); cx <= x1; ++cx) {
+      const int c = cy * g.nx + cx;
+      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+        const int k = g.items[s];
+        const ObstacleDef& o = model.obstacles[k];
+        if (k == skip_obstacle || z < o.z || z > o.z + o.height) continue;
+        if (ObstacleEntry(o, m, k, a, b) <= 1) return true;
+      }
+    }
+  return false;
+}
+
+namespace {
+template <class Def>
+int MediumIndex(const std::vector<Def>& media, const std::string& id) {
+  for (size_t k = 0; k < media.size(); ++k)
+    if (media[k].id == id) return static_cast<int>(k);
+  return -1;
+}
+
+/// ARGoS compares colours with alpha: only (0,0,0,255) is "black", i.e. off (spec §7.1).
+bool LedOff(const Color& c) { return c == Color(); }
+
+void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media* m) {
+  const int n = static_cast<int>(robots.size());
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    m->rab_inbox[i].clear();
+    m->rab_member[i] = m->rab_medium[i] >= 0 && robots[i].alive;
+    count += m->rab_member[i];
+  }
+  if (count < 2) return;
+  PointGrid& g = m->rab_grid;
+  g.Build(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
+  const int n_obs = static_cast<int>(m->obstacle_xy.size());
+  if (n_obs > 0)
+    m->rab_obstacle_grid.BuildDiscs(n_obs, [&](int k) { return m->obstacle_xy[k]; },
+                                    [&](int k) { return m->obstacle_radius[k]; });
+  const double reach = m->rab_max_range;
+  const double near = reach + footbot::kRadius;  // a body touching a segment from a is this close
+  for (int a = 0; a < n; ++a) {
+    if (!m->rab_member[a]) continue;
+    const Vec3& pa = m->rab_pos[a];
+    const Vec2 xa = pa.head<2>();
+    const RobotDef& da = model.robots[a];
+    const bool occlusions = model.rab_media[m->rab_medium[a]].check_occlusions;
+    // Bodies near a, ascending: the candidate partners (members after a) and the possible
+    // occluders. Sorted, so every inbox ends up in sender order (spec §5.3).
+    m->rab_near.clear();
+    for (int cy = g.CellY(xa.y() - near), y1 = g.CellY(xa.y() + near); cy <= y1; ++cy)
+      for (int cx = g.CellX(xa.x() - near), x1 = g.CellX(xa.x() + near); cx <= x1; ++cx) {
+        const int c = cy * g.nx + cx;
+        for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+          const int j = g.items[s];
+          if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) m->rab_near.push_back(j);
+        }
+      }
+    std::sort(m->rab_near.begin(), m->rab_near.end());
+    m->rab_near_obstacles.clear();
+    if (occlusions && n_obs > 0) {
+      const PointGrid& og = m->rab_obstacle_grid;  // obstacles sit in every cell they overlap
+      ++m->stamp;
+      for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1; ++cy)
+        for (int cx = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach); cx <= x1; ++cx) {
+          const int c = cy * og.nx + cx;
+          for (int s = og.cell_start[c]; s < og.cell_start[c + 1]; ++s) {
+            const int k = og.items[s];
+            if (m->obstacle_stamp[k] == m->stamp) continue;
+            m->obstacle_stamp[k] = m->stamp;
+            const ObstacleDef& o = model.obstacles[k];
+            const double r = reach + m->obstacle_radius[k];
+            if (pa.z() >= o.z && pa.z() <= o.z + o.height && (m->obstacle_xy[k] - xa).squaredNorm() <= r * r)
+              m->rab_near_obstacles.push_back(k);
+          }
+        }
+    }
+    const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
+    for (int b : m->rab_near) {
+      if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
+      const RobotDef& db = model.robots[b];
+      if (m->rab_medium[b] != m->rab_medium[a] || db.rab_data_size != da.rab_data_size) continue;
+      const Vec3& pb = m->rab_pos[b];
+      const double d = (pb - pa).norm();
+      const bool a_hears_b = d < db.rab_range;  // the sender's range, strict (spec §5.2)
+      const bool b_hears_a = d < da.rab_range;
+      if (!a_hears_b && !b_hears_a) continue;
+      if (occlusions) {
+        // The first body along a -> b's centre must be b's (spec §5.2): anything entered
+        // before b's circle hides it.
+        const Vec2 xb = pb.head<2>();
+        const double len = (xb - xa).norm();
+        const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+        bool hidden = false;
+        if (bodies_occlude)
+          for (int c : m->rab_near)
+            if (c != b && CircleEntry(xa, xb, m->body_xy[c], footbot::kRadius) < t_b) {
+              hidden = true;
+              break;
+            }
+        if (!hidden)
+          for (int k : m->rab_near_obstacles)
+            if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
+              hidden = true;
+              break;
+            }
+        if (hidden) continue;
+      }
+      if (a_hears_b) m->rab_inbox[a].push_back(b);
+      if (b_hears_a) m->rab_inbox[b].push_back(a);
+    }
+  }
+}
+
+void UpdateLeds(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
+  m->leds.clear();
+  if (!m->any_camera) return;  // nobody looks: skip the index entirely
+  const int n = static_cast<int>(robots.size());
+  for (int i = 0; i < n; ++i) {
+    if (m->led_medium[i] < 0 || !robots[i].alive) continue;
+    const RobotState& r = robots[i];
+    Pose2 pose;
+    bool posed = false;
+    for (int j = 0; j < footbot::kLedCount; ++j) {
+      if (LedOff(r.leds[j])) continue;
+      if (!posed) pose = physics.RobotPose(i), posed = true;
+      LitLed l;
+      l.pos = FootBotLedPosition(pose, model.robots[i].z, r.turret_rotation, j);
+      l.color = r.leds[j];
+      l.robot = i;
+      l.medium = m->led_medium[i];
+      m->leds.push_back(l);
+    }
+  }
+  for (size_t o = 0; o < model.obstacles.size(); ++o) {
+    if (m->obstacle_led_medium[o] < 0) continue;
+    const ObstacleDef& def = model.obstacles[o];
+    const Vec2& xy = m->obstacle_xy[o];
+    const Vec2& cs = m->obstacle_cs[o];
+    for (const LedDef& led : def.leds) {
+      if (LedOff(led.color)) continue;
+      LitLed l;
+      l.pos = Vec3(xy.x() + cs.x() * led.offset.x() - cs.y() * led.offset.y(),
+                   xy.y() + cs.y() * led.offset.x() + cs.x() * led.offset.y(), def.z + led.offset.z());
+      l.color = led.color;
+      l.obstacle = static_cast<int>(o);
+      l.medium = m->obstacle_led_medium[o];
+      m->leds.push_back(l);
+    }
+  }
+  for (size_t k = 0; k < model.lights.size(); ++k) {
+    if (m->light_medium[k] < 0 || LedOff(model.lights[k].color)) continue;
+    LitLed l;
+    l.pos = model.lights[k].position;
+    l.color = model.lights[k].color;
+    l.medium = m->light_medium[k];
+    m->leds.push_back(l);
+  }
+  m->led_grid.Build(static_cast<int>(m->leds.size()), [&](int k) { return Vec2(m->leds[k].pos.head<2>()); });
+  m->camera_body_grid.Build(n, [&](int i) { return m->body_xy[i]; });
+  if (!m->obstacle_xy.empty())
+    m->camera_obstacle_grid.BuildDiscs(static_cast<int>(m->obstacle_xy.size()), [&](int k) { return m->obstacle_xy[k]; },
+                                       [&](int k) { return m->obstacle_radius[k]; });
+}
+}  // namespace
+
+/// A grid of the obstacles' bounding discs, each in every cell it overlaps.
+static void SetupDiscGrid(const Vec2& lo, const Vec2& hi, double cell, const Media& m, PointGrid* g) {
+  const size_t n_obs = m.obstacle_radius.size();
+  g->Setup(lo, hi, cell, 0, 4 * n_obs + 64);
+  size_t entries = 0;
+  for (double r : m.obstacle_radius) entries += g->DiscEntries(r);
+  g->items.assign(entries, 0);
+}
+
+void InitMedia(const Model& model, Media* m) {
+  const size_t n = model.robots.size();
+  m->rab_inbox.resize(n);
+  m->body_xy.assign(n, Vec2::Zero());
+  m->rab_medium.assign(n, -1);
+  m->rab_member.assign(n, 0);
+  m->rab_pos.assign(n, Vec3::Zero());
+  m->rab_yaw.assign(n, 0);
+  m->rab_near.clear();
+  m->rab_near.reserve(n);
+  m->led_medium.assign(n, -1);
+  m->camera_medium.assign(n, -1);
+  m->rab_max_range = 0;
+  m->any_camera = false;
+  m->camera_half_range = 0;
+  size_t rab_count = 0, led_capacity = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const RobotDef& def = model.robots[i];
+    const ControllerDef& c = model.controllers[def.controller];
+    // Only the sensor puts a robot in the RAB medium (spec §5.1 QUIRK, docs/compatibility.md).
+    if (const DeviceConfig* d = c.Find(DeviceType::RabSensor)) {
+      m->rab_medium[i] = MediumIndex(model.rab_media, d->Attr("medium"));
+      if (m->rab_medium[i] >= 0) {
+        ++rab_count;
+        m->rab_max_range = std::max(m->rab_max_range, def.rab_range);
+        if (m->rab_inbox[i].capacity() < 16) m->rab_inbox[i].reserve(std::min<size_t>(n, 64));
+      }
+    }
+    if (const DeviceConfig* d = c.Find(DeviceType::LedsActuator)) {
+      m->led_medium[i] = MediumIndex(model.led_media, d->Attr("medium"));
+      if (m->led_medium[i] >= 0) led_capacity += footbot::kLedCount;
+    }
+    if (const DeviceConfig* d = c.Find(DeviceType::CameraSensor)) {
+      m->camera_medium[i] = MediumIndex(model.led_media, d->Attr("medium"));
+      if (m->camera_medium[i] >= 0) {
+        m->any_camera = true;
+        m->camera_half_range = std::max(m->camera_half_range, footbot::kCameraElevation * std::tan(def.camera_aperture));
+      }
+    }
+  }
+  const size_t n_obs = model.obstacles.size();
+  m->obstacle_xy.assign(n_obs, Vec2::Zero());
+  m->obstacle_cs.assign(n_obs, Vec2(1, 0));
+  m->obstacle_radius.assign(n_obs, 0);
+  m->obstacle_top.assign(n_obs, 0);
+  m->obstacle_led_medium.assign(n_obs, -1);
+  m->obstacle_max_radius = 0;
+  for (size_t o = 0; o < n_obs; ++o) {
+    const ObstacleDef& def = model.obstacles[o];
+    m->obstacle_top[o] = def.z + def.height;
+    const double r = (def.kind == ShapeKind::Cylinder ? def.radius : 0.5 * std::hypot(def.size_x, def.size_y)) + 1e-6;
+    m->obstacle_radius[o] = r;
+    m->obstacle_max_radius = std::max(m->obstacle_max_radius, r);
+    if (!def.leds.empty()) {
+      m->obstacle_led_medium[o] = MediumIndex(model.led_media, def.led_medium);
+      led_capacity += def.leds.size();
+    }
+  }
+  m->rab_near_obstacles.clear();
+  m->rab_near_obstacles.reserve(n_obs);
+  m->obstacle_stamp.assign(n_obs, 0);
+  m->stamp = 0;
+  m->light_medium.assign(model.lights.size(), -1);
+  for (size_t k = 0; k < model.lights.size(); ++k) m->light_medium[k] = MediumIndex(model.led_media, model.lights[k].medium);
+  led_capacity += model.lights.size();
+
+  // Grids over the arena (points outside fall into the border cells), cells about the
+  // reach of a query so that it touches at most 3x3 cells; cell counts stay O(points).
+  const Vec2 lo = model.arena.Min(), hi = model.arena.Max();
+  if (rab_count >= 2) {
+    const double near = m->rab_max_range + footbot::kRadius;
+    m->rab_grid.Setup(lo, hi, near, n, 4 * n + 64);
+    SetupDiscGrid(lo, hi, near, *m, &m->rab_obstacle_grid);
+  }
+  m->leds.clear();
+  m->leds.reserve(led_capacity);
+  if (m->any_camera) {
+    double h = m->camera_half_range;
+    if (!(h > 0) || !std::isfinite(h)) h = 1e9;  // aperture >= 90°: the whole arena
+    m->led_grid.Setup(lo, hi, h, led_capacity, 4 * led_capacity + 64);
+    // Occlusion rays are at most h·sqrt(2) long: cells of about h/2 keep the cells a ray's
+    // box touches few and small.
+    m->camera_body_grid.Setup(lo, hi, h / 2, n, 4 * n + 64);
+    SetupDiscGrid(lo, hi, h / 2, *m, &m->camera_obstacle_grid);
+  }
+  m->rab_devices = static_cast<int>(rab_count);
+  m->ready = true;
+}
+
+void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
+  if (!m->ready) InitMedia(model, m);
+  const int n = static_cast<int>(robots.size());
+  const bool rab = m->rab_devices >= 2;
+  if (rab || m->any_camera) {
+    for (int i = 0; i < n; ++i) {
+      const Pose2 p = physics.RobotPose(i);
+      m->body_xy[i] = Vec2(p.x, p.y);
+      m->rab_pos[i] = Vec3(p.x, p.y, model.robots[i].z + footbot::kRabElevation);
+      m->rab_yaw[i] = p.yaw;
+    }
+    for (size_t k = 0; k < m->obstacle_xy.size(); ++k) {
+      const Pose2 p = physics.ObstaclePose(static_cast<int>(k));
+      m->obstacle_xy[k] = Vec2(p.x, p.y);
+      m->obstacle_cs[k] = Vec2(std::cos(p.yaw), std::sin(p.yaw));
+    }
+  }
+  if (rab) UpdateRab(model, robots, m);
+  UpdateLeds(model, physics, robots, m);
 }
 
 }  // namespace essaim

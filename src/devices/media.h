@@ -9,12 +9,96 @@
 
 namespace essaim {
 
-struct Media {
-  /// rab_inbox[r] = senders whose packet robot r receives this tick, ascending index.
-  std::vector<std::vector<int>> rab_inbox;
+/// Points bucketed into square cells by counting sort: rebuilt every tick without
+/// allocation (buffers sized by Setup). Cell coordinates are clamped, so points outside
+/// the arena land in the border cells.
+struct PointGrid {
+  Vec2 origin = Vec2::Zero();
+  double cell = 1;                 // m
+  int nx = 1, ny = 1;
+  std::vector<int> cell_start;     // nx*ny + 1 offsets into items
+  std::vector<int> items;          // point numbers grouped by cell, ascending within a cell
+  std::vector<int> cell_of;        // scratch: cell of each point
+  /// Cells of about `cell` m over [min, max], at most ~`max_cells` of them, room for
+  /// `max_items` entries.
+  void Setup(const Vec2& min, const Vec2& max, double cell, size_t max_items, size_t max_cells);
+  /// Buckets points 0..n-1 given by pos(i).
+  template <class PosFn>
+  void Build(int n, PosFn pos);
+  /// Buckets discs 0..n-1 (centre pos(i), radius radius(i)) into every cell their box
+  /// overlaps; at most `max_items` entries (see DiscEntries).
+  template <class PosFn, class RadiusFn>
+  void BuildDiscs(int n, PosFn pos, RadiusFn radius);
+  /// Upper bound of the cells a disc of `radius` overlaps.
+  size_t DiscEntries(double radius) const;
+  int CellX(double x) const;
+  int CellY(double y) const;
 };
 
+/// A lit LED of the current tick (robot ring/beacon, box or cylinder LED, <light>).
+struct LitLed {
+  Vec3 pos = Vec3::Zero();         // m, world
+  Color color;
+  int robot = -1;                  // carrier robot, else -1
+  int obstacle = -1;               // carrier box/cylinder, else -1
+  int medium = 0;                  // index into Model::led_media
+};
+
+struct Media {
+  bool ready = false;
+  /// rab_inbox[r] = senders whose packet robot r receives this tick, ascending index.
+  std::vector<std::vector<int>> rab_inbox;
+  // ---- occluders this tick, for RAB and cameras: exact circle/box tests that decide what
+  // one Box2D ray would (PhysicsWorld::CastRay), without walking Box2D's tree per ray.
+  std::vector<Vec2> body_xy;       // every robot body (dead ones too)
+  std::vector<Vec2> obstacle_xy;   // every box/cylinder centre
+  std::vector<Vec2> obstacle_cs;   // cos, sin of its yaw
+  std::vector<double> obstacle_radius;  // bounding circle (m)
+  std::vector<double> obstacle_top;     // m
+  double obstacle_max_radius = 0;
+  // ---- range and bearing (spec §5)
+  std::vector<int> rab_medium;     // per robot: index into Model::rab_media; -1 no sensor
+  std::vector<char> rab_member;    // this tick: in a medium and alive
+  std::vector<Vec3> rab_pos;       // device position this tick (m)
+  std::vector<double> rab_yaw;     // heading this tick (rad)
+  int rab_devices = 0;             // robots with a RAB sensor in a medium
+  double rab_max_range = 0;        // m, largest rab_range of a member
+  PointGrid rab_grid;              // bodies, cell = reach + body radius
+  PointGrid rab_obstacle_grid;     // obstacles, in every cell they overlap
+  std::vector<int> obstacle_stamp; // scratch: dedup of rab_near_obstacles
+  int stamp = 0;
+  std::vector<int> rab_near;       // scratch: bodies within reach of one device, ascending
+  std::vector<int> rab_near_obstacles;  // scratch
+  // ---- LEDs and cameras (spec §7.1, §7.2)
+  std::vector<int> led_medium;     // per robot: its leds actuator's medium, -1 none
+  std::vector<int> camera_medium;  // per robot: its camera's medium, -1 none
+  std::vector<int> obstacle_led_medium;  // per obstacle, -1 none
+  std::vector<int> light_medium;   // per <light>
+  bool any_camera = false;
+  double camera_half_range = 0;    // m, largest z_cam·tan(aperture) of a camera robot
+  std::vector<LitLed> leds;        // lit LEDs this tick; their order is the blobs' order
+  PointGrid led_grid;
+  PointGrid camera_body_grid;      // bodies, cells of about a camera's half range
+  PointGrid camera_obstacle_grid;  // obstacles, in every cell they overlap
+};
+
+/// Sizes every media buffer for the model (World creation). UpdateMedia calls it if needed.
+void InitMedia(const Model& model, Media* media);
 /// Media stage: rebuilds routing from the robots' positions after physics.
 void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media);
+
+/// Segment fraction at which from -> to enters a circle (Box2D's circle ray cast); 2 when
+/// it misses, also when it starts inside.
+double CircleEntry(const Vec2& from, const Vec2& to, const Vec2& center, double radius);
+/// Same for a box of half sizes (hx, hy), yaw (cos, sin) = cs (Box2D's polygon ray cast).
+double BoxEntry(const Vec2& from, const Vec2& to, const Vec2& center, const Vec2& cs, double hx, double hy);
+/// Whether a ray from -> to at height z meets a robot body (not `exclude_robot`) or an
+/// obstacle spanning z (not `skip_obstacle`): CastRay's rule, via the camera grids.
+bool CameraRayBlocked(const Model& model, const Media& media, const Vec2& from, const Vec2& to, double z,
+                      int exclude_robot, int skip_obstacle);
+
+/// World position of foot-bot LED `i` (0..12: ring 0..11 then beacon) for a robot at
+/// `pose`, base height `z`, turret rotation `turret` (rad; the ring rides on the turret).
+Vec3 FootBotLedPosition(const Pose2& pose, double z, double turret, int i);
 
 }  // namespace essaim

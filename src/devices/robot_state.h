@@ -48,6 +48,7 @@ struct Blob {
   double distance = 0;  // cm
   double angle = 0;     // rad
   Color color;
+  int led = -1;         // index into Media::leds: the blobs' order
 };
 
 /// Written by the Sense stage; copied into the robot's Lua tables before step().
@@ -97,6 +98,7 @@ struct RobotState {
   double wheel_bias_left = 0, wheel_bias_right = 0;
   Color leds[footbot::kLedCount];
   std::vector<uint8_t> rab_data;   // applied payload, broadcast this tick
+  bool camera_enabled = false;     // colored_blob_omnidirectional_camera enable()/disable()
   double gripper_aperture = 0;
   double turret_rotation = 0;      // rad relative to the body, in [-pi, pi] (devices/turret.cpp)
   TurretMode turret_mode = TurretMode::Off;

@@ -43,6 +43,12 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
       case DeviceType::TurretActuator:
         CreateTurretActuator(L, DeviceTable(L, robot_t, "turret", &refs->turret), robot);
         break;
+      case DeviceType::LedsActuator:
+        CreateLedsActuator(L, DeviceTable(L, robot_t, "leds", &refs->leds), robot);
+        break;
+      case DeviceType::RabActuator:
+        CreateRabActuator(L, DeviceTable(L, robot_t, "range_and_bearing", &refs->rab), robot);
+        break;
       default: break;
     }
     lua_settop(L, robot_t);
@@ -66,6 +72,10 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
         CreateScannerSensor(L, DeviceTable(L, robot_t, "distance_scanner", &refs->scanner), refs);
         break;
       case DeviceType::TurretEncoderSensor: CreateTurretSensor(L, DeviceTable(L, robot_t, "turret", &refs->turret)); break;
+      case DeviceType::RabSensor: DeviceTable(L, robot_t, "range_and_bearing", &refs->rab); break;
+      case DeviceType::CameraSensor:
+        CreateCameraSensor(L, DeviceTable(L, robot_t, "colored_blob_omnidirectional_camera", &refs->camera), robot);
+        break;
       default: break;
     }
     lua_settop(L, robot_t);
@@ -85,6 +95,8 @@ void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& 
       case DeviceType::MotorGroundSensor: PushMotorGround(L, refs->motor_ground, rd); break;
       case DeviceType::ScannerSensor: PushScanner(L, rd, refs); break;
       case DeviceType::TurretEncoderSensor: PushTurret(L, refs->turret, rd); break;
+      case DeviceType::RabSensor: PushRab(L, refs->rab, rd, &refs->rab_count); break;
+      case DeviceType::CameraSensor: PushCamera(L, refs->camera, rd, &refs->blob_count); break;
       default: break;
     }
   }

@@ -51,5 +51,11 @@ void CreateGripperActuator(lua_State* L, int t, RobotState* robot);
 void CreateTurretActuator(lua_State* L, int t, RobotState* robot);
 void CreateTurretSensor(lua_State* L, int t);
 void PushTurret(lua_State* L, int ref, const Readings& rd);
+// range and bearing (set_data/clear_data, messages), LEDs, colored-blob camera
+void CreateRabActuator(lua_State* L, int t, RobotState* robot);
+void PushRab(lua_State* L, int ref, const Readings& rd, int* count);
+void CreateLedsActuator(lua_State* L, int t, RobotState* robot);
+void CreateCameraSensor(lua_State* L, int t, RobotState* robot);
+void PushCamera(lua_State* L, int ref, const Readings& rd, int* count);
 
 }  // namespace essaim

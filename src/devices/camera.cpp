@@ -1,0 +1,72 @@
+// Colored-blob omnidirectional camera, rot_z_only (spec §7.2). Looks up the lit LEDs of
+// the LED medium's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
+//
+// Occlusion in 2D: ARGoS casts a 3D ray from the camera (0.2887 m up) down to the LED; we
+// cast one planar ray from the robot's centre to the LED at the LED's height, ignoring
+// the robot itself. Anything reaching that height in between hides the LED: other robots
+// hide ring LEDs (z 0.085) but never beacons (z 0.174 > body height 0.147), a robot's
+// own body hides its far-side ring LEDs. This is a little more occluding than ARGoS's
+// descending ray (see docs/compatibility.md). An LED on top of its own box/cylinder is
+// not hidden by that carrier. The ray is decided by exact circle/box tests on the media's
+// grids (what PhysicsWorld::CastRay would answer, without walking Box2D's tree).
+#include <algorithm>
+#include <cmath>
+
+#include "devices/devices.h"
+
+namespace essaim {
+
+void SenseCamera(const SenseContext& ctx, const DeviceConfig& cfg, const RobotDef& def, RobotState& robot) {
+  Readings& rd = robot.rd;
+  rd.blobs.clear();
+  if (!robot.camera_enabled) return;
+  const Media& media = ctx.media;
+  const int self = robot.index;
+  if (media.camera_medium.empty() || media.camera_medium[self] < 0 || media.leds.empty()) return;
+  const int medium = media.camera_medium[self];
+  const Pose2 pose = ctx.physics.RobotPose(self);
+  const double half = footbot::kCameraElevation * std::tan(def.camera_aperture);
+  if (!(half > 0)) return;
+  const double camera_z = def.z + footbot::kCameraElevation;
+  const double noise = cfg.params.noise_std_dev;
+  const PointGrid& g = media.led_grid;
+  const int x0 = g.CellX(pose.x - half), x1 = g.CellX(pose.x + half);
+  const int y0 = g.CellY(pose.y - half), y1 = g.CellY(pose.y + half);
+  const Vec2 eye(pose.x, pose.y);
+  for (int cy = y0; cy <= y1; ++cy)
+    for (int cx = x0; cx <= x1; ++cx) {
+      const int c = cy * g.nx + cx;
+      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+        const int li = g.items[s];
+        const LitLed& led = media.leds[li];
+        if (led.robot == self || led.medium != medium) continue;
+        Vec2 rel(led.pos.x() - pose.x, led.pos.y() - pose.y);
+        if (std::abs(rel.x()) >= half || std::abs(rel.y()) >= half || led.pos.z() >= camera_z) continue;
+        // An LED on (or above) the top of its own box/cylinder is not hidden by it.
+        const int carrier = led.obstacle >= 0 && led.pos.z() >= media.obstacle_top[led.obstacle] ? led.obstacle : -1;
+        if (CameraRayBlocked(ctx.model, media, eye, led.pos.head<2>(), led.pos.z(), self, carrier)) continue;
+        Blob b;  // holds the planar vector until noise and conversion below
+        b.distance = rel.x();
+        b.angle = rel.y();
+        b.color = led.color;
+        b.led = li;
+        rd.blobs.push_back(b);
+      }
+    }
+  // Cells come in grid order; report (and draw noise) in LED order (robots by index, LEDs
+  // 1..13, then box and cylinder LEDs, then lights), independent of the grid geometry.
+  std::sort(rd.blobs.begin(), rd.blobs.end(), [](const Blob& a, const Blob& b) { return a.led < b.led; });
+  for (Blob& b : rd.blobs) {
+    Vec2 rel(b.distance, b.angle);
+    if (noise > 0) {
+      // A vector of length |rel|·N(0, sd) in a uniform direction.
+      const double len = rel.norm() * robot.sensor_rng.Gaussian(noise);
+      const double dir = robot.sensor_rng.Uniform(0, kTwoPi);
+      rel += Vec2(len * std::cos(dir), len * std::sin(dir));
+    }
+    b.distance = rel.norm() * 100.0;
+    b.angle = WrapSigned(std::atan2(rel.y(), rel.x()) - pose.yaw);
+  }
+}
+
+}  // namespace essaim

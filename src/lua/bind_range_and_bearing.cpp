@@ -1,0 +1,99 @@
+// robot.range_and_bearing (spec §5.4): set_data / clear_data, and the received messages
+// robot.range_and_bearing[i] = {range, horizontal_bearing, vertical_bearing, data}.
+// Each message and its data table are fresh every step, as in ARGoS: a controller may
+// keep last step's message and compare it with the new one. Bytes are Lua integers.
+#include "lua/bind_byte.h"
+#include "lua/lua_devices.h"
+
+namespace essaim {
+
+namespace {
+int SetData(lua_State* L) {
+  RobotState* r = UpvalueRobot(L);
+  const lua_Integer size = static_cast<lua_Integer>(r->cmd.rab_data.size());
+  const int args = lua_gettop(L);
+  if (args == 1) {
+    luaL_checktype(L, 1, LUA_TTABLE);
+    if (static_cast<lua_Integer>(luaL_len(L, 1)) != size)
+      return luaL_error(L, "robot.range_and_bearing.set_data(array) expects an array of %d numbers (rab_data_size), got %d",
+                        static_cast<int>(size), static_cast<int>(luaL_len(L, 1)));
+    // Check everything first: a bad element leaves the payload untouched.
+    for (lua_Integer i = 1; i <= size; ++i) {
+      int t = lua_geti(L, 1, i);
+      lua_pop(L, 1);
+      if (t != LUA_TNUMBER)
+        return luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is not a number", static_cast<int>(i));
+    }
+    for (lua_Integer i = 1; i <= size; ++i) {
+      lua_geti(L, 1, i);
+      r->cmd.rab_data[static_cast<size_t>(i - 1)] = LuaNumberToByte(lua_tonumber(L, -1));
+      lua_pop(L, 1);
+    }
+    return 0;
+  }
+  if (args == 2) {
+    double idx = luaL_checknumber(L, 1);
+    double value = luaL_checknumber(L, 2);
+    if (!(idx >= 1 && idx < static_cast<double>(size) + 1))
+      return luaL_error(L, "robot.range_and_bearing.set_data(idx, value) expects idx between 1 and %d, got %f",
+                        static_cast<int>(size), idx);
+    r->cmd.rab_data[static_cast<size_t>(idx) - 1] = LuaNumberToByte(value);
+    return 0;
+  }
+  return luaL_error(L, "robot.range_and_bearing.set_data() expects either one or two arguments");
+}
+
+int ClearData(lua_State* L) {
+  RobotState* r = UpvalueRobot(L);
+  std::fill(r->cmd.rab_data.begin(), r->cmd.rab_data.end(), 0);
+  return 0;
+}
+}  // namespace
+
+void CreateRabActuator(lua_State* L, int t, RobotState* robot) {
+  SetClosure(L, t, "set_data", SetData, robot);
+  SetClosure(L, t, "clear_data", ClearData, robot);
+}
+
+void PushRab(lua_State* L, int ref, const Readings& rd, int* count) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  const int t = lua_gettop(L);
+  const int n = static_cast<int>(rd.rab.size());
+  if (n > 0) {
+    // Keys pushed once per call (lua_setfield would look each up in the string cache).
+    lua_pushliteral(L, "range");
+    lua_pushliteral(L, "horizontal_bearing");
+    lua_pushliteral(L, "vertical_bearing");
+    lua_pushliteral(L, "data");
+  }
+  const int k_range = t + 1, k_hb = t + 2, k_vb = t + 3, k_data = t + 4;
+  for (int i = 0; i < n; ++i) {
+    const RabPacket& p = rd.rab[static_cast<size_t>(i)];
+    lua_createtable(L, 0, 4);
+    lua_pushvalue(L, k_range);
+    lua_pushnumber(L, p.range);
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_hb);
+    lua_pushnumber(L, p.horizontal_bearing);
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_vb);
+    lua_pushnumber(L, p.vertical_bearing);
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_data);
+    lua_createtable(L, p.size, 0);
+    for (int k = 0; k < p.size; ++k) {
+      lua_pushinteger(L, p.data[k]);
+      lua_rawseti(L, -2, k + 1);
+    }
+    lua_rawset(L, -3);
+    lua_rawseti(L, t, i + 1);
+  }
+  for (int i = n; i < *count; ++i) {
+    lua_pushnil(L);
+    lua_rawseti(L, t, i + 1);
+  }
+  *count = n;
+  lua_settop(L, t - 1);
+}
+
+}  // namespace essaim
