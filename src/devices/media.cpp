@@ -142,6 +142,16 @@ double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a,
   return o.kind == ShapeKind::Cylinder ? CircleEntry(a, b, m.obstacle_xy[k], o.radius)
                                        : BoxEntry(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
 }
+
+/// Distance from p to obstacle k's footprint (0 inside).
+double ObstacleDistance(const ObstacleDef& o, const Media& m, int k, const Vec2& p) {
+  const Vec2 r = p - m.obstacle_xy[k];
+  if (o.kind == ShapeKind::Cylinder) return std::max(0.0, r.norm() - o.radius);
+  const Vec2& cs = m.obstacle_cs[k];
+  const Vec2 local(cs.x() * r.x() + cs.y() * r.y(), -cs.y() * r.x() + cs.x() * r.y());
+  const Vec2 out(std::max(0.0, std::abs(local.x()) - o.size_x / 2), std::max(0.0, std::abs(local.y()) - o.size_y / 2));
+  return out.norm();
+}
 }  // namespace
 
 bool CameraRayBlocked(const Model& model, const Media& m, const Vec2& a, const Vec2& b, double z, int exclude_robot,
@@ -232,8 +242,7 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
             if (m->obstacle_stamp[k] == m->stamp) continue;
             m->obstacle_stamp[k] = m->stamp;
             const ObstacleDef& o = model.obstacles[k];
-            const double r = reach + m->obstacle_radius[k];
-            if (pa.z() >= o.z && pa.z() <= o.z + o.height && (m->obstacle_xy[k] - xa).squaredNorm() <= r * r)
+            if (pa.z() >= o.z && pa.z() <= o.z + o.height && ObstacleDistance(o, *m, k, xa) <= reach)
               m->rab_near_obstacles.push_back(k);
           }
         }

@@ -26,21 +26,32 @@ void PushCamera(lua_State* L, int ref, const Readings& rd, int* count) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   const int n = static_cast<int>(rd.blobs.size());
+  // Keys pushed once per call (lua_setfield would look each up in the string cache).
+  const char* const keys[] = {"distance", "angle", "color", "red", "green", "blue"};
+  if (n > 0)
+    for (const char* k : keys) lua_pushstring(L, k);
+  const int k_distance = t + 1, k_angle = t + 2, k_color = t + 3, k_red = t + 4, k_green = t + 5, k_blue = t + 6;
   for (int i = 0; i < n; ++i) {
     const Blob& b = rd.blobs[static_cast<size_t>(i)];
     lua_createtable(L, 0, 3);
+    lua_pushvalue(L, k_distance);
     lua_pushnumber(L, b.distance);
-    lua_setfield(L, -2, "distance");
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_angle);
     lua_pushnumber(L, b.angle);
-    lua_setfield(L, -2, "angle");
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_color);
     lua_createtable(L, 0, 3);
+    lua_pushvalue(L, k_red);
     lua_pushinteger(L, b.color.r);
-    lua_setfield(L, -2, "red");
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_green);
     lua_pushinteger(L, b.color.g);
-    lua_setfield(L, -2, "green");
+    lua_rawset(L, -3);
+    lua_pushvalue(L, k_blue);
     lua_pushinteger(L, b.color.b);
-    lua_setfield(L, -2, "blue");
-    lua_setfield(L, -2, "color");
+    lua_rawset(L, -3);
+    lua_rawset(L, -3);
     lua_rawseti(L, t, i + 1);
   }
   for (int i = n; i < *count; ++i) {
@@ -48,7 +59,7 @@ void PushCamera(lua_State* L, int ref, const Readings& rd, int* count) {
     lua_rawseti(L, t, i + 1);
   }
   *count = n;
-  lua_pop(L, 1);
+  lua_settop(L, t - 1);
 }
 
 }  // namespace essaim
