@@ -47,16 +47,15 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
   w->robots.resize(n);
   w->pending_errors.resize(n);
   w->chunk_times.resize(n + 1);
-  w->media.rab_inbox.resize(n);
   for (size_t i = 0; i < n; ++i) {
     RobotState& r = w->robots[i];
     r.index = static_cast<int>(i);
     r.controller_rng.Seed(DeriveSeed(seed, StreamKind::Controller, i));
     r.sensor_rng.Seed(DeriveSeed(seed, StreamKind::SensorNoise, i));
     r.actuator_rng.Seed(DeriveSeed(seed, StreamKind::ActuatorNoise, i));
-    w->media.rab_inbox[i].reserve(n);
     InitRobotDevices(model, model.robots[i], r, w->physics);
   }
+  InitMedia(model, &w->media);  // buffers sized once, by who is in which medium
   w->threads = options.threads >= 0 ? options.threads : model.experiment.threads;
   if (w->threads < 1) w->threads = 1;
   w->pool = std::make_unique<ThreadPool>(w->threads);
