@@ -183,15 +183,16 @@ def make_figures(df: pd.DataFrame, out: str | Path, x: str = "robots", errorbars
 
     # Source discovery time: first source, all sources. A run where it never happened has
     # no value; the mean is over the runs that have one, marked k/n where k < n.
+    # Columns with no value at all (e.g. a sweep where nothing was discovered) are skipped.
     disc = [(c, lab) for c, lab in (("first_discovery_tick", "first source discovered"),
                                     ("all_discovered_tick", "all sources discovered"))
-            if c in df]
+            if c in df and pd.to_numeric(df[c], errors="coerce").notna().any()]
     if disc:
         fig, ax = plt.subplots(figsize=(7, 4.5))
         k = 0
         for j, (hl, sub) in enumerate(groups(df, hue)):
             for c, lab in disc:
-                draw(ax, aggregate(sub, x, sub[c], errorbars), lab + (f", {hl}" if hl else ""),
+                draw(ax, aggregate(sub, x, pd.to_numeric(sub[c], errors="coerce").astype(float), errorbars), lab + (f", {hl}" if hl else ""),
                      k, styles[j % len(styles)], annotate_missing=True)
                 k += 1
         written += finish(fig, ax, "Source discovery time", xlabel, "time (ticks)",
