@@ -34,31 +34,17 @@ void PushCamera(lua_State* L, int ref, const Readings& rd, int* count) {
   for (int i = 0; i < n; ++i) {
     const Blob& b = rd.blobs[static_cast<size_t>(i)];
     lua_createtable(L, 0, 3);
-    lua_pushvalue(L, k_distance);
-    lua_pushnumber(L, b.distance);
-    lua_rawset(L, -3);
-    lua_pushvalue(L, k_angle);
-    lua_pushnumber(L, b.angle);
-    lua_rawset(L, -3);
+    RawSetNumber(L, k_distance, b.distance);
+    RawSetNumber(L, k_angle, b.angle);
     lua_pushvalue(L, k_color);
     lua_createtable(L, 0, 3);
-    lua_pushvalue(L, k_red);
-    lua_pushinteger(L, b.color.r);
-    lua_rawset(L, -3);
-    lua_pushvalue(L, k_green);
-    lua_pushinteger(L, b.color.g);
-    lua_rawset(L, -3);
-    lua_pushvalue(L, k_blue);
-    lua_pushinteger(L, b.color.b);
-    lua_rawset(L, -3);
+    RawSetInteger(L, k_red, b.color.r);
+    RawSetInteger(L, k_green, b.color.g);
+    RawSetInteger(L, k_blue, b.color.b);
     lua_rawset(L, -3);
     lua_rawseti(L, t, i + 1);
   }
-  for (int i = n; i < *count; ++i) {
-    lua_pushnil(L);
-    lua_rawseti(L, t, i + 1);
-  }
-  *count = n;
+  ClearStaleTail(L, t, n, count);
   lua_settop(L, t - 1);
 }
 

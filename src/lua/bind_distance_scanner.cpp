@@ -76,19 +76,16 @@ void Fill(lua_State* L, int scanner, const char* key, int array_ref, int pool_re
   lua_setfield(L, scanner, key);  // put back, should the controller have replaced it
   lua_rawgeti(L, LUA_REGISTRYINDEX, pool_ref);
   const int pool = lua_gettop(L);
+  lua_pushliteral(L, "angle");
+  lua_pushliteral(L, "distance");
+  const int k_angle = pool + 1, k_distance = pool + 2;
   for (int i = 0; i < count; ++i) {
     lua_rawgeti(L, pool, i + 1);
-    lua_pushnumber(L, readings[i].angle);
-    lua_setfield(L, -2, "angle");
-    lua_pushnumber(L, readings[i].distance);
-    lua_setfield(L, -2, "distance");
+    RawSetNumber(L, k_angle, readings[i].angle);
+    RawSetNumber(L, k_distance, readings[i].distance);
     lua_rawseti(L, array, i + 1);
   }
-  for (int i = count; i < *shown; ++i) {
-    lua_pushnil(L);
-    lua_rawseti(L, array, i + 1);
-  }
-  *shown = count;
+  ClearStaleTail(L, array, count, shown);
   lua_settop(L, array - 1);
 }
 }  // namespace

@@ -21,23 +21,11 @@ void Create(lua_State* L, int t, const double (&offsets)[N][2]) {
   }
 }
 
-void Push(lua_State* L, int ref, const double* values, int n) {
-  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-  const int t = lua_gettop(L);
-  for (int i = 0; i < n; ++i) {
-    if (lua_rawgeti(L, t, i + 1) == LUA_TTABLE) {
-      lua_pushnumber(L, values[i]);
-      lua_setfield(L, -2, "value");
-    }
-    lua_pop(L, 1);
-  }
-  lua_pop(L, 1);
-}
 }  // namespace
 
 void CreateBaseGroundSensor(lua_State* L, int t) { Create(L, t, kBaseGroundOffsets); }
 void CreateMotorGroundSensor(lua_State* L, int t) { Create(L, t, kMotorGroundOffsets); }
-void PushBaseGround(lua_State* L, int ref, const Readings& rd) { Push(L, ref, rd.base_ground, kBaseGroundCount); }
-void PushMotorGround(lua_State* L, int ref, const Readings& rd) { Push(L, ref, rd.motor_ground, kMotorGroundCount); }
+void PushBaseGround(lua_State* L, int ref, const Readings& rd) { PushValuesInPlace(L, ref, rd.base_ground, kBaseGroundCount); }
+void PushMotorGround(lua_State* L, int ref, const Readings& rd) { PushValuesInPlace(L, ref, rd.motor_ground, kMotorGroundCount); }
 
 }  // namespace essaim

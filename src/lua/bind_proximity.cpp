@@ -20,18 +20,7 @@ void CreateRingSensor(lua_State* L, int t) {
 }
 
 void PushRingSensor(lua_State* L, int ref, const double* values) {
-  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-  const int t = lua_gettop(L);
-  for (int k = 0; k < kRingSensorCount; ++k) {
-    // Raw access: controllers may hang metatables on these tables. An entry the
-    // controller replaced by a non-table is left alone.
-    if (lua_rawgeti(L, t, k + 1) == LUA_TTABLE) {
-      lua_pushnumber(L, values[k]);
-      lua_setfield(L, -2, "value");
-    }
-    lua_pop(L, 1);
-  }
-  lua_pop(L, 1);
+  PushValuesInPlace(L, ref, values, kRingSensorCount);
 }
 
 void CreateProximitySensor(lua_State* L, int t) { CreateRingSensor(L, t); }

@@ -70,15 +70,9 @@ void PushRab(lua_State* L, int ref, const Readings& rd, int* count) {
   for (int i = 0; i < n; ++i) {
     const RabPacket& p = rd.rab[static_cast<size_t>(i)];
     lua_createtable(L, 0, 4);
-    lua_pushvalue(L, k_range);
-    lua_pushnumber(L, p.range);
-    lua_rawset(L, -3);
-    lua_pushvalue(L, k_hb);
-    lua_pushnumber(L, p.horizontal_bearing);
-    lua_rawset(L, -3);
-    lua_pushvalue(L, k_vb);
-    lua_pushnumber(L, p.vertical_bearing);
-    lua_rawset(L, -3);
+    RawSetNumber(L, k_range, p.range);
+    RawSetNumber(L, k_hb, p.horizontal_bearing);
+    RawSetNumber(L, k_vb, p.vertical_bearing);
     lua_pushvalue(L, k_data);
     lua_createtable(L, p.size, 0);
     for (int k = 0; k < p.size; ++k) {
@@ -88,11 +82,7 @@ void PushRab(lua_State* L, int ref, const Readings& rd, int* count) {
     lua_rawset(L, -3);
     lua_rawseti(L, t, i + 1);
   }
-  for (int i = n; i < *count; ++i) {
-    lua_pushnil(L);
-    lua_rawseti(L, t, i + 1);
-  }
-  *count = n;
+  ClearStaleTail(L, t, n, count);
   lua_settop(L, t - 1);
 }
 

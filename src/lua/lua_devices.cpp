@@ -11,6 +11,38 @@ void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotSta
   lua_setfield(L, t, name);
 }
 
+void PushValuesInPlace(lua_State* L, int ref, const double* values, int n) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  const int t = lua_gettop(L);
+  lua_pushliteral(L, "value");
+  const int key = t + 1;
+  for (int i = 0; i < n; ++i) {
+    if (lua_rawgeti(L, t, i + 1) == LUA_TTABLE) RawSetNumber(L, key, values[i]);
+    lua_pop(L, 1);
+  }
+  lua_settop(L, t - 1);
+}
+
+void RawSetNumber(lua_State* L, int key, double v) {
+  lua_pushvalue(L, key);
+  lua_pushnumber(L, v);
+  lua_rawset(L, -3);
+}
+
+void RawSetInteger(lua_State* L, int key, lua_Integer v) {
+  lua_pushvalue(L, key);
+  lua_pushinteger(L, v);
+  lua_rawset(L, -3);
+}
+
+void ClearStaleTail(lua_State* L, int array, int count, int* shown) {
+  for (int i = count; i < *shown; ++i) {
+    lua_pushnil(L);
+    lua_rawseti(L, array, i + 1);
+  }
+  *shown = count;
+}
+
 int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref) {
   robot_index = lua_absindex(L, robot_index);
   if (lua_getfield(L, robot_index, key) != LUA_TTABLE) {

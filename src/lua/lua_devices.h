@@ -20,6 +20,17 @@ void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& 
 
 /// Gets (creating if needed) robot[key] as a table, leaves it on the stack, returns a ref.
 int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref);
+/// robot.<device>[i].value = values[i] for i in 1..n, in place: the inner tables persist
+/// (controllers keep references to them); an entry a controller replaced by a non-table is
+/// left alone. Raw sets, the key interned once per call.
+void PushValuesInPlace(lua_State* L, int ref, const double* values, int n);
+/// With the table at the top of the stack: t[key] = v, where `key` is a stack index
+/// holding the key string (pushed once per call instead of interned per field).
+void RawSetNumber(lua_State* L, int key, double v);
+void RawSetInteger(lua_State* L, int key, lua_Integer v);
+/// Sets array[count+1 .. *shown] to nil (entries left from a longer previous reading) and
+/// records `count` as the new length.
+void ClearStaleTail(lua_State* L, int array, int count, int* shown);
 /// Pushes the RobotState* upvalue closure into table at `t`.
 void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot);
 RobotState* UpvalueRobot(lua_State* L);
