@@ -14,16 +14,27 @@ namespace essaim {
 
 void OpenLibraries(lua_State* L, bool sandbox);  // lua_state.cpp
 
+// Registry keys by address: every handle call reaches its context without interning a
+// name (the foraging rules make a few per robot per tick).
+const char kSelfKey = 0, kHandleMetaKey = 0;
+
 struct LoopFunctionsAccess {
   static LoopFunctions* Self(lua_State* L) {
-    lua_getfield(L, LUA_REGISTRYINDEX, "essaim.loop");
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &kSelfKey);
     auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
     lua_pop(L, 1);
     return lf;
   }
   static int RobotIndex(lua_State* L) {
-    int* p = static_cast<int*>(luaL_checkudata(L, 1, "essaim.robot_handle"));
-    return *p;
+    void* p = lua_touserdata(L, 1);
+    bool ok = p && lua_getmetatable(L, 1);
+    if (ok) {
+      lua_rawgetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
+      ok = lua_rawequal(L, -1, -2);
+      lua_pop(L, 2);
+    }
+    if (!ok) luaL_typeerror(L, 1, "robot handle");
+    return *static_cast<int*>(p);
   }
   static int Position(lua_State* L) {
     LoopFunctions* lf = Self(L);
@@ -90,8 +101,9 @@ struct LoopFunctionsAccess {
     const char* k = luaL_checkstring(L, 2);
     if (!std::strcmp(k, "id")) return lua_pushstring(L, lf->model_->robots[i].id.c_str()), 1;
     if (!std::strcmp(k, "index")) return lua_pushinteger(L, i + 1), 1;
-    luaL_getmetatable(L, "essaim.robot_handle");
-    lua_getfield(L, -1, k);
+    lua_getmetatable(L, 1);
+    lua_pushvalue(L, 2);
+    lua_rawget(L, -2);
     return 1;
   }
   static int Timeseries(lua_State* L) {
@@ -243,7 +255,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_State* L = L_;
   OpenLibraries(L, false);
   lua_pushlightuserdata(L, this);
-  lua_setfield(L, LUA_REGISTRYINDEX, "essaim.loop");
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &kSelfKey);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   OpenMathTypes(L);
@@ -269,11 +281,11 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
       {"set_battery", LoopFunctionsAccess::SetBattery}, {"alive", LoopFunctionsAccess::Alive},
       {"kill", LoopFunctionsAccess::Kill},         {"led", LoopFunctionsAccess::Led},
       {"controller_ok", LoopFunctionsAccess::ControllerOk}, {nullptr, nullptr}};
-  luaL_newmetatable(L, "essaim.robot_handle");
+  lua_newtable(L);  // the robot-handle metatable
   luaL_setfuncs(L, handle_methods, 0);
   lua_pushcfunction(L, LoopFunctionsAccess::HandleIndex);
   lua_setfield(L, -2, "__index");
-  lua_pop(L, 1);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
 
   lua_newtable(L);  // experiment
   lua_pushinteger(L, 0);
@@ -303,7 +315,8 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_createtable(L, static_cast<int>(robots->size()), 0);
   for (size_t i = 0; i < robots->size(); ++i) {
     *static_cast<int*>(lua_newuserdatauv(L, sizeof(int), 0)) = static_cast<int>(i);
-    luaL_setmetatable(L, "essaim.robot_handle");
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
+    lua_setmetatable(L, -2);
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
   }
   lua_setfield(L, -2, "robots");

@@ -90,8 +90,9 @@ struct HookBudget {
   long long used = 0;
 };
 constexpr int kHookEvery = 1000;
+const char kBudgetKey = 0;  // registry key by address: the hook runs every 1000 instructions
 void InstructionHook(lua_State* L, lua_Debug*) {
-  lua_getfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+  lua_rawgetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
   auto* b = static_cast<HookBudget*>(lua_touserdata(L, -1));
   lua_pop(L, 1);
   if (b && (b->used += kHookEvery) > b->limit) luaL_error(L, "instruction limit exceeded (%I per call)", static_cast<lua_Integer>(b->limit));
@@ -145,7 +146,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     instruction_limit_ = options.instruction_limit;
     auto* b = static_cast<HookBudget*>(lua_newuserdatauv(L, sizeof(HookBudget), 0));
     *b = HookBudget{options.instruction_limit, 0};
-    lua_setfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+    lua_rawsetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
     lua_sethook(L, InstructionHook, LUA_MASKCOUNT, kHookEvery);
   }
   for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
@@ -216,7 +217,7 @@ bool LuaController::Call(const char* fn, bool required, std::string* error) {
     return false;
   }
   if (instruction_limit_ > 0) {
-    lua_getfield(L, LUA_REGISTRYINDEX, "essaim.budget");
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
     static_cast<HookBudget*>(lua_touserdata(L, -1))->used = 0;
     lua_pop(L, 1);
   }
