@@ -189,3 +189,51 @@ TEST(Loader, SameSeedSamePlacementDifferentSeedDiffers) {
 
 }  // namespace
 }  // namespace essaim
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+TEST(Loader, ReportsReferenceAndEntityErrors) {
+  TempDir d;
+  d.Write("c.lua", "");
+  std::string ctrl =
+      "<lua_controller id=\"c\"><actuators/><sensors>"
+      "<footbot_base_ground implementation=\"rot_z_only\"/>"
+      "<range_and_bearing implementation=\"medium\" medium=\"radio\"/>"
+      "</sensors><params script=\"c.lua\"/></lua_controller>";
+  std::string arena =
+      "<foot-bot id=\"a\"><controller config=\"nope\"/></foot-bot>"
+      "<foot-bot id=\"a\"><controller config=\"c\"/><battery discharge_model=\"solar\"/></foot-bot>";
+  std::string xml = Experiment(arena, ctrl);
+  size_t p = xml.find("<dynamics2d");
+  xml.insert(p, "<pointmass3d id=\"pm\"/>");
+  ErrorList e;
+  auto m = LoadExperimentFile(d.Write("x.argos", xml), {}, &e);
+  EXPECT_FALSE(m);
+  std::string all = e.Format();
+  EXPECT_NE(all.find("<pointmass3d>: unsupported physics engine"), std::string::npos) << all;
+  EXPECT_NE(all.find("<foot-bot>: duplicate id 'a'"), std::string::npos) << all;
+  EXPECT_NE(all.find("<battery>: discharge_model must be time, motion or time_motion"), std::string::npos) << all;
+  EXPECT_NE(all.find("<controller>: no controller with id 'nope'"), std::string::npos) << all;
+  EXPECT_NE(all.find("medium 'radio' is not declared in <media>"), std::string::npos) << all;
+  EXPECT_NE(all.find("ground sensors need a <floor>"), std::string::npos) << all;
+}
+
+TEST(Loader, MissingFloorImageAndExhaustedGridAreErrors) {
+  TempDir d;
+  d.Write("c.lua", "");
+  std::string arena =
+      "<floor id=\"f\" source=\"image\" path=\"nowhere.png\"/>"
+      "<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"2,1,1\"/>"
+      "<orientation method=\"constant\" values=\"0,0,0\"/>"
+      "<entity quantity=\"3\" max_trials=\"5\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  ErrorList e;
+  EXPECT_FALSE(LoadExperimentFile(d.Write("x.argos", Experiment(arena, kCtrl)), {}, &e));
+  std::string all = e.Format();
+  EXPECT_NE(all.find("<floor>: floor image 'nowhere.png' not found"), std::string::npos) << all;
+  EXPECT_NE(all.find("grid exhausted"), std::string::npos) << all;
+}
+
+}  // namespace
+}  // namespace essaim

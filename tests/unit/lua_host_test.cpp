@@ -255,3 +255,66 @@ end
 
 }  // namespace
 }  // namespace essaim
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+// A loop-functions script `body` run with one robot; returns the run's failure text.
+std::string LoopFailure(const std::string& body, const std::string& floor = "") {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  d.Write("loop.lua", body);
+  Scene s = Load(d, Experiment(floor + FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua"), 100, 1,
+                              "<loop_functions script=\"loop.lua\"/>"));
+  if (!s.ok()) return s.error;
+  for (int i = 0; i < 5; ++i)
+    if (Step(*s.world) == StepStatus::Failed) return s.world->failure;
+  return "";
+}
+
+TEST(LoopFunctions, ErrorsNameTheHookAndTheLine) {
+  std::string f = LoopFailure("function post_step()\n  error('rule broken')\nend\n");
+  EXPECT_NE(f.find("loop functions (post_step): "), std::string::npos) << f;
+  EXPECT_NE(f.find("loop.lua:2: rule broken"), std::string::npos) << f;
+}
+
+TEST(LoopFunctions, HandleMisuseIsALuaError) {
+  std::string f = LoopFailure("function pre_step() experiment.robots[1].position(42) end");
+  EXPECT_NE(f.find("robot handle expected"), std::string::npos) << f;
+  f = LoopFailure("function pre_step() experiment.robots[1]:set_battery(2) end");
+  EXPECT_NE(f.find("set_battery: charge must be in [0, 1]"), std::string::npos) << f;
+  f = LoopFailure("function pre_step() experiment.robots[1]:led(14) end");
+  EXPECT_NE(f.find("led index must be 1..13"), std::string::npos) << f;
+}
+
+TEST(LoopFunctions, TimeseriesColumnsMustStayTheSame) {
+  std::string f = LoopFailure(
+      "function post_step()\n"
+      "  if experiment.tick == 1 then experiment.timeseries({{'tick', 1}, {'a', 2}})\n"
+      "  else experiment.timeseries({{'tick', 2}, {'b', 3}}) end\n"
+      "end\n");
+  EXPECT_NE(f.find("timeseries: column 2 is 'b', expected 'a'"), std::string::npos) << f;
+}
+
+TEST(LoopFunctions, FloorColorMustReturnAColour) {
+  const std::string floor = "<floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"2\"/>";
+  std::string f = LoopFailure("function floor_color(x, y) return 'plaid' end", floor);
+  EXPECT_NE(f.find("floor_color(x, y) must return r, g, b (0-255) or a colour name"), std::string::npos) << f;
+  f = LoopFailure("function init() end", floor);
+  EXPECT_NE(f.find("define no floor_color(x, y)"), std::string::npos) << f;
+}
+
+TEST(LuaHost, AScriptWithoutStepIsAControllerError) {
+  TempDir d;
+  d.Write("c.lua", "function init() end");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  Step(*s.world);
+  ASSERT_EQ(s.world->controller_errors.size(), 1u);
+  EXPECT_NE(s.world->controller_errors[0].message.find("no global function 'step'"), std::string::npos)
+      << s.world->controller_errors[0].message;
+}
+
+}  // namespace
+}  // namespace essaim
