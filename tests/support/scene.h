@@ -67,6 +67,16 @@ inline std::string FootBot(const std::string& id, double x, double y, double yaw
   return buf;
 }
 
+/// A static box of size sx × sy × h (m) with its base centred at (x, y).
+inline std::string Box(const std::string& id, double x, double y, double sx, double sy, double h) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "<box id=\"%s\" size=\"%.9g,%.9g,%.9g\" movable=\"false\"><body position=\"%.9g,%.9g,0\" "
+                "orientation=\"0,0,0\"/></box>",
+                id.c_str(), sx, sy, h, x, y);
+  return buf;
+}
+
 struct Scene {
   std::unique_ptr<Model> model;
   std::unique_ptr<World> world;

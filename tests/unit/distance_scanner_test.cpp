@@ -21,15 +21,6 @@ std::string Controller(const std::string& script, bool actuator = true) {
          "noise_range=\"-1:1\"/></sensors><params script=\"" + script + "\"/></lua_controller>";
 }
 
-std::string Box(const std::string& id, double x, double y, double sx, double sy, double h) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<box id=\"%s\" size=\"%.9g,%.9g,%.9g\" movable=\"false\"><body position=\"%.9g,%.9g,0\" "
-                "orientation=\"0,0,0\"/></box>",
-                id.c_str(), sx, sy, h, x, y);
-  return buf;
-}
-
 /// Front wall 10 cm from the body, left wall 5 cm (inside the long range's 12 cm), right
 /// wall 50 cm; nothing behind.
 std::string Walls() {

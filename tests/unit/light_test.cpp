@@ -25,15 +25,6 @@ std::string LightXml(int i, const Light& l) {
   return buf;
 }
 
-std::string Box(const std::string& id, double x, double y, double sx, double sy, double h) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<box id=\"%s\" size=\"%.9g,%.9g,%.9g\" movable=\"false\"><body position=\"%.9g,%.9g,0\" "
-                "orientation=\"0,0,0\"/></box>",
-                id.c_str(), sx, sy, h, x, y);
-  return buf;
-}
-
 std::string Xml(const std::string& arena, const std::string& noise = "0") {
   return "<argos-configuration>\n"
          "  <framework><experiment length=\"1\" ticks_per_second=\"10\" random_seed=\"3\"/></framework>\n"

@@ -19,15 +19,6 @@ std::string Controller(const std::string& script, const std::string& prox_attrs 
          "/></sensors><params script=\"" + script + "\"/></lua_controller>";
 }
 
-std::string Box(const std::string& id, double x, double y, double sx, double sy, double h) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<box id=\"%s\" size=\"%.9g,%.9g,%.9g\" movable=\"false\"><body position=\"%.9g,%.9g,0\" "
-                "orientation=\"0,0,0\"/></box>",
-                id.c_str(), sx, sy, h, x, y);
-  return buf;
-}
-
 /// Distance along the ray of sensor angle `a` (robot at the origin, yaw 0) to the plane x = X.
 double ToPlaneX(double a, double X) { return X / std::cos(a) - kR; }
 
