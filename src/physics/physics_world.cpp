@@ -225,6 +225,15 @@ Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {
 void PhysicsWorld::FreezeRobot(int robot) { SetWheelSpeeds(robot, 0, 0); }
 
 namespace {
+/// Whether a query at height z can touch this shape: any robot but the excluded one below
+/// the foot-bot's height, any obstacle whose vertical extent contains z.
+bool ReachesHeight(BodyKind kind, int index, double z, int exclude_robot, const std::vector<double>& tops,
+                   const std::vector<double>& bottoms) {
+  if (kind == BodyKind::Robot) return index != exclude_robot && z >= 0 && z <= footbot::kHeight;
+  if (kind == BodyKind::Obstacle) return z >= bottoms[index] && z <= tops[index];
+  return false;
+}
+
 class ClosestRay : public b2RayCastCallback {
  public:
   ClosestRay(const std::vector<double>& tops, const std::vector<double>& bottoms, double z, int exclude)
@@ -233,13 +242,7 @@ class ClosestRay : public b2RayCastCallback {
     uintptr_t tag = f->GetUserData().pointer;
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
-    if (kind == BodyKind::Robot) {
-      if (index == exclude_ || z_ > footbot::kHeight || z_ < 0) return -1;
-    } else if (kind == BodyKind::Obstacle) {
-      if (z_ > tops_[index] || z_ < bottoms_[index]) return -1;
-    } else {
-      return -1;
-    }
+    if (!ReachesHeight(kind, index, z_, exclude_, tops_, bottoms_)) return -1;
     hit.kind = kind;
     hit.index = index;
     hit.point = {point.x, point.y};
@@ -327,13 +330,7 @@ class AnyNear : public b2QueryCallback {
     uintptr_t tag = f->GetUserData().pointer;
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
-    if (kind == BodyKind::Robot) {
-      if (index == exclude_ || z_ > footbot::kHeight || z_ < 0) return true;
-    } else if (kind == BodyKind::Obstacle) {
-      if (z_ > tops_[index] || z_ < bottoms_[index]) return true;
-    } else {
-      return true;
-    }
+    if (!ReachesHeight(kind, index, z_, exclude_, tops_, bottoms_)) return true;
     // The tree reports fattened boxes (+0.1 m); test the fixture's own box.
     if (!b2TestOverlap(f->GetAABB(0), box_)) return true;
     found = true;
