@@ -3,10 +3,14 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <CLI/CLI.hpp>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 
+#include "app/cli_support.h"
 #include "app/commands.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "model/xml_loader.h"
 #include "sim/step.h"
@@ -42,29 +46,20 @@ double PeakRssMb() {
 }
 }  // namespace
 
-int BenchCommand(const std::vector<std::string>& args) {
+struct BenchArgs {
   std::string dir = ESSAIM_SOURCE_DIR "/bench";
   long long ticks = 200;
+  bool quick = false;
   std::vector<int> thread_counts = {1};
   std::vector<std::string> only;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--quick") {
-      ticks = 50;
-    } else if (args[i] == "--dir" && i + 1 < args.size()) {
-      dir = args[++i];
-    } else if (args[i] == "--ticks" && i + 1 < args.size()) {
-      ticks = ParseInt(args[++i]).value_or(200);
-    } else if (args[i] == "--threads" && i + 1 < args.size()) {
-      thread_counts.clear();
-      for (const std::string& t : Split(args[++i], ','))
-        if (auto n = ParseInt(t); n && *n > 0) thread_counts.push_back(static_cast<int>(*n));
-    } else if (args[i] == "--only" && i + 1 < args.size()) {
-      only = Split(args[++i], ',');
-    } else {
-      std::fprintf(stderr, "essaim bench: unknown option %s\n", args[i].c_str());
-      return kExitBadInput;
-    }
-  }
+};
+
+static int Bench(BenchArgs a) {
+  if (a.quick) a.ticks = 50;
+  const std::string& dir = a.dir;
+  long long ticks = a.ticks;
+  const std::vector<int>& thread_counts = a.thread_counts;
+  const std::vector<std::string>& only = a.only;
   // wall/lua: whole run time over the time inside the controllers' step() (issue 7's
   // overhead ratio). Stage shares: sense and control are summed over threads.
   std::printf("%-18s %6s %3s %8s %11s %9s %8s  %5s %5s %5s %5s %5s %5s %8s %7s\n", "scenario", "robots", "thr",
@@ -109,6 +104,30 @@ int BenchCommand(const std::vector<std::string>& args) {
     }
   }
   return kExitOk;
+}
+
+CommandMain AddBenchCommand(CLI::App& app) {
+  auto a = std::make_shared<BenchArgs>();
+  CLI::App* sub = app.add_subcommand("bench", "print robot-steps per second on fixed scenarios");
+  sub->add_flag("--quick", a->quick, "50 ticks per scenario instead of --ticks");
+  sub->add_option("--ticks", a->ticks, "ticks per scenario")
+      ->type_name("N")
+      ->check(IntegerIn(1, 1000000000))
+      ->capture_default_str();
+  sub->add_option("--threads", a->thread_counts, "thread counts to measure, comma-separated")
+      ->type_name("N,...")
+      ->delimiter(',')
+      ->check(IntegerIn(1, 1024))
+      ->default_str("1");
+  std::vector<std::string> names;
+  for (const Scenario& s : kScenarios) names.push_back(s.name);
+  sub->add_option("--only", a->only, "scenarios to run, comma-separated (default all)")
+      ->type_name("NAME,...")
+      ->delimiter(',')
+      ->check(CLI::IsMember(names));
+  sub->add_option("--dir", a->dir, "the folder holding the scenario files")->type_name("DIR")->capture_default_str();
+  sub->footer("Example:\n  essaim bench --only avoidance-1000,rab-1000 --threads 1,2");
+  return [a] { return Bench(*a); };
 }
 
 }  // namespace essaim

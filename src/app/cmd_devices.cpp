@@ -1,4 +1,5 @@
 // `essaim devices`: the device table, as the loader and the Lua host use it.
+#include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "app/commands.h"
@@ -6,7 +7,8 @@
 
 namespace essaim {
 
-int DevicesCommand(const std::vector<std::string>&) {
+namespace {
+int Devices() {
   for (int sensors = 0; sensors < 2; ++sensors) {
     std::printf("%s (inside <%s>)\n", sensors ? "SENSORS" : "ACTUATORS", sensors ? "sensors" : "actuators");
     for (const DeviceRow& row : DeviceTable()) {
@@ -21,6 +23,13 @@ int DevicesCommand(const std::vector<std::string>&) {
     std::printf("\n");
   }
   return 0;
+}
+}  // namespace
+
+CommandMain AddDevicesCommand(CLI::App& app) {
+  app.add_subcommand("devices", "list supported sensors and actuators, their XML attributes and Lua tables")
+      ->footer("Example:\n  essaim devices | less");
+  return Devices;
 }
 
 }  // namespace essaim

@@ -1,11 +1,13 @@
 // `essaim replay RUN_DIR`: the run's recording in one self-contained HTML page
 // (docs/replay.md). The page is src/app/replay_template.html, embedded at build time; the
 // recording goes in as base64 and is decoded by the page itself.
-#include <sys/stat.h>
-
+#include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
 
 #include "app/commands.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -44,8 +46,8 @@ std::string Base64(const std::string& in) {
 }
 
 bool IsDirectory(const std::string& path) {
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+  std::error_code ec;
+  return std::filesystem::is_directory(path, ec);
 }
 
 }  // namespace
@@ -62,30 +64,7 @@ static std::string ReplayHtml(const Recording& rec) {
   return page;
 }
 
-int ReplayCommand(const std::vector<std::string>& args) {
-  std::string run, out;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--out") {
-      if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "essaim replay: %s needs a value\n", a.c_str());
-        return kExitBadInput;
-      }
-      out = args[++i];
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "essaim replay: unknown option %s\n", a.c_str());
-      return kExitBadInput;
-    } else if (run.empty()) {
-      run = a;
-    } else {
-      std::fprintf(stderr, "essaim replay: unexpected argument %s\n", a.c_str());
-      return kExitBadInput;
-    }
-  }
-  if (run.empty()) {
-    std::fprintf(stderr, "essaim replay: missing the run folder (usage: essaim replay RUN_DIR [-o FILE.html])\n");
-    return kExitBadInput;
-  }
+static int Replay(const std::string& run, std::string out) {
   std::string path = RecordingPathOf(run), error;
   if (!FileExists(path)) {
     std::fprintf(stderr, "essaim replay: no recording at %s: run the experiment with --record\n", path.c_str());
@@ -103,6 +82,18 @@ int ReplayCommand(const std::vector<std::string>& args) {
   }
   std::printf("%s\n", out.c_str());
   return kExitOk;
+}
+
+CommandMain AddReplayCommand(CLI::App& app) {
+  struct Args {
+    std::string run, out;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand("replay", "write a self-contained replay page (HTML) of a recorded run");
+  sub->add_option("RUN_DIR", a->run, "a run folder (or its recording.bin), from essaim run --record")->required();
+  sub->add_option("-o,--out", a->out, "the page to write (default RUN_DIR/replay.html)")->type_name("FILE.html");
+  sub->footer("Example:\n  essaim run arenas/foraging.argos --record --out runs/f && essaim replay runs/f");
+  return [a] { return Replay(a->run, a->out); };
 }
 
 }  // namespace essaim

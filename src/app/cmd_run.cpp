@@ -5,8 +5,14 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <limits>
+#include <memory>
+#include <optional>
 
+#include "app/cli_support.h"
 #include "app/commands.h"
+#include "app/set_file.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
@@ -20,81 +26,62 @@ namespace {
 std::atomic<bool> g_interrupted{false};
 void OnSigint(int) { g_interrupted = true; }
 
+constexpr long long kMaxTicks = 1000000000000LL;  // ~3 years at 10 ticks/s
+constexpr long long kMaxThreads = 1024;
+
 struct RunArgs {
   std::string file;
   std::string out;
+  std::string set_file;
+  std::optional<long long> ticks, seed, threads;
+  std::string record;  // --record's value: "" or every=N
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
 };
 
-bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string* error) {
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* out) {
-      size_t eq = a.find('=');
-      if (eq != std::string::npos && a.rfind("--", 0) == 0 && a.compare(0, eq, "--set") != 0) {
-        *out = a.substr(eq + 1);
-        return true;
-      }
-      if (i + 1 >= args.size()) {
-        *error = a + " needs a value";
-        return false;
-      }
-      *out = args[++i];
-      return true;
-    };
-    auto key = a.substr(0, a.find('='));
-    std::string v;
-    if (key == "--ticks" || key == "--seed" || key == "--threads") {
-      if (!value(&v)) return false;
-      auto n = ParseInt(v);
-      if (!n || *n < 0 || (key == "--threads" && *n > 1024)) {
-        *error = key + ": '" + v + "' must be a non-negative integer";
-        return false;
-      }
-      if (key == "--ticks") r->load.ticks = *n;
-      else if (key == "--seed") r->load.seed = *n;
-      else r->load.threads = static_cast<int>(*n);
-    } else if (a == "--set") {
-      if (!value(&v)) return false;
-      r->load.overrides.push_back(v);
-    } else if (key == "--out" || key == "-o") {
-      if (!value(&r->out)) return false;
-    } else if (a == "--quiet" || a == "-q") {
-      r->quiet = true;
-    } else if (a == "--strict") {
-      r->strict = true;
-    } else if (a == "--sandbox") {
-      r->sandbox = true;
-    } else if (key == "--record") {
-      // --record, --record every=N, --record=every=N
-      if (a.size() > key.size()) v = a.substr(key.size() + 1);
-      else if (i + 1 < args.size() && args[i + 1].rfind("every=", 0) == 0) v = args[++i];
-      r->record_every = 1;
-      if (!v.empty()) {
-        auto n = v.rfind("every=", 0) == 0 ? ParseInt(v.substr(6)) : std::nullopt;
-        if (!n || *n < 1 || *n > 1000000) {
-          *error = "--record: '" + v + "' must be every=N with N a positive integer";
-          return false;
-        }
-        r->record_every = static_cast<uint32_t>(*n);
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      *error = "unknown option " + a;
-      return false;
-    } else if (r->file.empty()) {
-      r->file = a;
-    } else {
-      *error = "unexpected argument " + a;
-      return false;
-    }
-  }
-  if (r->file.empty()) {
-    *error = "missing the experiment file (.argos)";
-    return false;
-  }
+// The options run and check share: the file and what overrides its XML.
+void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
+  sub->add_option("FILE.argos", r->file, "the ARGoS experiment file")->required();
+  sub->add_option("--ticks", r->ticks, "run exactly N ticks, N >= 1 (overrides the experiment length)")
+      ->type_name("N")
+      ->check(IntegerIn(1, kMaxTicks, "0 would mean no limit; for that set framework.experiment.length=0"));
+  sub->add_option("--seed", r->seed, "random seed, >= 0 (overrides random_seed)")
+      ->type_name("S")
+      ->check(IntegerIn(0, std::numeric_limits<long long>::max()));
+  sub->add_option("--threads", r->threads, "threads for sense + control, 1 to 1024 (overrides <system threads>)")
+      ->type_name("N")
+      ->check(IntegerIn(1, kMaxThreads, "1 runs everything on the main thread"));
+  sub->add_option("--set", r->load.overrides, "override an XML attribute (repeatable), e.g. controllers.ctrl.params.speed=20")
+      ->type_name("PATH=VALUE")
+      ->allow_extra_args(false);
+  sub->add_option("--set-file", r->set_file,
+                  "a JSON object {\"PATH\": value, ...} of overrides, applied before the --set ones")
+      ->type_name("FILE.json");
+}
+
+// --set-file's entries first, so a --set on the command line wins over the file.
+bool ApplyOptions(RunArgs* r, std::string* error) {
+  if (r->ticks) r->load.ticks = static_cast<uint64_t>(*r->ticks);
+  if (r->seed) r->load.seed = static_cast<uint64_t>(*r->seed);
+  if (r->threads) r->load.threads = static_cast<int>(*r->threads);
+  if (r->set_file.empty()) return true;
+  std::vector<std::string> from_file;
+  if (!ReadOverridesFile(r->set_file, &from_file, error)) return false;
+  r->load.overrides.insert(r->load.overrides.begin(), from_file.begin(), from_file.end());
   return true;
+}
+
+// --record's value: every=N, N from 1 to 1000000. A bare word (a file name after --record)
+// is refused rather than taken as the value.
+CLI::Validator RecordEvery() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        auto n = v.rfind("every=", 0) == 0 ? ParseInt(v.substr(6)) : std::nullopt;
+        if (v.empty() || (n && *n >= 1 && *n <= 1000000)) return "";
+        return "'" + v + "' must be every=N with N from 1 to 1000000 (or give --record alone)";
+      },
+      "");
 }
 
 std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
@@ -117,10 +104,9 @@ std::string DefaultOutDir(const Model& m) {
 }
 }  // namespace
 
-int CheckCommand(const std::vector<std::string>& args) {
-  RunArgs r;
+int Check(RunArgs& r) {
   std::string error;
-  if (!ParseRunArgs(args, &r, &error)) {
+  if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim check: %s\n", error.c_str());
     return kExitBadInput;
   }
@@ -140,10 +126,9 @@ int CheckCommand(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-int RunCommand(const std::vector<std::string>& args) {
-  RunArgs r;
+int Run(RunArgs& r) {
   std::string error;
-  if (!ParseRunArgs(args, &r, &error)) {
+  if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitBadInput;
   }
@@ -230,6 +215,34 @@ int RunCommand(const std::vector<std::string>& args) {
   if (status == StepStatus::Failed || info.status == "failed") return kExitRunFailed;
   if (r.strict && !world->controller_errors.empty()) return kExitRunFailed;
   return kExitOk;
+}
+
+CommandMain AddCheckCommand(CLI::App& app) {
+  auto r = std::make_shared<RunArgs>();
+  CLI::App* sub = app.add_subcommand("check", "validate an experiment and its scripts, list every error");
+  AddExperimentOptions(sub, r.get());
+  sub->footer("Example:\n  essaim check arenas/foraging.argos --set arena.distribute.entity.quantity=60");
+  return [r] { return Check(*r); };
+}
+
+CommandMain AddRunCommand(CLI::App& app) {
+  auto r = std::make_shared<RunArgs>();
+  CLI::App* sub = app.add_subcommand("run", "run an experiment");
+  AddExperimentOptions(sub, r.get());
+  sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
+  sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
+  sub->add_flag("--strict", r->strict, "the first controller error ends the run (exit 1)");
+  sub->add_flag("--sandbox", r->sandbox, "controllers without io/os, with memory and instruction caps");
+  sub->add_option("--record", r->record, "also write recording.bin: every tick, or --record=every=N")
+      ->type_name("[every=N]")
+      ->expected(0, 1)
+      ->check(RecordEvery());
+  sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 3000 --seed 7 --set controllers.ctrl.params.EPSILONGREED=0.3");
+  return [r, sub] {
+    r->record_every = 0;
+    if (sub->count("--record") > 0) r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
+    return Run(*r);
+  };
 }
 
 }  // namespace essaim

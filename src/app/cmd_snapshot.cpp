@@ -2,8 +2,12 @@
 // recorded run as a PNG (docs/replay.md), drawn by app/render_cairo.cpp.
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+
+#include "app/cli_support.h"
 
 #include "app/commands.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -22,69 +26,10 @@ struct SnapshotArgs {
   long long size = 1024;
 };
 
-bool ParseSnapshotArgs(const std::vector<std::string>& args, SnapshotArgs* s, std::string* error) {
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string a = args[i], v;
-    size_t eq = a.find('=');
-    bool inline_value = a.rfind("--", 0) == 0 && eq != std::string::npos;
-    if (inline_value) {
-      v = a.substr(eq + 1);
-      a = a.substr(0, eq);
-    }
-    auto value = [&]() {
-      if (inline_value) return true;
-      if (i + 1 >= args.size()) {
-        *error = a + " needs a value";
-        return false;
-      }
-      v = args[++i];
-      return true;
-    };
-    auto integer = [&](long long* out, long long min, long long max) {
-      if (!value()) return false;
-      auto n = ParseInt(v);
-      if (!n || *n < min || *n > max) {
-        *error = a + ": '" + v + "' must be an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-        return false;
-      }
-      *out = *n;
-      return true;
-    };
-    if (a == "--tick" || a == "-t") {
-      if (!integer(&s->tick, 0, 0xFFFFFFFFll)) return false;
-    } else if (a == "--trail") {
-      if (!integer(&s->trail, 0, 0xFFFFFFFFll)) return false;
-    } else if (a == "--size") {
-      if (!integer(&s->size, 16, 8192)) return false;
-    } else if (a == "-o" || a == "--out") {
-      if (!value()) return false;
-      s->out = v;
-    } else if (!a.empty() && a[0] == '-') {
-      *error = "unknown option " + a;
-      return false;
-    } else if (s->run.empty()) {
-      s->run = a;
-    } else {
-      *error = "unexpected argument " + a;
-      return false;
-    }
-  }
-  if (s->run.empty()) {
-    *error = "missing the run folder (usage: essaim snapshot RUN_DIR --tick T -o FILE.png [--trail N] [--size PX])";
-    return false;
-  }
-  return true;
-}
-
 }  // namespace
 
-int SnapshotCommand(const std::vector<std::string>& args) {
-  SnapshotArgs s;
+static int Snapshot(SnapshotArgs s) {
   std::string error;
-  if (!ParseSnapshotArgs(args, &s, &error)) {
-    std::fprintf(stderr, "essaim snapshot: %s\n", error.c_str());
-    return kExitBadInput;
-  }
 #ifndef ESSAIM_HAVE_CAIRO
   std::fprintf(stderr, "essaim snapshot: this essaim was built without Cairo (install libcairo2-dev and rebuild)\n");
   return kExitBadInput;
@@ -124,6 +69,26 @@ int SnapshotCommand(const std::vector<std::string>& args) {
   std::printf("%s\n", s.out.c_str());
   return kExitOk;
 #endif
+}
+
+CommandMain AddSnapshotCommand(CLI::App& app) {
+  auto s = std::make_shared<SnapshotArgs>();
+  CLI::App* sub = app.add_subcommand("snapshot", "draw one recorded tick as a PNG");
+  sub->add_option("RUN_DIR", s->run, "a run folder (or its recording.bin), from essaim run --record")->required();
+  sub->add_option("-t,--tick", s->tick, "the tick to draw, >= 0 (default: the last recorded)")
+      ->type_name("T")
+      ->check(IntegerIn(0, 0xFFFFFFFFll));
+  sub->add_option("-o,--out", s->out, "the PNG to write (default RUN_DIR/snapshot-<tick>.png)")->type_name("FILE.png");
+  sub->add_option("--trail", s->trail, "also draw each robot's path over the N ticks before")
+      ->type_name("N")
+      ->check(IntegerIn(0, 0xFFFFFFFFll))
+      ->capture_default_str();
+  sub->add_option("--size", s->size, "image width and height in pixels, 16 to 8192")
+      ->type_name("PX")
+      ->check(IntegerIn(16, 8192))
+      ->capture_default_str();
+  sub->footer("Example:\n  essaim snapshot runs/foraging-7 --tick 500 --trail 100 -o tick500.png");
+  return [s] { return Snapshot(*s); };
 }
 
 }  // namespace essaim

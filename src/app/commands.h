@@ -1,7 +1,12 @@
 // The CLI's subcommands; each returns the process exit code (docs/cli.md).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace essaim {
 
@@ -9,12 +14,15 @@ constexpr int kExitOk = 0;
 constexpr int kExitRunFailed = 1;
 constexpr int kExitBadInput = 2;
 
-int RunCommand(const std::vector<std::string>& args);
-int CheckCommand(const std::vector<std::string>& args);
-int DevicesCommand(const std::vector<std::string>& args);
-int BenchCommand(const std::vector<std::string>& args);
-int ReplayCommand(const std::vector<std::string>& args);
-int SnapshotCommand(const std::vector<std::string>& args);
+/// Each Add*Command declares one subcommand (its options, --help text and example) on the
+/// CLI11 app and returns what runs it once the command line has been parsed.
+using CommandMain = std::function<int()>;
+CommandMain AddRunCommand(CLI::App& app);
+CommandMain AddCheckCommand(CLI::App& app);
+CommandMain AddDevicesCommand(CLI::App& app);
+CommandMain AddBenchCommand(CLI::App& app);
+CommandMain AddReplayCommand(CLI::App& app);
+CommandMain AddSnapshotCommand(CLI::App& app);
 /// A run folder's recording.bin, or the path itself when it is not a folder (replay, snapshot).
 std::string RecordingPathOf(const std::string& run);
 

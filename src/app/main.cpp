@@ -1,55 +1,94 @@
 // essaim: a fast, headless swarm-robotics simulator for ARGoS foot-bot experiments.
+// The command line is CLI11 (docs/cli.md); each subcommand is declared in its cmd_*.cpp.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstring>
+#include <iostream>
+#include <map>
 #include <string>
-#include <vector>
 
+#include "app/cli_support.h"
 #include "app/commands.h"
 
 namespace {
-const char* kUsage =
-    "essaim " ESSAIM_VERSION " - headless swarm simulator for ARGoS foot-bot experiments\n"
-    "\n"
-    "usage:\n"
-    "  essaim run FILE.argos [options]   run an experiment\n"
-    "      --ticks N          run exactly N ticks (overrides the experiment length)\n"
-    "      --seed S           random seed (overrides random_seed)\n"
-    "      --threads N        threads for sense + control (overrides <system threads>)\n"
-    "      --out DIR          output folder (default runs/<name>-<seed>)\n"
-    "      --set PATH=VALUE   override an XML attribute, e.g. controllers.ctrl.params.speed=20\n"
-    "      --quiet            no progress line, no summary\n"
-    "      --strict           the first controller error ends the run (exit 1)\n"
-    "      --sandbox          controllers without io/os, with memory and instruction caps\n"
-    "      --record[=every=N] also write recording.bin (every tick, or every N ticks)\n"
-    "  essaim check FILE.argos [--set ...]   validate, list every error\n"
-    "  essaim devices                        list supported sensors and actuators\n"
-    "  essaim bench [--quick] [--ticks N]    print robot-steps per second on fixed scenarios\n"
-    "  essaim replay RUN_DIR [-o FILE]       write RUN_DIR/replay.html, a self-contained replay page\n"
-    "  essaim snapshot RUN_DIR --tick T -o FILE.png [--trail N] [--size PX]\n"
-    "                                        draw one recorded tick as a PNG\n"
-    "  essaim --version | --help\n"
-    "\n"
-    "exit codes: 0 ok, 1 run failed, 2 bad input (nothing run)\n";
+const char* kFooter =
+    "Run 'essaim help COMMAND' or 'essaim COMMAND --help' for a command's options.\n"
+    "Exit codes: 0 ok, 1 run failed, 2 bad input (nothing run), 130 interrupted.";
+
+std::vector<std::string> CommandNames(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    names.push_back(sub->get_name());
+  return names;
 }
+}  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::fputs(kUsage, args.empty() ? stderr : stdout);
-    return args.empty() ? essaim::kExitBadInput : essaim::kExitOk;
+  CLI::App app("essaim " ESSAIM_VERSION " - headless swarm simulator for ARGoS foot-bot experiments", "essaim");
+  app.set_version_flag("--version", "essaim " ESSAIM_VERSION);
+  app.footer(kFooter);
+  app.allow_extras();
+  app.require_subcommand(0, 1);  // `essaim help run`: "run" is help's topic, not a second command  // unknown commands and options are answered below, with suggestions
+  std::map<std::string, essaim::CommandMain> commands;
+  for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand,
+                   essaim::AddBenchCommand, essaim::AddReplayCommand, essaim::AddSnapshotCommand}) {
+    size_t before = app.get_subcommands([](const CLI::App*) { return true; }).size();
+    essaim::CommandMain fn = add(app);
+    CLI::App* sub = app.get_subcommands([](const CLI::App*) { return true; })[before];
+    sub->set_version_flag("--version", "essaim " ESSAIM_VERSION);
+    commands[sub->get_name()] = std::move(fn);
   }
-  if (args[0] == "--version") {
-    std::printf("essaim %s\n", ESSAIM_VERSION);
-    return 0;
+  // A prefix command: what follows `help` is a topic, never parsed as a subcommand.
+  CLI::App* help = app.add_subcommand("help", "print the help of essaim or of one command (essaim help run)");
+  help->prefix_command();
+
+  const std::string main_help = app.help();  // once a subcommand is parsed, help() describes it
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string prog = "essaim";
+    for (const CLI::App* sub : app.get_subcommands()) prog += " " + sub->get_name();
+    std::string what = e.what();
+    // CLI11 says "--seed: 1 required S missing" for an option given without its value.
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && what.find(" missing") != std::string::npos)
+      what = what.substr(0, what.find(':')) + " needs a value";
+    std::fprintf(stderr, "%s: %s\nsee '%s --help'\n", prog.c_str(), what.c_str(), prog.c_str());
+    return essaim::kExitBadInput;
   }
-  std::string cmd = args[0];
-  args.erase(args.begin());
-  if (cmd == "run") return essaim::RunCommand(args);
-  if (cmd == "check") return essaim::CheckCommand(args);
-  if (cmd == "devices") return essaim::DevicesCommand(args);
-  if (cmd == "bench") return essaim::BenchCommand(args);
-  if (cmd == "replay") return essaim::ReplayCommand(args);
-  if (cmd == "snapshot") return essaim::SnapshotCommand(args);
-  std::fprintf(stderr, "essaim: unknown command '%s'\n\n%s", cmd.c_str(), kUsage);
+  if (help->parsed()) {
+    std::vector<std::string> topic = help->remaining();
+    std::string help_topic = topic.empty() ? "" : topic[0];
+    if (help_topic.empty()) {
+      std::cout << main_help;
+      return essaim::kExitOk;
+    }
+    try {
+      std::cout << app.get_subcommand(help_topic)->help("essaim");
+      return essaim::kExitOk;
+    } catch (const CLI::OptionNotFound&) {
+      std::string hint = essaim::ClosestName(help_topic, CommandNames(app));
+      std::fprintf(stderr, "essaim help: unknown command '%s'%s\n", help_topic.c_str(),
+                   hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
+      return essaim::kExitBadInput;
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    if (essaim::ReportLeftovers(*sub, "essaim " + sub->get_name())) return essaim::kExitBadInput;
+    return commands.at(sub->get_name())();
+  }
+  std::vector<std::string> rest = app.remaining();
+  if (rest.empty()) {
+    std::cerr << main_help;
+    return essaim::kExitBadInput;
+  }
+  if (rest[0].size() > 1 && rest[0][0] == '-') return essaim::ReportLeftovers(app, "essaim") ? essaim::kExitBadInput : 0;
+  std::string hint = essaim::ClosestName(rest[0], CommandNames(app));
+  std::fprintf(stderr, "essaim: unknown command '%s'%s\nsee 'essaim --help'\n", rest[0].c_str(),
+               hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
   return essaim::kExitBadInput;
 }

@@ -19,10 +19,5 @@ std::optional<std::vector<double>> ParseVector(const std::string& s, size_t n);
 std::optional<std::pair<double, double>> ParseRange(const std::string& s);
 /// Shortest text that reads back as the same double ("%.17g" trimmed).
 std::string FormatDouble(double v);
-/// Folder part of a path ("" for a bare name), and path joining.
-std::string DirName(const std::string& path);
-std::string JoinPath(const std::string& dir, const std::string& rel);
-bool FileExists(const std::string& path);
-bool ReadFile(const std::string& path, std::string* out);
 
 }  // namespace essaim

@@ -6,6 +6,8 @@
 #include <lua.hpp>
 
 #include "core/color.h"
+#include "core/json.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "lua/lua_math_types.h"
 #include "lua/lua_random.h"
@@ -161,22 +163,35 @@ int LoopLog(lua_State* L) {
   return 0;
 }
 
+std::string LuaString(lua_State* L, int idx) {
+  size_t len = 0;
+  const char* p = lua_tolstring(L, idx, &len);
+  return std::string(p, len);  // whole, NUL bytes included
+}
+
 // A Lua value as JSON: a table with keys 1..n only is an array (empty → []); other
 // tables are objects with keys sorted, so metrics.json does not depend on hashing.
-bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
+// JSON has no NaN or infinity: those become null and their key path goes to `nonfinite`.
+bool ToJson(lua_State* L, int idx, Json* out, int depth, const std::string& where,
+            std::vector<std::string>* nonfinite, std::string* error) {
   idx = lua_absindex(L, idx);
   if (depth > 32) {
     *error = "table nested too deep (cycle?)";
     return false;
   }
   switch (lua_type(L, idx)) {
-    case LUA_TNIL: *out = Json(); return true;
-    case LUA_TBOOLEAN: *out = Json::Bool(lua_toboolean(L, idx)); return true;
+    case LUA_TNIL: *out = nullptr; return true;
+    case LUA_TBOOLEAN: *out = lua_toboolean(L, idx) != 0; return true;
     case LUA_TNUMBER:
-      if (lua_isinteger(L, idx)) *out = Json::Int(lua_tointeger(L, idx));
-      else *out = Json::Number(lua_tonumber(L, idx));
+      if (lua_isinteger(L, idx)) {
+        *out = static_cast<int64_t>(lua_tointeger(L, idx));
+      } else {
+        double v = lua_tonumber(L, idx);
+        if (std::isfinite(v)) *out = v;
+        else *out = nullptr, nonfinite->push_back(where);
+      }
       return true;
-    case LUA_TSTRING: *out = Json::String(lua_tostring(L, idx)); return true;
+    case LUA_TSTRING: *out = LuaString(L, idx); return true;
     case LUA_TTABLE: {
       lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
       size_t count = 0;
@@ -185,7 +200,7 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
       lua_pushnil(L);
       while (lua_next(L, idx)) {
         ++count;
-        if (lua_type(L, -2) == LUA_TSTRING) keys.push_back(lua_tostring(L, -2));
+        if (lua_type(L, -2) == LUA_TSTRING) keys.push_back(LuaString(L, -2));
         else if (lua_isinteger(L, -2)) keys.push_back(std::to_string(lua_tointeger(L, -2)));
         else {
           lua_pop(L, 2);
@@ -203,19 +218,19 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
       }
       bool as_array = forced.empty() ? count == static_cast<size_t>(n) && all_int : forced == "array";
       if (as_array) {
-        *out = Json::Array();
+        *out = Json::array();
         for (lua_Integer k = 1; k <= n; ++k) {
           lua_rawgeti(L, idx, k);
           Json v;
-          bool ok = ToJson(L, -1, &v, depth + 1, error);
+          bool ok = ToJson(L, -1, &v, depth + 1, where + "[" + std::to_string(k) + "]", nonfinite, error);
           lua_pop(L, 1);
           if (!ok) return false;
-          out->Push(std::move(v));
+          out->push_back(std::move(v));
         }
         return true;
       }
       std::sort(keys.begin(), keys.end());
-      *out = Json::Object();
+      *out = Json::object();
       for (const std::string& k : keys) {
         // Keys were collected as text; integer keys are looked up as integers.
         auto as_int = ParseInt(k);
@@ -224,12 +239,15 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, std::string* error) {
           found = lua_rawgeti(L, idx, *as_int) != LUA_TNIL;
           if (!found) lua_pop(L, 1);
         }
-        if (!found) lua_getfield(L, idx, k.c_str());
+        if (!found) {
+          lua_pushlstring(L, k.data(), k.size());
+          lua_gettable(L, idx);
+        }
         Json v;
-        bool ok = ToJson(L, -1, &v, depth + 1, error);
+        bool ok = ToJson(L, -1, &v, depth + 1, where.empty() ? k : where + "." + k, nonfinite, error);
         lua_pop(L, 1);
         if (!ok) return false;
-        out->Set(k, std::move(v));
+        (*out)[k] = std::move(v);
       }
       return true;
     }
@@ -428,12 +446,20 @@ bool LoopFunctions::PostExperiment(Json* metrics, bool* has_metrics, std::string
   if (!PCall(0, 1, "post_experiment", error)) return false;
   if (lua_istable(L_, -1)) {
     std::string err;
-    if (!ToJson(L_, -1, metrics, 0, &err)) {
+    std::vector<std::string> nonfinite;
+    if (!ToJson(L_, -1, metrics, 0, "", &nonfinite, &err)) {
       *error = "loop functions: post_experiment() result: " + err;
       lua_settop(L_, 0);
       return false;
     }
     *has_metrics = true;
+    // One warning per run: metrics.json stays valid JSON, the user learns which keys were lost.
+    if (!nonfinite.empty()) {
+      log_ += "Eloop functions: warning: post_experiment() result: NaN or infinite number at ";
+      for (size_t i = 0; i < nonfinite.size() && i < 5; ++i) log_ += (i ? ", " : "") + nonfinite[i];
+      if (nonfinite.size() > 5) log_ += " and " + std::to_string(nonfinite.size() - 5) + " more";
+      log_ += ", written as null in metrics.json\n";
+    }
   }
   lua_settop(L_, 0);
   return true;

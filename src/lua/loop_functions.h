@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/json.h"
+#include "core/json_fwd.h"
 #include "devices/robot_state.h"
 #include "model/model.h"
 #include "physics/physics_world.h"

@@ -6,6 +6,7 @@
 #include <lua.hpp>
 
 #include "core/rng.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "lua/lua_devices.h"
 #include "lua/lua_math_types.h"

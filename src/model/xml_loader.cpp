@@ -9,6 +9,7 @@
 #include "core/color.h"
 #include "core/hash.h"
 #include "core/rng.h"
+#include "core/paths.h"
 #include "core/strings.h"
 #include "model/distribute.h"
 #include "model/floor_image.h"

@@ -3,7 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
+#include <filesystem>
 #include <unistd.h>
 
 namespace essaim {
@@ -29,15 +29,11 @@ bool WriteFileAtomic(const std::string& path, const std::string& content, std::s
 
 bool MakeDirs(const std::string& path, std::string* error) {
   if (path.empty()) return true;
-  std::string cur;
-  for (size_t i = 0; i <= path.size(); ++i) {
-    if (i == path.size() || path[i] == '/') {
-      if (!cur.empty() && ::mkdir(cur.c_str(), 0755) != 0 && errno != EEXIST) {
-        *error = "cannot create folder " + cur + ": " + std::strerror(errno);
-        return false;
-      }
-    }
-    if (i < path.size()) cur += path[i];
+  std::error_code ec;
+  std::filesystem::create_directories(path, ec);
+  if (ec) {
+    *error = "cannot create folder " + path + ": " + ec.message();
+    return false;
   }
   return true;
 }

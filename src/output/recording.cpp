@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/paths.h"
 #include "core/strings.h"
 #include "sim/world.h"
 

@@ -1,5 +1,6 @@
 #include "output/summary.h"
 
+#include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
 
@@ -7,51 +8,41 @@ namespace essaim {
 
 Json BuildSummary(const World& w, const RunInfo& info) {
   const Model& m = w.model;
-  Json s = Json::Object();
-  s.Set("essaim_version", Json::String(info.version));
-  s.Set("experiment", Json::String(m.file));
-  s.Set("experiment_hash", Json::String("fnv1a64:" + m.file_hash));
-  Json ov = Json::Array();
-  for (const std::string& o : m.overrides) ov.Push(Json::String(o));
-  s.Set("overrides", ov);
-  s.Set("seed", Json::Int(static_cast<int64_t>(m.experiment.seed)));
-  s.Set("ticks", Json::Int(static_cast<int64_t>(w.tick)));
-  s.Set("ticks_per_second", Json::Int(m.experiment.ticks_per_second));
-  s.Set("robots", Json::Int(static_cast<int64_t>(w.robots.size())));
+  Json s = Json::object();
+  s["essaim_version"] = info.version;
+  s["experiment"] = m.file;
+  s["experiment_hash"] = "fnv1a64:" + m.file_hash;
+  s["overrides"] = Json::array();
+  for (const std::string& o : m.overrides) s["overrides"].push_back(o);
+  s["seed"] = static_cast<uint64_t>(m.experiment.seed);
+  s["ticks"] = static_cast<uint64_t>(w.tick);
+  s["ticks_per_second"] = m.experiment.ticks_per_second;
+  s["robots"] = w.robots.size();
   int alive = 0;
   for (const RobotState& r : w.robots) alive += r.alive;
-  s.Set("robots_alive", Json::Int(alive));
-  s.Set("threads", Json::Int(w.threads));
-  s.Set("status", Json::String(info.status));
-  s.Set("finished_by", Json::String(info.finished_by));
+  s["robots_alive"] = alive;
+  s["threads"] = w.threads;
+  s["status"] = info.status;
+  s["finished_by"] = info.finished_by;
   double steps = static_cast<double>(w.tick) * static_cast<double>(w.robots.size());
-  s.Set("wall_seconds", Json::Number(info.wall_seconds));
-  s.Set("robot_steps_per_second", Json::Number(info.wall_seconds > 0 ? steps / info.wall_seconds : 0));
-  s.Set("us_per_robot_step", Json::Number(steps > 0 ? info.wall_seconds * 1e6 / steps : 0));
-  Json st = Json::Object();
-  st.Set("act", Json::Number(w.times.act));
-  st.Set("physics", Json::Number(w.times.physics));
-  st.Set("media", Json::Number(w.times.media));
-  st.Set("loop_functions", Json::Number(w.times.loop_functions));
-  st.Set("sense", Json::Number(w.times.sense));
-  st.Set("control", Json::Number(w.times.control));
-  s.Set("stage_seconds", st);
+  s["wall_seconds"] = info.wall_seconds;
+  s["robot_steps_per_second"] = info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0;
+  s["us_per_robot_step"] = steps > 0 ? info.wall_seconds * 1e6 / steps : 0.0;
+  s["stage_seconds"] = Json::object({{"act", w.times.act},
+                                     {"physics", w.times.physics},
+                                     {"media", w.times.media},
+                                     {"loop_functions", w.times.loop_functions},
+                                     {"sense", w.times.sense},
+                                     {"control", w.times.control}});
   size_t peak = 0;
   for (const auto& c : w.controllers) peak += c->Memory().peak;
-  s.Set("lua_memory_bytes", Json::Int(static_cast<int64_t>(peak)));
-  Json errs = Json::Array();
-  for (const ControllerError& e : w.controller_errors) {
-    Json x = Json::Object();
-    x.Set("robot", Json::String(e.robot));
-    x.Set("tick", Json::Int(static_cast<int64_t>(e.tick)));
-    x.Set("message", Json::String(e.message));
-    errs.Push(x);
-  }
-  s.Set("controller_errors", errs);
-  if (!w.failure.empty()) s.Set("failure", Json::String(w.failure));
-  Json outs = Json::Array();
-  for (const std::string& o : info.outputs) outs.Push(Json::String(o));
-  s.Set("outputs", outs);
+  s["lua_memory_bytes"] = peak;
+  s["controller_errors"] = Json::array();
+  for (const ControllerError& e : w.controller_errors)
+    s["controller_errors"].push_back(
+        Json::object({{"robot", e.robot}, {"tick", static_cast<uint64_t>(e.tick)}, {"message", e.message}}));
+  if (!w.failure.empty()) s["failure"] = w.failure;
+  s["outputs"] = info.outputs;
   return s;
 }
 
@@ -69,7 +60,7 @@ std::string TimeseriesCsv(const Timeseries& series) {
 bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Json* metrics, std::string* error) {
   if (!MakeDirs(dir, error)) return false;
   if (metrics) {
-    if (!WriteFileAtomic(JoinPath(dir, "metrics.json"), metrics->Dump(), error)) return false;
+    if (!WriteFileAtomic(JoinPath(dir, "metrics.json"), DumpJson(*metrics), error)) return false;
     info.outputs.push_back("metrics.json");
   }
   const Timeseries& ts = w.loop_functions.Series();
@@ -78,7 +69,7 @@ bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const
     info.outputs.push_back("timeseries.csv");
   }
   info.outputs.insert(info.outputs.begin(), "summary.json");
-  return WriteFileAtomic(JoinPath(dir, "summary.json"), BuildSummary(w, info).Dump(), error);
+  return WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(BuildSummary(w, info)), error);
 }
 
 }  // namespace essaim

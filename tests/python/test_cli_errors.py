@@ -17,8 +17,8 @@ def run(*args, cwd=None):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["run"], "missing the experiment file"),
-    (["run", DATA / "tiny.argos", "--ticks", "ten"], "--ticks: 'ten' must be a non-negative integer"),
+    (["run"], "FILE.argos is required"),
+    (["run", DATA / "tiny.argos", "--ticks", "ten"], "--ticks: 'ten' is not a whole number"),
     (["run", DATA / "tiny.argos", "--warp"], "unknown option --warp"),
     (["run", DATA / "tiny.argos", "--seed"], "--seed needs a value"),
     (["run", "no/such/file.argos"], "no/such/file.argos: cannot read the experiment file"),

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/json.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -246,7 +247,9 @@ end
   std::string err;
   ASSERT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;
   ASSERT_TRUE(has);
-  EXPECT_EQ(metrics.Dump(), "{\n  \"alive2\": false,\n  \"id\": \"a\",\n  \"label\": \"hello\",\n  \"list\": [1, 2, 3],\n  \"robots\": 2\n}\n");
+  EXPECT_EQ(DumpJson(metrics),
+            "{\n  \"alive2\": false,\n  \"id\": \"a\",\n  \"label\": \"hello\",\n  \"list\": [\n    1,\n    2,\n    3\n  ],\n"
+            "  \"robots\": 2\n}\n");
   const Timeseries& ts = s.world->loop_functions.Series();
   ASSERT_EQ(ts.columns.size(), 2u);
   ASSERT_EQ(ts.rows.size(), 4u);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/paths.h"
 #include "core/strings.h"
 #include "output/recording.h"
 #include "support/scene.h"
