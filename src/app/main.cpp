@@ -8,6 +8,7 @@
 
 #include "app/cli_support.h"
 #include "app/commands.h"
+#include "app/completion.h"
 
 namespace {
 const char* kFooter =
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
     sub->set_version_flag("--version", "essaim " ESSAIM_VERSION);
     commands[sub->get_name()] = std::move(fn);
   }
+  std::string shell;
+  CLI::App* completion = app.add_subcommand("completion", "print a shell completion script");
+  completion->add_option("SHELL", shell, "the shell (only bash)")->required()->check(CLI::IsMember({"bash"}));
+  completion->footer("Example:\n  source <(essaim completion bash)    # e.g. in ~/.bashrc");
   // A prefix command: what follows `help` is a topic, never parsed as a subcommand.
   CLI::App* help = app.add_subcommand("help", "print the help of essaim or of one command (essaim help run)");
   help->prefix_command();
@@ -59,6 +64,10 @@ int main(int argc, char** argv) {
       what = what.substr(0, what.find(':')) + " needs a value";
     std::fprintf(stderr, "%s: %s\nsee '%s --help'\n", prog.c_str(), what.c_str(), prog.c_str());
     return essaim::kExitBadInput;
+  }
+  if (completion->parsed()) {
+    std::cout << essaim::BashCompletion(app);
+    return essaim::kExitOk;
   }
   if (help->parsed()) {
     std::vector<std::string> topic = help->remaining();

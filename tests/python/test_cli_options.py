@@ -137,3 +137,17 @@ def test_numbers_round_trip(tmp_path):
     _, text = _loop_experiment(tmp_path, "return {third = 1/3, big = 1e300, tiny = 5e-324, int = 9007199254740993}")
     data = json.loads(text)
     assert data == {"big": 1e300, "int": 9007199254740993, "third": 1 / 3, "tiny": 5e-324}
+
+
+@pytest.mark.parametrize("words, expected", [
+    (["essaim", "ch"], ["check"]),
+    (["essaim", "run", "--ti"], ["--ticks"]),
+    (["essaim", "snapshot", "--s"], ["--size"]),
+    (["essaim", "help", "sn"], ["snapshot"]),
+])
+def test_bash_completion_from_the_option_definitions(words, expected):
+    script = run("completion", "bash").stdout
+    cmd = f'{script}\nCOMP_WORDS=({" ".join(words)}); COMP_CWORD={len(words) - 1}; _essaim; echo "${{COMPREPLY[@]}}"'
+    r = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, timeout=30)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == expected
