@@ -221,6 +221,7 @@ CommandMain AddCheckCommand(CLI::App& app) {
   auto r = std::make_shared<RunArgs>();
   CLI::App* sub = app.add_subcommand("check", "validate an experiment and its scripts, list every error");
   AddExperimentOptions(sub, r.get());
+  sub->add_flag("-q,--quiet", r->quiet, "errors only, no warnings");
   sub->footer("Example:\n  essaim check arenas/foraging.argos --set arena.distribute.entity.quantity=60");
   return [r] { return Check(*r); };
 }

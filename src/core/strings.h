@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/paths.h"  // DirName, JoinPath, FileExists, ReadFile lived here; kept for includers
+
 namespace essaim {
 
 std::vector<std::string> Split(const std::string& s, char sep);
