@@ -5,6 +5,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -98,13 +99,13 @@ std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
 }
 
 std::string DefaultOutDir(const Model& m) {
-  std::string name = m.file.substr(m.file.find_last_of('/') == std::string::npos ? 0 : m.file.find_last_of('/') + 1);
-  if (name.size() > 6 && name.compare(name.size() - 6, 6, ".argos") == 0) name.resize(name.size() - 6);
-  return "runs/" + name + "-" + std::to_string(m.experiment.seed);
+  std::filesystem::path name = std::filesystem::path(m.file).filename();
+  if (name.extension() == ".argos") name = name.stem();
+  return "runs/" + name.string() + "-" + std::to_string(m.experiment.seed);
 }
 }  // namespace
 
-int Check(RunArgs& r) {
+static int Check(RunArgs& r) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim check: %s\n", error.c_str());
@@ -126,7 +127,7 @@ int Check(RunArgs& r) {
   return kExitOk;
 }
 
-int Run(RunArgs& r) {
+static int Run(RunArgs& r) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
