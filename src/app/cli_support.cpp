@@ -39,6 +39,7 @@ size_t EditDistance(const std::string& a, const std::string& b) {
 
 std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates) {
   std::string best;
+  if (typed.size() <= 2) return best;  // "-q" is one letter from every short option
   size_t best_d = std::max<size_t>(2, typed.size() / 3) + 1;  // farther than this is no suggestion
   for (const std::string& c : candidates) {
     size_t d = EditDistance(typed, c);
