@@ -27,8 +27,8 @@ int main(int argc, char** argv) {
   CLI::App app("essaim " ESSAIM_VERSION " - headless swarm simulator for ARGoS foot-bot experiments", "essaim");
   app.set_version_flag("--version", "essaim " ESSAIM_VERSION);
   app.footer(kFooter);
-  app.allow_extras();
-  app.require_subcommand(0, 1);  // `essaim help run`: "run" is help's topic, not a second command  // unknown commands and options are answered below, with suggestions
+  app.allow_extras();  // unknown commands and options are answered below, with suggestions
+  app.require_subcommand(0, 1);  // `essaim help run`: "run" is help's topic, not a second command
   std::map<std::string, essaim::CommandMain> commands;
   for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand,
                    essaim::AddBenchCommand, essaim::AddReplayCommand, essaim::AddSnapshotCommand}) {
@@ -95,7 +95,10 @@ int main(int argc, char** argv) {
     std::cerr << main_help;
     return essaim::kExitBadInput;
   }
-  if (rest[0].size() > 1 && rest[0][0] == '-') return essaim::ReportLeftovers(app, "essaim") ? essaim::kExitBadInput : 0;
+  if (rest[0].size() > 1 && rest[0][0] == '-') {
+    essaim::ReportLeftovers(app, "essaim");
+    return essaim::kExitBadInput;
+  }
   std::string hint = essaim::ClosestName(rest[0], CommandNames(app));
   std::fprintf(stderr, "essaim: unknown command '%s'%s\nsee 'essaim --help'\n", rest[0].c_str(),
                hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
