@@ -5,8 +5,8 @@
 
 namespace essaim {
 
-/// Reads {"PATH": value, ...} (values: strings, numbers, booleans) into "PATH=VALUE" overrides,
-/// in the file's order. False with a message naming the file (and line, or key) otherwise.
+/// Reads {"PATH": value, ...} (values: strings, numbers, booleans; a nested object adds path
+/// segments) into "PATH=VALUE" overrides, in the file's order. False with a message naming the file (and line, or key) otherwise.
 bool ReadOverridesFile(const std::string& path, std::vector<std::string>* overrides, std::string* error);
 
 }  // namespace essaim

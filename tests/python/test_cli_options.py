@@ -75,10 +75,21 @@ def test_set_file_applies_overrides_before_set(tmp_path):
     assert run("check", "tiny.argos", "--set-file", params, cwd=DATA).returncode == 0
 
 
+def test_set_file_nested_objects_are_path_segments(tmp_path):
+    params = tmp_path / "params.json"
+    params.write_text('{"framework": {"experiment": {"length": 1}}, "controllers.ctrl": {"params": {"speed": 2}}}')
+    r = run("run", "tiny.argos", "--quiet", "--out", tmp_path / "o", "--set-file", params, cwd=DATA)
+    assert r.returncode == 0, r.stderr
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["overrides"] == ["framework.experiment.length=1", "controllers.ctrl.params.speed=2"]
+    assert summary["ticks"] == 10
+
+
 @pytest.mark.parametrize("content, message", [
     ('{"a.b": 1,}', "params.json: invalid JSON at line 1, column 11"),
     ('[1, 2]', "params.json: expected a JSON object"),
-    ('{"arena.x": [1]}', 'params.json: "arena.x": the value must be a string, a number or a boolean, not array'),
+    ('{"arena": {"x": [1]}}', 'params.json: "arena.x": the value must be a string, a number or a boolean, not array'),
+    ('{"arena.x": null}', 'params.json: "arena.x": the value must be a string, a number or a boolean, not null'),
 ])
 def test_bad_set_file_exits_2(tmp_path, content, message):
     (tmp_path / "params.json").write_text(content)
