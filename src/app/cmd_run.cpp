@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "core/strings.h"
+#include "lua/lua_guard.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -17,8 +18,14 @@
 namespace essaim {
 
 namespace {
-std::atomic<bool> g_interrupted{false};
-void OnSigint(int) { g_interrupted = true; }
+// SIGINT and SIGTERM (what SLURM and Dask send) end the run the same way: status
+// "interrupted", whole outputs, exit 128 + signal. A controller stuck in Lua is stopped
+// through the watchdog's hook.
+std::atomic<int> g_interrupted{0};
+void OnSignal(int sig) {
+  g_interrupted = sig;
+  RequestLuaInterrupt();
+}
 
 struct RunArgs {
   std::string file;
@@ -26,6 +33,7 @@ struct RunArgs {
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
+  long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
 };
 
 bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string* error) {
@@ -56,6 +64,15 @@ bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string*
       if (key == "--ticks") r->load.ticks = *n;
       else if (key == "--seed") r->load.seed = *n;
       else r->load.threads = static_cast<int>(*n);
+    } else if (key == "--lua-budget" || key == "--lua-memory") {
+      if (!value(&v)) return false;
+      auto n = ParseInt(v);
+      if (!n || *n < 0 || (key == "--lua-memory" && *n > (1LL << 30))) {
+        *error = key + ": '" + v + "' must be a non-negative integer (" +
+                 (key == "--lua-budget" ? "instructions per call" : "MiB per Lua state") + "; 0 = unlimited)";
+        return false;
+      }
+      (key == "--lua-budget" ? r->lua_budget : r->lua_memory_mib) = *n;
     } else if (a == "--set") {
       if (!value(&v)) return false;
       r->load.overrides.push_back(v);
@@ -110,6 +127,22 @@ std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
   return model;
 }
 
+/// The watchdog's limits: the CLI's, else the experiment's, else the defaults (stricter
+/// under --sandbox). docs/sandbox.md.
+LuaOptions WatchdogOptions(const Model& m, const RunArgs& r) {
+  LuaOptions o;
+  o.sandbox = r.sandbox;
+  if (r.sandbox) {
+    o.memory_limit = size_t{64} << 20;
+    o.instruction_limit = 100000000;
+  }
+  long long budget = r.lua_budget >= 0 ? r.lua_budget : m.experiment.lua_budget;
+  long long mib = r.lua_memory_mib >= 0 ? r.lua_memory_mib : m.experiment.lua_memory_mib;
+  if (budget >= 0) o.instruction_limit = budget;
+  if (mib >= 0) o.memory_limit = static_cast<size_t>(mib) << 20;
+  return o;
+}
+
 std::string DefaultOutDir(const Model& m) {
   std::string name = m.file.substr(m.file.find_last_of('/') == std::string::npos ? 0 : m.file.find_last_of('/') + 1);
   if (name.size() > 6 && name.compare(name.size() - 6, 6, ".argos") == 0) name.resize(name.size() - 6);
@@ -129,6 +162,7 @@ int CheckCommand(const std::vector<std::string>& args) {
   // Scripts too: load every controller and the loop functions without stepping.
   SimOptions opt;
   opt.output_dir = "";
+  opt.lua = WatchdogOptions(*model, r);
   std::string err;
   auto world = World::Create(*model, opt, &err);
   if (!world) {
@@ -158,9 +192,7 @@ int RunCommand(const std::vector<std::string>& args) {
   SimOptions opt;
   opt.output_dir = out;
   opt.strict = r.strict;
-  opt.lua.sandbox = r.sandbox;
-  opt.lua.memory_limit = 64u << 20;
-  opt.lua.instruction_limit = 100000000;
+  opt.lua = WatchdogOptions(*model, r);
   opt.log_sink = [](char stream, const std::string& line) {
     std::fprintf(stream == 'E' ? stderr : stdout, "%s\n", line.c_str());
   };
@@ -175,7 +207,8 @@ int RunCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
-  std::signal(SIGINT, OnSigint);
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   RunInfo info;
   info.version = ESSAIM_VERSION;
@@ -192,6 +225,13 @@ int RunCommand(const std::vector<std::string>& args) {
     progress.Update(world->tick);
   }
   progress.Finish();
+  if (g_interrupted && status == StepStatus::Failed) {
+    // A loop-function hook stopped by the signal: the run was interrupted, not broken.
+    info.status = "interrupted";
+    info.finished_by = "interrupted";
+    status = StepStatus::Running;
+    world->failure.clear();
+  }
   if (status == StepStatus::Failed) {
     info.status = world->controller_errors.empty() ? "failed" : "controller_error";
     info.finished_by = "error";
@@ -226,7 +266,7 @@ int RunCommand(const std::vector<std::string>& args) {
                 static_cast<unsigned long long>(world->tick), model->robots.size(), info.wall_seconds,
                 info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0, world->controller_errors.size(), out.c_str());
   }
-  if (info.status == "interrupted") return 130;
+  if (info.status == "interrupted") return 128 + (g_interrupted ? g_interrupted.load() : SIGINT);
   if (status == StepStatus::Failed || info.status == "failed") return kExitRunFailed;
   if (r.strict && !world->controller_errors.empty()) return kExitRunFailed;
   return kExitOk;

@@ -61,6 +61,7 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
   w->pool = std::make_unique<ThreadPool>(w->threads);
 
   // Loop functions load first so the floor exists before anything senses it.
+  w->loop_functions.SetLimits(options.lua);
   if (!w->loop_functions.Load(model, &w->robots, &w->physics, options.output_dir, error)) return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
 
