@@ -2,6 +2,7 @@
 
 #include "core/rng.h"
 #include "devices/devices.h"
+#include "sim/error_groups.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -82,6 +83,9 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
       }
     }
   }
+  // Printed like step() errors, identical ones grouped.
+  if (options.log_sink)
+    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text);
   if (!w->loop_functions.Call("init", error)) return nullptr;
   return w;
 }

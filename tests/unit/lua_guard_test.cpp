@@ -163,3 +163,39 @@ end
 
 }  // namespace
 }  // namespace essaim
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+TEST(ErrorReports, IdenticalInputErrorsPrintOnceWithACount) {
+  ErrorList e;
+  for (int i = 0; i < 3; ++i) e.Add("a.argos", 35, "controller", "no controller with id 'x'");
+  e.Add("a.argos", 40, "box", "size must be > 0");
+  EXPECT_EQ(e.Format(),
+            "a.argos:35: <controller>: no controller with id 'x' (3 times)\n"
+            "a.argos:40: <box>: size must be > 0\n");
+}
+
+TEST(ErrorReports, InitErrorsArePrintedAndIdenticalOnesGrouped) {
+  TempDir d;
+  d.Write("c.lua", "function init()\n  error('bad init')\nend\nfunction step() end");
+  d.Write("ok.lua", "function step() end");
+  std::vector<std::string> printed;
+  SimOptions so;
+  so.log_sink = [&](char stream, const std::string& line) {
+    if (stream == 'E') printed.push_back(line);
+  };
+  std::string arena = FootBot("a", 0, 0, 0, "c") + FootBot("b", 0, 1, 0, "c") + FootBot("c", 0, 2, 0, "c") +
+                      FootBot("d", 1, 0, 0, "k");
+  Scene s = Load(d, Experiment(arena, WheelsController("c", "c.lua") + WheelsController("k", "ok.lua")), {}, so);
+  ASSERT_TRUE(s.ok()) << s.error;
+  EXPECT_EQ(s.world->controller_errors.size(), 3u);
+  ASSERT_EQ(printed.size(), 1u);
+  EXPECT_EQ(printed[0].rfind("robot a: ", 0), 0u) << printed[0];
+  EXPECT_NE(printed[0].find("c.lua:2: bad init"), std::string::npos) << printed[0];
+  EXPECT_NE(printed[0].find("(in init)\n(the same error in 2 more robots: b, c)"), std::string::npos) << printed[0];
+}
+
+}  // namespace
+}  // namespace essaim
