@@ -52,17 +52,18 @@ SWEEP_KEYS = {"experiment", "params", "ticks", "seeds", "set", "out", "essaim", 
 
 # Linux's prctl(PR_SET_PDEATHSIG): the kernel signals a child when its parent dies.
 PR_SET_PDEATHSIG = 1
-_LIBC = ctypes.CDLL(None, use_errno=True) if sys.platform.startswith("linux") else None
 
 
 def die_with_parent():
     """A preexec_fn: the essaim child gets SIGTERM (and writes its `interrupted` summary)
     when the sweep process dies, even by SIGKILL; if the sweep is already gone, exit."""
     parent = os.getpid()
+    # Opened here, before the fork (and not at import: Dask ships run_remote by value).
+    libc = ctypes.CDLL(None, use_errno=True) if sys.platform.startswith("linux") else None
 
     def setup():
-        if _LIBC is not None:
-            _LIBC.prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+        if libc is not None:
+            libc.prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
         if os.getppid() != parent:
             os._exit(1)
     return setup
