@@ -19,7 +19,9 @@ const char* kUsage =
     "      --set PATH=VALUE   override an XML attribute, e.g. controllers.ctrl.params.speed=20\n"
     "      --quiet            no progress line, no summary\n"
     "      --strict           the first controller error ends the run (exit 1)\n"
-    "      --sandbox          controllers without io/os, with memory and instruction caps\n"
+    "      --sandbox          untrusted scripts: no io/os/debug/native code, every instruction counted\n"
+    "      --lua-budget N     instructions per call into Lua (default 1e9; 0 = unlimited)\n"
+    "      --lua-memory MIB   memory per Lua state (default 256; 0 = unlimited)\n"
     "      --record[=every=N] also write recording.bin (every tick, or every N ticks)\n"
     "  essaim check FILE.argos [--set ...]   validate, list every error\n"
     "  essaim devices                        list supported sensors and actuators\n"
@@ -29,7 +31,7 @@ const char* kUsage =
     "                                        draw one recorded tick as a PNG\n"
     "  essaim --version | --help\n"
     "\n"
-    "exit codes: 0 ok, 1 run failed, 2 bad input (nothing run)\n";
+    "exit codes: 0 ok, 1 run failed, 2 bad input (nothing run), 130/143 interrupted (SIGINT/SIGTERM)\n";
 }
 
 int main(int argc, char** argv) {

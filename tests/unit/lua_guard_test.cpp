@@ -199,3 +199,21 @@ TEST(ErrorReports, InitErrorsArePrintedAndIdenticalOnesGrouped) {
 
 }  // namespace
 }  // namespace essaim
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+TEST(LuaWatchdogDeathTest, StuckInsideACFunctionEndsTheProcessWithAMessage) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  SimOptions so;
+  so.lua.instruction_limit = 0;
+  so.lua.wall_seconds = 0.2;
+  // Backtracking over 12 lazy captures: one string.find call, far longer than a second.
+  const char* script = "function step() string.find(string.rep('a', 60), '.-.-.-.-.-.-.-.-.-.-.-.-b') end";
+  EXPECT_EXIT(StepError(script, so), ::testing::ExitedWithCode(1),
+              "robot fb0: stuck for [0-9]+ s inside a C function called from Lua; stopping \\(exit 1\\)");
+}
+
+}  // namespace
+}  // namespace essaim
