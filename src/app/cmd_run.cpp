@@ -34,7 +34,29 @@ struct RunArgs {
   bool quiet = false, strict = false, sandbox = false;
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
   long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
+  double lua_seconds = -1;                          // wall clock per Lua call; -1: default
 };
+
+// The run in progress, for the watchdog's last resort (a call stuck inside a C function).
+struct RunInProgress {
+  std::string out;
+  const World* world = nullptr;
+  RunInfo info;
+};
+RunInProgress g_run;
+
+void OnLuaStuck(const std::string& message) {
+  // Called from the monitor thread while robots may still be stepped: a best-effort summary.
+  if (!g_run.world) return;
+  RunInfo info = g_run.info;
+  info.status = "failed";
+  info.finished_by = "error";
+  info.outputs = {"summary.json"};
+  Json s = BuildSummary(*g_run.world, info);
+  s.Set("failure", Json::String(message));
+  std::string error;
+  WriteFileAtomic(JoinPath(g_run.out, "summary.json"), s.Dump(), &error);
+}
 
 bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string* error) {
   for (size_t i = 0; i < args.size(); ++i) {
@@ -73,6 +95,14 @@ bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string*
         return false;
       }
       (key == "--lua-budget" ? r->lua_budget : r->lua_memory_mib) = *n;
+    } else if (key == "--lua-seconds") {
+      if (!value(&v)) return false;
+      auto d = ParseDouble(v);
+      if (!d || !(*d >= 0 && *d <= 1e6)) {
+        *error = "--lua-seconds: '" + v + "' must be a number of seconds between 0 and 1e6 (0 = no wall-clock limit)";
+        return false;
+      }
+      r->lua_seconds = *d;
     } else if (a == "--set") {
       if (!value(&v)) return false;
       r->load.overrides.push_back(v);
@@ -140,6 +170,7 @@ LuaOptions WatchdogOptions(const Model& m, const RunArgs& r) {
   long long mib = r.lua_memory_mib >= 0 ? r.lua_memory_mib : m.experiment.lua_memory_mib;
   if (budget >= 0) o.instruction_limit = budget;
   if (mib >= 0) o.memory_limit = static_cast<size_t>(mib) << 20;
+  if (r.lua_seconds >= 0) o.wall_seconds = r.lua_seconds;
   return o;
 }
 
@@ -207,6 +238,16 @@ int RunCommand(const std::vector<std::string>& args) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
+  g_run.out = out;
+  g_run.world = world.get();
+  g_run.info.version = ESSAIM_VERSION;
+  SetLuaStuckHandler(OnLuaStuck);
+  struct Forget {  // before the world goes
+    ~Forget() {
+      SetLuaStuckHandler(nullptr);
+      g_run.world = nullptr;
+    }
+  } forget;
   std::signal(SIGINT, OnSignal);
   std::signal(SIGTERM, OnSignal);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());

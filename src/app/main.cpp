@@ -22,6 +22,7 @@ const char* kUsage =
     "      --sandbox          untrusted scripts: no io/os/debug/native code, every instruction counted\n"
     "      --lua-budget N     instructions per call into Lua (default 1e9; 0 = unlimited)\n"
     "      --lua-memory MIB   memory per Lua state (default 256; 0 = unlimited)\n"
+    "      --lua-seconds S    wall clock per call into Lua (default 60; 0 = unlimited)\n"
     "      --record[=every=N] also write recording.bin (every tick, or every N ticks)\n"
     "  essaim check FILE.argos [--set ...]   validate, list every error\n"
     "  essaim devices                        list supported sensors and actuators\n"

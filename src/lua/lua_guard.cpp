@@ -20,6 +20,7 @@ namespace {
 constexpr int kHookEvery = 1000;
 
 std::atomic<bool> g_interrupt{false};
+std::atomic<LuaStuckHandler> g_stuck_handler{nullptr};
 
 long long NowNs() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
@@ -105,8 +106,11 @@ void Watch(LuaGuard* g, long long now) {
   // No hook ran for another full limit: stuck inside a C function (a pathological
   // string.find), which cannot be unwound safely. Stop the process with a message.
   if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1) {
-    std::fprintf(stderr, "essaim: %s: stuck for %.0f s inside a C function called from Lua; stopping (exit 1)\n",
-                 g->name.c_str(), s);
+    char message[160];
+    std::snprintf(message, sizeof message, "%s: stuck for %.0f s inside a C function called from Lua; stopping (exit 1)",
+                  g->name.c_str(), s);
+    if (LuaStuckHandler handler = g_stuck_handler.load()) handler(message);
+    std::fprintf(stderr, "essaim: %s\n", message);
     std::fflush(stderr);
     _exit(1);
   }
@@ -230,6 +234,8 @@ std::string EndGuardedCall(LuaGuard* g, int status) {
   if (status == LUA_OK && g->wall_exceeded.load(std::memory_order_relaxed)) return "wall-clock limit exceeded";
   return {};
 }
+
+void SetLuaStuckHandler(LuaStuckHandler handler) { g_stuck_handler.store(handler); }
 
 void RequestLuaInterrupt() { g_interrupt.store(true, std::memory_order_relaxed); }
 bool LuaInterruptRequested() { return g_interrupt.load(std::memory_order_relaxed); }

@@ -66,6 +66,11 @@ void BeginGuardedCall(LuaGuard* guard);
 /// else "". `status` is lua_pcall's result.
 std::string EndGuardedCall(LuaGuard* guard, int status);
 
+/// Called (from the monitor thread) just before the process exits because a call is stuck
+/// inside a C function: the last chance to write summary.json. Null: none.
+using LuaStuckHandler = void (*)(const std::string& message);
+void SetLuaStuckHandler(LuaStuckHandler handler);
+
 /// Asks every state to stop at its next hook (async-signal-safe): SIGINT/SIGTERM.
 void RequestLuaInterrupt();
 bool LuaInterruptRequested();

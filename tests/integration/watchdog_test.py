@@ -96,3 +96,23 @@ def test_sigterm_interrupts_a_stuck_controller(tmp_path):
     assert s["status"] == "interrupted" and s["finished_by"] == "interrupted"
     assert "interrupted by a signal" in s["controller_errors"][0]["message"]
     assert (tmp_path / "out" / "recording.bin").stat().st_size > 0
+
+
+def test_wall_clock_stops_an_unbudgeted_loop(tmp_path):
+    p = run([str(HERE / "misbehaving.argos"), "--lua-budget", "0", "--lua-seconds", "0.3", "--ticks", "2",
+             "--set", "controllers.loop.params.script=slow.lua"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    reasons = {e["robot"]: e["message"] for e in summary(tmp_path)["controller_errors"]}
+    assert "slow.lua:7: wall-clock limit exceeded (0.3 s per call)" in reasons["loop1"]
+
+
+def test_stuck_in_c_ends_the_process_with_a_summary(tmp_path):
+    start = time.monotonic()
+    p = run([str(HERE / "misbehaving.argos"), "--lua-seconds", "0.3", "--ticks", "2",
+             "--set", "controllers.loop.params.script=slow.lua",
+             "--set", "controllers.loop.params.mode=find"], tmp_path)
+    assert time.monotonic() - start < 10
+    assert p.returncode == 1, p.stderr
+    assert "robot loop1: stuck for 2 s inside a C function called from Lua" in p.stderr
+    s = summary(tmp_path)
+    assert s["status"] == "failed" and "stuck for 2 s inside a C function" in s["failure"]
