@@ -103,6 +103,10 @@ void Watch(LuaGuard* g, long long now) {
     lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);
     g->armed.store(true, std::memory_order_relaxed);
   }
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    if (g->running && lua_gethook(g->running) != GuardHook) lua_sethook(g->running, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  }
   // No hook ran for another full limit: stuck inside a C function (a pathological
   // string.find), which cannot be unwound safely. Stop the process with a message.
   if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1) {
@@ -130,6 +134,63 @@ Monitor& TheMonitor() {
     return mon;
   }();
   return *m;
+}
+
+LuaGuard* GuardOf(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return static_cast<LuaGuard*>(ud);
+}
+
+// coroutine.resume, recording which coroutine runs (for the monitor) and handing it the
+// hook when the call is already armed.
+int GuardedResume(lua_State* L) {
+  LuaGuard* g = GuardOf(L);
+  lua_State* co = lua_tothread(L, 1);  // null: the original raises the usual error
+  lua_State* previous;
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    previous = g->running;
+    g->running = co;
+  }
+  if (co && lua_gethook(L) == GuardHook && lua_gethook(co) != GuardHook)
+    lua_sethook(co, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  const int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    g->running = previous;
+  }
+  if (status != LUA_OK) return lua_error(L);
+  return lua_gettop(L);
+}
+
+// coroutine.wrap over the guarded resume; errors are re-raised with the caller's position,
+// as the original's.
+const char kGuardedWrap[] = R"(
+local create, resume, error = coroutine.create, coroutine.resume, error
+return function(f)
+  local co = create(f)
+  local function finish(ok, ...)
+    if not ok then error((...), 2) end
+    return ...
+  end
+  return function(...) return finish(resume(co, ...)) end
+end
+)";
+
+void GuardCoroutines(lua_State* L) {
+  lua_getglobal(L, "coroutine");
+  lua_getfield(L, -1, "resume");
+  lua_pushcclosure(L, GuardedResume, 1);
+  lua_setfield(L, -2, "resume");
+  if (luaL_loadbufferx(L, kGuardedWrap, sizeof kGuardedWrap - 1, "=coroutine.wrap", "t") == LUA_OK &&
+      lua_pcall(L, 0, 1, 0) == LUA_OK)
+    lua_setfield(L, -2, "wrap");
+  else
+    lua_pop(L, 1);
+  lua_pop(L, 1);
 }
 
 int TextOnlyLoad(lua_State* L) {
@@ -174,6 +235,7 @@ void CloseGuardedState(LuaGuard* guard) {
 
 void OpenGuardedLibraries(lua_State* L, bool sandbox) {
   luaL_openlibs(L);
+  GuardCoroutines(L);
   if (!sandbox) return;
   for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
     lua_pushnil(L);

@@ -10,6 +10,7 @@
 #pragma once
 #include <atomic>
 #include <cstddef>
+#include <mutex>
 #include <string>
 
 struct lua_State;
@@ -48,6 +49,10 @@ struct LuaGuard {
   std::atomic<long long> call_started_ns{0};  // 0: not inside a call
   std::atomic<bool> wall_exceeded{false};
   std::atomic<bool> interrupted{false};   // a signal arrived while this call was stuck
+  // The coroutine being resumed (null: the main thread), so that the monitor arms the
+  // thread that actually runs: hooks are per coroutine.
+  std::mutex thread_mutex;
+  lua_State* running = nullptr;
 };
 
 /// A new state whose allocator is `guard`'s, with the hook installed (budget, interrupts).

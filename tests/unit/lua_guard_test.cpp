@@ -79,6 +79,34 @@ TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
   EXPECT_NE(e.find("stack traceback"), std::string::npos) << e;
 }
 
+TEST(LuaWatchdog, ByDefaultCoversCoroutinesToo) {
+  SimOptions so;
+  so.lua.instruction_limit = 1000000;
+  for (const char* body : {"coroutine.wrap(function() while true do end end)()",
+                           "coroutine.resume(coroutine.create(function() while true do end end)) while true do end",
+                           "local co = coroutine.wrap(function() coroutine.yield(1) while true do end end) co() co()"}) {
+    std::string e = StepError(std::string("function step() ") + body + " end", so);
+    EXPECT_NE(e.find("instruction budget exceeded (1000000 instructions per call"), std::string::npos) << body << "\n" << e;
+  }
+}
+
+TEST(LuaWatchdog, GuardedCoroutinesBehaveAsLuas) {
+  std::string e = StepError(R"(
+function step()
+  local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
+  assert(gen(1) == 2 and gen(5) == 10)
+  local ok, err = pcall(coroutine.wrap(function() error("boom") end))
+  assert(not ok and err:find("^[^:]*c.lua:5: boom$"), err)
+  local co = coroutine.create(function(x) return x, coroutine.isyieldable() end)
+  local ok2, x, y = coroutine.resume(co, 7)
+  assert(ok2 and x == 7 and y == true and coroutine.status(co) == "dead")
+  assert(not pcall(coroutine.resume, 42))
+end
+)",
+                            SimOptions());
+  EXPECT_EQ(e, "");
+}
+
 TEST(LuaWatchdog, NextCallStartsWithAFreshBudget) {
   TempDir d;
   // Each step uses ~60% of the budget: never stopped, however many steps.
