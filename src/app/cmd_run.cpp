@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 
@@ -89,6 +90,8 @@ bool ParseRunArgs(const std::vector<std::string>& args, RunArgs* r, std::string*
     } else if (key == "--lua-budget" || key == "--lua-memory") {
       if (!value(&v)) return false;
       auto n = ParseInt(v);
+      if (auto d = ParseDouble(v); !n && d && *d >= 0 && *d < 9e18 && *d == std::floor(*d))
+        n = static_cast<long long>(*d);  // --lua-budget 1e9
       if (!n || *n < 0 || (key == "--lua-memory" && *n > (1LL << 30))) {
         *error = key + ": '" + v + "' must be a non-negative integer (" +
                  (key == "--lua-budget" ? "instructions per call" : "MiB per Lua state") + "; 0 = unlimited)";

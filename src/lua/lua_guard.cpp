@@ -300,6 +300,5 @@ std::string EndGuardedCall(LuaGuard* g, int status) {
 void SetLuaStuckHandler(LuaStuckHandler handler) { g_stuck_handler.store(handler); }
 
 void RequestLuaInterrupt() { g_interrupt.store(true, std::memory_order_relaxed); }
-bool LuaInterruptRequested() { return g_interrupt.load(std::memory_order_relaxed); }
 
 }  // namespace essaim

@@ -78,6 +78,5 @@ void SetLuaStuckHandler(LuaStuckHandler handler);
 
 /// Asks every state to stop at its next hook (async-signal-safe): SIGINT/SIGTERM.
 void RequestLuaInterrupt();
-bool LuaInterruptRequested();
 
 }  // namespace essaim

@@ -58,7 +58,7 @@ def test_misbehaving_robots_stop_and_the_run_goes_on(tmp_path):
 
 
 def test_cli_budget_overrides_the_experiment(tmp_path):
-    p = run([str(HERE / "misbehaving.argos"), "--lua-budget", "5000000", "--lua-memory", "16",
+    p = run([str(HERE / "misbehaving.argos"), "--lua-budget", "5e6", "--lua-memory", "16",
              "--ticks", "2"], tmp_path)
     assert p.returncode == 0, p.stderr
     reasons = {e["robot"]: e["message"] for e in summary(tmp_path)["controller_errors"]}
