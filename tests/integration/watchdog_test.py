@@ -4,8 +4,8 @@
   robots, in a 4 GiB address space: the run finishes promptly with exit 0, the looping, NaN
   and memory-hungry robots are listed with their reasons, 1e300 is clamped, good robots drive.
 * A loop-function hook over the budget ends the run: exit 1, hook and line named.
-* SIGTERM while a controller is stuck in step() with no budget: interrupted, exit 143,
-  summary.json and a finished recording.
+* SIGTERM or SIGINT while a controller is stuck in step() with no budget: interrupted,
+  exit 143 or 130, summary.json and a finished recording.
 """
 
 import json
@@ -82,16 +82,17 @@ def test_loop_function_hook_over_budget_ends_the_run(tmp_path):
     assert "stuck_loop.lua:4" in s["failure"]
 
 
-def test_sigterm_interrupts_a_stuck_controller(tmp_path):
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_signals_interrupt_a_stuck_controller(tmp_path, sig):
     # No budget: only the signal can stop the looping robot.
     cmd = [ESSAIM, "run", str(HERE / "misbehaving.argos"), "--lua-budget", "0", "--record",
            "--set", "controllers.hog.params.mode=good", "--set", "controllers.nan.params.mode=good",
            "--out", str(tmp_path / "out"), "--quiet"]
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(1.0)
-    proc.send_signal(signal.SIGTERM)
+    proc.send_signal(sig)
     _, err = proc.communicate(timeout=30)
-    assert proc.returncode == 143, err
+    assert proc.returncode == 128 + sig, err
     s = summary(tmp_path)
     assert s["status"] == "interrupted" and s["finished_by"] == "interrupted"
     assert "interrupted by a signal" in s["controller_errors"][0]["message"]
