@@ -203,6 +203,21 @@ int TextOnlyLoad(lua_State* L) {
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
 }
+// package.searchers[2] under the sandbox: Lua files on package.path, as text only.
+int TextOnlyLuaSearcher(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "searchpath");
+  lua_pushstring(L, name);
+  lua_getfield(L, -3, "path");
+  lua_call(L, 2, 2);  // filename, or nil and the places tried
+  if (lua_isnil(L, -2)) return 1;
+  const char* filename = lua_tostring(L, -2);
+  if (luaL_loadfilex(L, filename, "t") != LUA_OK)
+    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, filename, lua_tostring(L, -1));
+  lua_pushstring(L, filename);
+  return 2;
+}
 }  // namespace
 
 lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
@@ -253,8 +268,10 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox) {
   lua_setfield(L, package, "loadlib");
   lua_pushliteral(L, "");
   lua_setfield(L, package, "cpath");
-  // Keep the preload and Lua-file searchers; drop the two that load C libraries.
+  // Keep the preload searcher and Lua files (as text); drop the two that load C libraries.
   lua_getfield(L, package, "searchers");
+  lua_pushcfunction(L, TextOnlyLuaSearcher);
+  lua_rawseti(L, -2, 2);
   lua_pushnil(L);
   lua_rawseti(L, -2, 4);
   lua_pushnil(L);

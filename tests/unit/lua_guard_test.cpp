@@ -45,6 +45,25 @@ end
   EXPECT_EQ(e, "");
 }
 
+TEST(LuaSandbox, RequireLoadsLuaModulesAsTextOnly) {
+  TempDir d;
+  d.Write("helper.lua", "return {answer = 42}");
+  d.Write("compiled.lua", std::string("\x1bLua\x54\x00", 6) + "not really bytecode");
+  d.Write("c.lua", R"(
+function step()
+  assert(require("helper").answer == 42)
+  local ok, err = pcall(require, "compiled")
+  assert(not ok and err:find("attempt to load a binary chunk"), err)
+  local ok2, err2 = pcall(require, "nowhere")
+  assert(not ok2 and err2:find("module 'nowhere' not found"), err2)
+end
+)");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")), {}, Sandboxed());
+  ASSERT_TRUE(s.ok()) << s.error;
+  Step(*s.world);
+  EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
+}
+
 TEST(LuaSandbox, LoopFunctionsAreSandboxedToo) {
   TempDir d;
   d.Write("c.lua", "function step() end");
