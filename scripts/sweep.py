@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import concurrent.futures as cf
+import ctypes
 import hashlib
 import itertools
 import json
@@ -47,6 +48,25 @@ ERROR_LINES = 5  # stderr lines kept in the `error` column
 
 SWEEP_KEYS = {"experiment", "params", "ticks", "seeds", "set", "out", "essaim", "workdir",
               "strict", "args", "timeout"}
+
+
+# Linux's prctl(PR_SET_PDEATHSIG): the kernel signals a child when its parent dies.
+PR_SET_PDEATHSIG = 1
+
+
+def die_with_parent():
+    """A preexec_fn: the essaim child gets SIGTERM (and writes its `interrupted` summary)
+    when the sweep process dies, even by SIGKILL; if the sweep is already gone, exit."""
+    parent = os.getpid()
+    # Opened here, before the fork (and not at import: Dask ships run_remote by value).
+    libc = ctypes.CDLL(None, use_errno=True) if sys.platform.startswith("linux") else None
+
+    def setup():
+        if libc is not None:
+            libc.prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
+        if os.getppid() != parent:
+            os._exit(1)
+    return setup
 
 
 class SweepError(Exception):
@@ -317,8 +337,9 @@ def finished(run_dir: Path, argv_record: list[str], strict: bool = False) -> boo
 
     essaim writes summary.json last, also for runs that failed or were interrupted (with
     `status` "failed"/"interrupted"): those are not finished. The sweep's own record says
-    which command line made the folder and how it exited; a folder without one (e.g. the
-    sweep was stopped just after essaim exited) is judged by its summary alone.
+    which command line made the folder and how it exited; a folder without it was not
+    finished under the sweep's eye (an orphaned essaim of a killed sweep, or the sweep
+    stopped just after essaim exited): it is redone.
     """
     summary = read_json(run_dir / "summary.json")
     if not isinstance(summary, dict):
@@ -328,12 +349,11 @@ def finished(run_dir: Path, argv_record: list[str], strict: bool = False) -> boo
     if strict and summary.get("controller_errors"):
         return False
     record = read_json(run_dir / RUN_RECORD)
-    if isinstance(record, dict):
-        if record.get("argv") != argv_record:
-            return False  # made by another version of the sweep file (other ticks, sets...)
-        if record.get("returncode") != 0:
-            return False
-    return True
+    if not isinstance(record, dict):
+        return False
+    if record.get("argv") != argv_record:
+        return False  # made by another version of the sweep file (other ticks, sets...)
+    return record.get("returncode") == 0
 
 
 def record_argv(argv: list[str]) -> list[str]:
@@ -353,7 +373,7 @@ def run_remote(argv: list[str], workdir: str, timeout: float | None) -> dict:
         start = time.time()
         try:
             p = subprocess.run(argv, cwd=workdir, capture_output=True, text=True,
-                               errors="replace", timeout=timeout)
+                               errors="replace", timeout=timeout, preexec_fn=die_with_parent())
             rc, stdout, stderr = p.returncode, p.stdout, p.stderr
         except FileNotFoundError as e:
             rc, stdout, stderr = 127, "", f"cannot start {argv[0]} in {workdir}: {e.strerror}"
@@ -553,7 +573,7 @@ def run_local(sweep: Sweep, todo: list[Run], essaim: str, jobs: int, on_done) ->
                 # Own session: Ctrl-C reaches only the sweep, which kills its children itself.
                 p = subprocess.Popen(argv, cwd=sweep.workdir, stdout=subprocess.PIPE,
                                      stderr=subprocess.PIPE, text=True, errors="replace",
-                                     start_new_session=True)
+                                     start_new_session=True, preexec_fn=die_with_parent())
             except OSError as e:
                 return run, {"returncode": 127, "stdout": "", "files": {},
                              "stderr": f"cannot start {essaim}: {e.strerror}"}

@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "app/set_file.h"
 #include "core/paths.h"
 #include "core/strings.h"
+#include "lua/lua_guard.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -24,8 +26,14 @@
 namespace essaim {
 
 namespace {
-std::atomic<bool> g_interrupted{false};
-void OnSigint(int) { g_interrupted = true; }
+// SIGINT and SIGTERM (what SLURM and Dask send) end the run the same way: status
+// "interrupted", whole outputs, exit 128 + signal. A controller stuck in Lua is stopped
+// through the watchdog's hook.
+std::atomic<int> g_interrupted{0};
+void OnSignal(int sig) {
+  g_interrupted = sig;
+  RequestLuaInterrupt();
+}
 
 constexpr long long kMaxTicks = 1000000000000LL;  // ~3 years at 10 ticks/s
 constexpr long long kMaxThreads = 1024;
@@ -39,7 +47,30 @@ struct RunArgs {
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
+  long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
+  double lua_seconds = -1;                          // wall clock per Lua call; -1: default
 };
+
+// The run in progress, for the watchdog's last resort (a call stuck inside a C function).
+struct RunInProgress {
+  std::string out;
+  const World* world = nullptr;
+  RunInfo info;
+};
+RunInProgress g_run;
+
+void OnLuaStuck(const std::string& message) {
+  // Called from the monitor thread while robots may still be stepped: a best-effort summary.
+  if (!g_run.world) return;
+  RunInfo info = g_run.info;
+  info.status = "failed";
+  info.finished_by = "error";
+  info.outputs = {"summary.json"};
+  Json s = BuildSummary(*g_run.world, info);
+  s["failure"] = message;
+  std::string error;
+  WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
+}
 
 // The options run and check share: the file and what overrides its XML.
 void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
@@ -98,6 +129,23 @@ std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
   return model;
 }
 
+/// The watchdog's limits: the CLI's, else the experiment's, else the defaults (stricter
+/// under --sandbox). docs/sandbox.md.
+LuaOptions WatchdogOptions(const Model& m, const RunArgs& r) {
+  LuaOptions o;
+  o.sandbox = r.sandbox;
+  if (r.sandbox) {
+    o.memory_limit = size_t{64} << 20;
+    o.instruction_limit = 100000000;
+  }
+  long long budget = r.lua_budget >= 0 ? r.lua_budget : m.experiment.lua_budget;
+  long long mib = r.lua_memory_mib >= 0 ? r.lua_memory_mib : m.experiment.lua_memory_mib;
+  if (budget >= 0) o.instruction_limit = budget;
+  if (mib >= 0) o.memory_limit = static_cast<size_t>(mib) << 20;
+  if (r.lua_seconds >= 0) o.wall_seconds = r.lua_seconds;
+  return o;
+}
+
 std::string DefaultOutDir(const Model& m) {
   std::filesystem::path name = std::filesystem::path(m.file).filename();
   if (name.extension() == ".argos") name = name.stem();
@@ -116,6 +164,7 @@ static int Check(RunArgs& r) {
   // Scripts too: load every controller and the loop functions without stepping.
   SimOptions opt;
   opt.output_dir = "";
+  opt.lua = WatchdogOptions(*model, r);
   std::string err;
   auto world = World::Create(*model, opt, &err);
   if (!world) {
@@ -144,9 +193,7 @@ static int Run(RunArgs& r) {
   SimOptions opt;
   opt.output_dir = out;
   opt.strict = r.strict;
-  opt.lua.sandbox = r.sandbox;
-  opt.lua.memory_limit = 64u << 20;
-  opt.lua.instruction_limit = 100000000;
+  opt.lua = WatchdogOptions(*model, r);
   opt.log_sink = [](char stream, const std::string& line) {
     std::fprintf(stream == 'E' ? stderr : stdout, "%s\n", line.c_str());
   };
@@ -161,7 +208,18 @@ static int Run(RunArgs& r) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
-  std::signal(SIGINT, OnSigint);
+  g_run.out = out;
+  g_run.world = world.get();
+  g_run.info.version = ESSAIM_VERSION;
+  SetLuaStuckHandler(OnLuaStuck);
+  struct Forget {  // before the world goes
+    ~Forget() {
+      SetLuaStuckHandler(nullptr);
+      g_run.world = nullptr;
+    }
+  } forget;
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   RunInfo info;
   info.version = ESSAIM_VERSION;
@@ -178,6 +236,13 @@ static int Run(RunArgs& r) {
     progress.Update(world->tick);
   }
   progress.Finish();
+  if (g_interrupted && status == StepStatus::Failed) {
+    // A loop-function hook stopped by the signal: the run was interrupted, not broken.
+    info.status = "interrupted";
+    info.finished_by = "interrupted";
+    status = StepStatus::Running;
+    world->failure.clear();
+  }
   if (status == StepStatus::Failed) {
     info.status = world->controller_errors.empty() ? "failed" : "controller_error";
     info.finished_by = "error";
@@ -212,7 +277,7 @@ static int Run(RunArgs& r) {
                 static_cast<unsigned long long>(world->tick), model->robots.size(), info.wall_seconds,
                 info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0, world->controller_errors.size(), out.c_str());
   }
-  if (info.status == "interrupted") return 130;
+  if (info.status == "interrupted") return 128 + (g_interrupted ? g_interrupted.load() : SIGINT);
   if (status == StepStatus::Failed || info.status == "failed") return kExitRunFailed;
   if (r.strict && !world->controller_errors.empty()) return kExitRunFailed;
   return kExitOk;
@@ -234,13 +299,25 @@ CommandMain AddRunCommand(CLI::App& app) {
   sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
   sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
   sub->add_flag("--strict", r->strict, "the first controller error ends the run (exit 1)");
-  sub->add_flag("--sandbox", r->sandbox, "controllers without io/os, with memory and instruction caps");
+  sub->add_flag("--sandbox", r->sandbox,
+                "untrusted scripts: no io/os/debug/native code, every instruction counted (docs/sandbox.md)");
+  auto budget = std::make_shared<double>(-1);
+  sub->add_option("--lua-budget", *budget, "instructions per call into Lua (default 1e9; 0 = unlimited)")
+      ->type_name("N")
+      ->check(CLI::Range(0.0, 9e18));
+  sub->add_option("--lua-memory", r->lua_memory_mib, "MiB per Lua state (default 256; 0 = unlimited)")
+      ->type_name("MIB")
+      ->check(IntegerIn(0, 1LL << 30, "0 = unlimited"));
+  sub->add_option("--lua-seconds", r->lua_seconds, "wall clock per call into Lua (default 60; 0 = unlimited)")
+      ->type_name("S")
+      ->check(CLI::Range(0.0, 1e6));
   sub->add_option("--record", r->record, "also write recording.bin: every tick, or --record=every=N")
       ->type_name("[every=N]")
       ->expected(0, 1)
       ->check(RecordEvery());
   sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 3000 --seed 7 --set controllers.ctrl.params.EPSILONGREED=0.3");
-  return [r, sub] {
+  return [r, sub, budget] {
+    if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
     r->record_every = 0;
     if (sub->count("--record") > 0) r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
     return Run(*r);

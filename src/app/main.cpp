@@ -13,7 +13,7 @@
 namespace {
 const char* kFooter =
     "Run 'essaim help COMMAND' or 'essaim COMMAND --help' for a command's options.\n"
-    "Exit codes: 0 ok, 1 run failed, 2 bad input (nothing run), 130 interrupted.";
+    "Exit codes: 0 ok, 1 run failed, 2 bad input (nothing run), 130/143 interrupted (SIGINT/SIGTERM).";
 
 std::vector<std::string> CommandNames(const CLI::App& app) {
   std::vector<std::string> names;

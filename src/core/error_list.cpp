@@ -1,5 +1,7 @@
 #include "core/error_list.h"
 
+#include <algorithm>
+
 namespace essaim {
 
 void ErrorList::Add(std::string file, int line, std::string element, std::string message) {
@@ -11,13 +13,28 @@ void ErrorList::Append(const ErrorList& other) {
 }
 
 std::string ErrorList::Format() const {
-  std::string out;
+  // Identical entries (a bad reference in a <distribute> of 189 robots) print once, counted.
+  std::vector<std::string> lines;
+  std::vector<size_t> counts;
   for (const InputError& e : errors_) {
-    out += e.file;
-    if (e.line > 0) out += ":" + std::to_string(e.line);
-    out += ": ";
-    if (!e.element.empty()) out += "<" + e.element + ">: ";
-    out += e.message + "\n";
+    std::string line = e.file;
+    if (e.line > 0) line += ":" + std::to_string(e.line);
+    line += ": ";
+    if (!e.element.empty()) line += "<" + e.element + ">: ";
+    line += e.message;
+    auto it = std::find(lines.begin(), lines.end(), line);
+    if (it != lines.end()) {
+      ++counts[static_cast<size_t>(it - lines.begin())];
+    } else {
+      lines.push_back(std::move(line));
+      counts.push_back(1);
+    }
+  }
+  std::string out;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    out += lines[i];
+    if (counts[i] > 1) out += " (" + std::to_string(counts[i]) + " times)";
+    out += "\n";
   }
   return out;
 }

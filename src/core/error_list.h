@@ -20,7 +20,7 @@ class ErrorList {
   bool Empty() const { return errors_.empty(); }
   size_t Size() const { return errors_.size(); }
   const std::vector<InputError>& Items() const { return errors_; }
-  /// "file:line: <element>: message", one per line.
+  /// "file:line: <element>: message", one per line; identical lines once, with " (N times)".
   std::string Format() const;
 
  private:

@@ -1,5 +1,6 @@
 // Lua tables of the differential-steering wheels, positioning and battery (spec §1.3,
 // §6, §9).
+#include <algorithm>
 #include <cmath>
 
 #include "lua/lua_devices.h"
@@ -12,8 +13,9 @@ int SetVelocity(lua_State* L) {
   // Dot-call with exactly two numbers, cm/s (colon syntax fails the count, as ARGoS).
   if (lua_gettop(L) != 2) return luaL_error(L, "robot.wheels.set_velocity(left, right) expects 2 arguments");
   RobotState* r = UpvalueRobot(L);
-  r->cmd.wheel_left = luaL_checknumber(L, 1) * 0.01;
-  r->cmd.wheel_right = luaL_checknumber(L, 2) * 0.01;
+  const char* fn = "robot.wheels.set_velocity";
+  r->cmd.wheel_left = std::clamp(CheckFiniteNumber(L, 1, fn) * 0.01, -kMaxWheelSpeed, kMaxWheelSpeed);
+  r->cmd.wheel_right = std::clamp(CheckFiniteNumber(L, 2, fn) * 0.01, -kMaxWheelSpeed, kMaxWheelSpeed);
   r->cmd.wheels_new = true;
   return 0;
 }

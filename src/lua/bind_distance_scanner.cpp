@@ -30,7 +30,7 @@ int Disable(lua_State* L) {
 
 int SetAngle(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_angle(angle) expects 1 argument");
-  const double a = luaL_checknumber(L, 1);
+  const double a = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_angle");
   RobotState* r = UpvalueRobot(L);
   r->cmd.scanner_mode = ScannerMode::Position;
   r->cmd.scanner_angle = a;
@@ -39,7 +39,7 @@ int SetAngle(lua_State* L) {
 
 int SetRpm(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_rpm(rpm) expects 1 argument");
-  const double rpm = luaL_checknumber(L, 1);
+  const double rpm = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_rpm");
   RobotState* r = UpvalueRobot(L);
   r->cmd.scanner_mode = ScannerMode::Speed;
   r->cmd.scanner_speed = rpm * kPi / 30;

@@ -1,6 +1,8 @@
 // robot.leds (spec §7.1): set_all_colors(colour) and set_single_color(i, colour), where
 // colour is a name ("red"), a string "r,g,b,a" or three numbers r, g, b (alpha 255).
 // A bad colour or index is a Lua error naming it. Colours apply in the next Act stage.
+#include <cstdio>
+
 #include "core/color.h"
 #include "lua/bind_byte.h"
 #include "lua/lua_devices.h"
@@ -29,9 +31,11 @@ Color CheckColor(lua_State* L, int first, const char* fn) {
                  fn, text);
     return c;
   }
-  c.r = LuaNumberToByte(luaL_checknumber(L, first));
-  c.g = LuaNumberToByte(luaL_checknumber(L, first + 1));
-  c.b = LuaNumberToByte(luaL_checknumber(L, first + 2));
+  char name[48];
+  std::snprintf(name, sizeof name, "robot.leds.%s", fn);
+  c.r = LuaNumberToByte(CheckFiniteNumber(L, first, name));
+  c.g = LuaNumberToByte(CheckFiniteNumber(L, first + 1, name));
+  c.b = LuaNumberToByte(CheckFiniteNumber(L, first + 2, name));
   c.a = 255;
   return c;
 }
@@ -48,7 +52,7 @@ int SetAllColors(lua_State* L) {
 int SetSingleColor(lua_State* L) {
   const int n = lua_gettop(L);
   if (n != 2 && n != 4) return luaL_error(L, "robot.leds.set_single_color() expects either two or four arguments");
-  double idx = luaL_checknumber(L, 1);
+  double idx = CheckFiniteNumber(L, 1, "robot.leds.set_single_color()");
   if (!(idx >= 1 && idx < footbot::kLedCount + 1))
     return luaL_error(L, "robot.leds.set_single_color(): LED index %f out of range 1..%d", idx, footbot::kLedCount);
   Color c = CheckColor(L, 2, "set_single_color()");

@@ -2,6 +2,8 @@
 // robot.range_and_bearing[i] = {range, horizontal_bearing, vertical_bearing, data}.
 // Each message and its data table are fresh every step, as in ARGoS: a controller may
 // keep last step's message and compare it with the new one. Bytes are Lua integers.
+#include <cmath>
+
 #include "lua/bind_byte.h"
 #include "lua/lua_devices.h"
 
@@ -23,6 +25,12 @@ int SetData(lua_State* L) {
       lua_pop(L, 1);
       if (t != LUA_TNUMBER)
         return luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is not a number", static_cast<int>(i));
+      lua_geti(L, 1, i);
+      const double v = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      if (!std::isfinite(v))
+        return luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is %s (must be a finite number)",
+                          static_cast<int>(i), std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
     }
     for (lua_Integer i = 1; i <= size; ++i) {
       lua_geti(L, 1, i);
@@ -32,8 +40,8 @@ int SetData(lua_State* L) {
     return 0;
   }
   if (args == 2) {
-    double idx = luaL_checknumber(L, 1);
-    double value = luaL_checknumber(L, 2);
+    double idx = CheckFiniteNumber(L, 1, "robot.range_and_bearing.set_data");
+    double value = CheckFiniteNumber(L, 2, "robot.range_and_bearing.set_data");
     if (!(idx >= 1 && idx < static_cast<double>(size) + 1))
       return luaL_error(L, "robot.range_and_bearing.set_data(idx, value) expects idx between 1 and %d, got %f",
                         static_cast<int>(size), idx);

@@ -2,6 +2,9 @@
 // (x·pi/30 rad/s), set_position_control_mode(), set_speed_control_mode(),
 // set_passive_mode(); the encoder's rotation (rad, relative to the body). Both devices
 // share the table. Commands apply in the next Act (devices/turret.cpp).
+#include <algorithm>
+#include <cstdio>
+
 #include "lua/lua_devices.h"
 
 namespace essaim {
@@ -10,7 +13,9 @@ namespace {
 // One number argument, dot-call (colon syntax fails the count, as ARGoS's checks do).
 double OneNumber(lua_State* L, const char* fn) {
   if (lua_gettop(L) != 1) luaL_error(L, "robot.turret.%s() expects 1 argument", fn);
-  return luaL_checknumber(L, 1);
+  char name[64];
+  std::snprintf(name, sizeof name, "robot.turret.%s", fn);
+  return CheckFiniteNumber(L, 1, name);
 }
 int SetRotation(lua_State* L) {
   double a = OneNumber(L, "set_rotation");
@@ -19,7 +24,7 @@ int SetRotation(lua_State* L) {
 }
 int SetRotationSpeed(lua_State* L) {
   double x = OneNumber(L, "set_rotation_speed");
-  UpvalueRobot(L)->cmd.turret_speed = x * kPi / 30;
+  UpvalueRobot(L)->cmd.turret_speed = std::clamp(x * kPi / 30, -kMaxTurretSpeed, kMaxTurretSpeed);
   return 0;
 }
 int SetPositionMode(lua_State* L) {

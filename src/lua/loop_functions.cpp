@@ -14,8 +14,6 @@
 
 namespace essaim {
 
-void OpenLibraries(lua_State* L, bool sandbox);  // lua_state.cpp
-
 // Registry keys by address: every handle call reaches its context without interning a
 // name (the foraging rules make a few per robot per tick).
 const char kSelfKey = 0, kHandleMetaKey = 0;
@@ -259,7 +257,7 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, const std::string& wher
 }  // namespace
 
 LoopFunctions::~LoopFunctions() {
-  if (L_) lua_close(L_);
+  CloseGuardedState(&guard_);
 }
 
 bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
@@ -269,9 +267,14 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   physics_ = physics;
   script_ = model.loop_functions.script;
   if (script_.empty()) return true;
-  L_ = luaL_newstate();
+  guard_.name = "loop functions";
+  L_ = NewGuardedState(&guard_, limits_);
+  if (!L_) {
+    *error = "loop functions: cannot create a Lua state";
+    return false;
+  }
   lua_State* L = L_;
-  OpenLibraries(L, false);
+  OpenGuardedLibraries(L, limits_.sandbox);
   lua_pushlightuserdata(L, this);
   lua_rawsetp(L, LUA_REGISTRYINDEX, &kSelfKey);
   lua_pushcfunction(L, Traceback);
@@ -374,8 +377,12 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string
   int fn = lua_gettop(L) - nargs;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   lua_insert(L, fn);
-  if (lua_pcall(L, nargs, nresults, fn) != LUA_OK) {
-    *error = "loop functions (" + std::string(what) + "): " + lua_tostring(L, -1);
+  BeginGuardedCall(&guard_);
+  const int status = lua_pcall(L, nargs, nresults, fn);
+  std::string stopped = EndGuardedCall(&guard_, status);
+  if (status != LUA_OK || !stopped.empty()) {
+    const char* msg = lua_tostring(L, -1);
+    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? script_ + ": " + stopped : msg ? msg : "error");
     lua_settop(L, 0);
     return false;
   }

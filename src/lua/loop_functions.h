@@ -6,6 +6,7 @@
 
 #include "core/json_fwd.h"
 #include "devices/robot_state.h"
+#include "lua/lua_guard.h"
 #include "model/model.h"
 #include "physics/physics_world.h"
 
@@ -29,6 +30,8 @@ class LoopFunctions {
   bool Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
             const std::string& output_dir, std::string* error);
   bool Loaded() const { return L_ != nullptr; }
+  /// The watchdog's limits and the sandbox, as for controllers; set before Load.
+  void SetLimits(const LuaOptions& options) { limits_ = options; }
   void SetTick(uint64_t tick);
 
   bool HasFunction(const char* name);
@@ -45,6 +48,8 @@ class LoopFunctions {
  private:
   bool PCall(int nargs, int nresults, const char* what, std::string* error);
   lua_State* L_ = nullptr;
+  LuaGuard guard_;
+  LuaOptions limits_;
   std::string script_;
   int traceback_ref_ = -1;
   std::string log_;

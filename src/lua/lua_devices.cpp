@@ -1,8 +1,19 @@
 #include "lua/lua_devices.h"
 
+#include <cmath>
+
 namespace essaim {
 
 RobotState* UpvalueRobot(lua_State* L) { return static_cast<RobotState*>(lua_touserdata(L, lua_upvalueindex(1))); }
+
+double CheckFiniteNumber(lua_State* L, int arg, const char* fn) {
+  const double v = luaL_checknumber(L, arg);
+  if (!std::isfinite(v)) {
+    const char* value = std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf";
+    luaL_error(L, "%s: argument #%d is %s (actuator values must be finite numbers)", fn, arg, value);
+  }
+  return v;
+}
 
 void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot) {
   t = lua_absindex(L, t);

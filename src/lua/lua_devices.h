@@ -34,6 +34,12 @@ void ClearStaleTail(lua_State* L, int array, int count, int* shown);
 /// Pushes the RobotState* upvalue closure into table at `t`.
 void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot);
 RobotState* UpvalueRobot(lua_State* L);
+/// luaL_checknumber for actuators: NaN or ±inf is a Lua error naming `fn`, the argument
+/// and the value (a non-finite command would poison the physics).
+double CheckFiniteNumber(lua_State* L, int arg, const char* fn);
+/// Clamps of finite but absurd commands (docs/compatibility.md).
+constexpr double kMaxWheelSpeed = 10.0;          // m/s: 1 m per tick at 10 ticks/s, under Box2D's 2 m step cap
+constexpr double kMaxTurretSpeed = 20 * 3.141592653589793;  // rad/s (600 in set_rotation_speed units)
 
 // ---- device families (lua/bind_*.cpp)
 void CreateWheelsActuator(lua_State* L, int t, RobotState* robot);

@@ -15,24 +15,6 @@
 namespace essaim {
 
 namespace {
-void* CountingAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
-  auto* a = static_cast<LuaAllocator*>(ud);
-  size_t old = ptr ? osize : 0;
-  if (nsize == 0) {
-    std::free(ptr);
-    a->bytes -= old;
-    return nullptr;
-  }
-  if (a->limit && a->bytes - old + nsize > a->limit) return nullptr;  // Lua raises "not enough memory"
-  void* p = std::realloc(ptr, nsize);
-  if (p) {
-    a->bytes = a->bytes - old + nsize;
-    if (a->bytes > a->peak) a->peak = a->bytes;
-    ++a->allocations;
-  }
-  return p;
-}
-
 int Traceback(lua_State* L) {
   const char* msg = lua_tostring(L, 1);
   if (!msg) {
@@ -86,33 +68,10 @@ int Print(lua_State* L) {
   return 0;
 }
 
-struct HookBudget {
-  long long limit = 0;
-  long long used = 0;
-};
-constexpr int kHookEvery = 1000;
-const char kBudgetKey = 0;  // registry key by address: the hook runs every 1000 instructions
-void InstructionHook(lua_State* L, lua_Debug*) {
-  lua_rawgetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
-  auto* b = static_cast<HookBudget*>(lua_touserdata(L, -1));
-  lua_pop(L, 1);
-  if (b && (b->used += kHookEvery) > b->limit) luaL_error(L, "instruction limit exceeded (%I per call)", static_cast<lua_Integer>(b->limit));
-}
 }  // namespace
 
-/// Opens the standard libraries; the sandbox drops io, os and the loaders that reach files.
-void OpenLibraries(lua_State* L, bool sandbox) {
-  luaL_openlibs(L);
-  if (sandbox) {
-    for (const char* name : {"io", "os", "dofile", "loadfile"}) {
-      lua_pushnil(L);
-      lua_setglobal(L, name);
-    }
-  }
-}
-
 LuaController::~LuaController() {
-  if (L_) lua_close(L_);
+  CloseGuardedState(&guard_);
 }
 
 bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
@@ -120,8 +79,8 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   robot_ = robot;
   def_ = &def;
   controller_ = &model.controllers[def.controller];
-  alloc_.limit = options.sandbox ? options.memory_limit : 0;
-  L_ = lua_newstate(CountingAlloc, &alloc_);
+  guard_.name = "robot " + def.id;
+  L_ = NewGuardedState(&guard_, options);
   if (!L_) {
     *error = "robot " + def.id + ": cannot create a Lua state";
     return false;
@@ -130,7 +89,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   // Generational collection: the per-step values (positions, messages) die young, and the
   // incremental default lets them pile up to twice the live size before a cycle.
   lua_gc(L, LUA_GCGEN, 0, 0);
-  OpenLibraries(L, options.sandbox);
+  OpenGuardedLibraries(L, options.sandbox);
   // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
   {
     uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index);
@@ -143,13 +102,6 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   }
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-  if (options.sandbox && options.instruction_limit > 0) {
-    instruction_limit_ = options.instruction_limit;
-    auto* b = static_cast<HookBudget*>(lua_newuserdatauv(L, sizeof(HookBudget), 0));
-    *b = HookBudget{options.instruction_limit, 0};
-    lua_rawsetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
-    lua_sethook(L, InstructionHook, LUA_MASKCOUNT, kHookEvery);
-  }
   for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
     lua_pushlightuserdata(L, &log_);
     lua_pushcclosure(L, fn, 1);
@@ -193,8 +145,11 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     lua_settop(L, 0);
     return false;
   }
-  if (lua_pcall(L, 0, 0, base) != LUA_OK) {
-    *error = "robot " + def.id + ": " + lua_tostring(L, -1);
+  BeginGuardedCall(&guard_);
+  const int status = lua_pcall(L, 0, 0, base);
+  std::string stopped = EndGuardedCall(&guard_, status);
+  if (status != LUA_OK || !stopped.empty()) {
+    *error = "robot " + def.id + ": " + (stopped.empty() ? lua_tostring(L, -1) : script + ": " + stopped);
     lua_settop(L, 0);
     return false;
   }
@@ -203,12 +158,17 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
 }
 
 void LuaController::PushReadings() {
+  if (!L_) return;
   PushDeviceReadings(L_, *controller_, *robot_, &refs_);
 }
 
 bool LuaController::Call(const char* fn, bool required, std::string* error) {
   lua_State* L = L_;
   if (controller_->script.empty()) return true;
+  if (!L) {
+    *error = "robot " + def_->id + ": its Lua state was closed after an earlier error (in " + fn + ")";
+    return false;
+  }
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
   if (lua_getglobal(L, fn) != LUA_TFUNCTION) {
@@ -217,16 +177,19 @@ bool LuaController::Call(const char* fn, bool required, std::string* error) {
     *error = "robot " + def_->id + ": " + controller_->script + ": no global function '" + fn + "'";
     return false;
   }
-  if (instruction_limit_ > 0) {
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &kBudgetKey);
-    static_cast<HookBudget*>(lua_touserdata(L, -1))->used = 0;
-    lua_pop(L, 1);
-  }
-  int status = lua_pcall(L, 0, 0, base);
-  if (status != LUA_OK) {
+  BeginGuardedCall(&guard_);
+  const int status = lua_pcall(L, 0, 0, base);
+  std::string stopped = EndGuardedCall(&guard_, status);
+  if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
-    *error = "robot " + def_->id + ": " + (msg ? msg : "error") + " (in " + fn + ")";
+    *error = "robot " + def_->id + ": " + (!stopped.empty() ? controller_->script + ": " + stopped : msg ? msg : "error") +
+             " (in " + fn + ")";
     lua_settop(L, 0);
+    if (guard_.memory_exceeded) {
+      // Free what the runaway took; the robot never runs again.
+      CloseGuardedState(&guard_);
+      L_ = nullptr;
+    }
     return false;
   }
   lua_settop(L, 0);

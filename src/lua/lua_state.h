@@ -7,31 +7,18 @@
 
 #include "devices/robot_state.h"
 #include "lua/lua_device_refs.h"
+#include "lua/lua_guard.h"
 #include "model/model.h"
 
 struct lua_State;
 
 namespace essaim {
 
-struct LuaOptions {
-  bool sandbox = false;            // drop io/os, cap memory and instructions
-  size_t memory_limit = 0;         // bytes per state; 0 = none
-  long long instruction_limit = 0; // per call; 0 = none
-};
-
-/// Counts a state's bytes; enforces the memory cap.
-struct LuaAllocator {
-  size_t bytes = 0;
-  size_t peak = 0;
-  size_t limit = 0;
-  size_t allocations = 0;  // number of (re)allocations, for the no-churn test
-};
-
 class LuaController {
  public:
   LuaController() = default;
   ~LuaController();
-  // Lua keeps a pointer to alloc_ and closures keep `this`: never copied or moved.
+  // Lua keeps a pointer to guard_ and closures keep `this`: never copied or moved.
   LuaController(const LuaController&) = delete;
   LuaController& operator=(const LuaController&) = delete;
 
@@ -42,6 +29,7 @@ class LuaController {
   /// Copies the robot's Readings into its Lua tables (in place).
   void PushReadings();
   /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
+  /// A state that hit its memory limit is closed and its memory freed.
   bool CallInit(std::string* error) { return Call("init", false, error); }
   bool CallStep(std::string* error) { return Call("step", true, error); }
   bool CallReset(std::string* error) { return Call("reset", false, error); }
@@ -50,20 +38,19 @@ class LuaController {
   /// log()/logerr() output since the last take, in call order ("" if none). Buffered so
   /// robots stepped on several threads still print in robot order.
   std::string& LogBuffer() { return log_; }
-  const LuaAllocator& Memory() const { return alloc_; }
+  const LuaGuard& Memory() const { return guard_; }
   ::lua_State* State() { return L_; }
 
  private:
   bool Call(const char* fn, bool required, std::string* error);
 
   ::lua_State* L_ = nullptr;
-  LuaAllocator alloc_;
+  LuaGuard guard_;
   RobotState* robot_ = nullptr;
   const RobotDef* def_ = nullptr;
   const ControllerDef* controller_ = nullptr;
   std::string log_;
   int traceback_ref_ = -1;
-  long long instruction_limit_ = 0;
   LuaDeviceRefs refs_;  // device tables refreshed each tick
 };
 

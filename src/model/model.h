@@ -149,6 +149,8 @@ struct LoopFunctionsDef {
 
 struct ExperimentDef {
   int threads = 0;           // 0 = main thread only
+  long long lua_budget = -1;      // <system lua_budget>: instructions per Lua call; -1 = default
+  long long lua_memory_mib = -1;  // <system lua_memory>: MiB per Lua state; -1 = default
   int ticks_per_second = 10;
   uint64_t length_ticks = 0; // 0 = unlimited
   uint64_t seed = 0;

@@ -51,6 +51,7 @@ class Loader {
   }
   double Double(const XMLElement* e, const char* name, double def, bool required = false);
   long long Int(const XMLElement* e, const char* name, long long def, bool required = false);
+  void LoadWatchdog(const XMLElement* sys, ExperimentDef* x);
   bool Bool(const XMLElement* e, const char* name, bool def);
   Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
   void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
@@ -237,6 +238,7 @@ void Loader::LoadFramework(const XMLElement* e) {
   if (const XMLElement* sys = e->FirstChildElement("system")) {
     x.threads = static_cast<int>(Int(sys, "threads", 0));
     if (x.threads < 0) Error(sys, "threads must be >= 0");
+    LoadWatchdog(sys, &x);
     std::string method = Str(sys, "method", "balance_quantity");
     if (method != "balance_quantity" && method != "balance_length")
       Error(sys, "method must be balance_quantity or balance_length");
@@ -268,6 +270,19 @@ void Loader::LoadFramework(const XMLElement* e) {
   if (options_.ticks) x.length_ticks = *options_.ticks;
   if (options_.seed) x.seed = *options_.seed;
   if (options_.threads) x.threads = *options_.threads;
+}
+
+// The Lua watchdog's limits (0 = unlimited); the CLI's --lua-budget/--lua-memory win.
+void Loader::LoadWatchdog(const XMLElement* sys, ExperimentDef* x) {
+  if (Has(sys, "lua_budget")) {
+    x->lua_budget = Int(sys, "lua_budget", 0);
+    if (x->lua_budget < 0) Error(sys, "lua_budget must be >= 0 (instructions per call into Lua; 0 = unlimited)");
+  }
+  if (Has(sys, "lua_memory")) {
+    x->lua_memory_mib = Int(sys, "lua_memory", 0);
+    if (x->lua_memory_mib < 0 || x->lua_memory_mib > (1LL << 30))
+      Error(sys, "lua_memory must be between 0 and 2^30 (MiB per Lua state; 0 = unlimited)");
+  }
 }
 
 void Loader::LoadControllers(const XMLElement* e) {

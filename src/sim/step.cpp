@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "devices/devices.h"
+#include "sim/error_groups.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -97,11 +98,11 @@ StepStatus Step(World& w) {
 
   auto t5 = Clock::now();
   bool failed = false;
+  const size_t errors_before = w.controller_errors.size();
   for (int i = 0; i < n; ++i) {
     FlushLog(w, w.controllers[i]->LogBuffer());
     if (!w.pending_errors[i].empty()) {
       w.controller_errors.push_back({m.robots[i].id, w.tick, w.pending_errors[i]});
-      if (w.options.log_sink) w.options.log_sink('E', w.pending_errors[i]);
       w.pending_errors[i].clear();
       if (w.options.strict) {
         w.failure = w.controller_errors.back().message;
@@ -109,6 +110,9 @@ StepStatus Step(World& w) {
       }
     }
   }
+  // This tick's errors, identical ones grouped (after the logs, as before).
+  if (w.options.log_sink && w.controller_errors.size() > errors_before)
+    for (const std::string& text : GroupControllerErrors(w.controller_errors, errors_before)) w.options.log_sink('E', text);
   if (failed) return StepStatus::Failed;
   ok = LoopCall(w, "post_step");
   bool finished = false;

@@ -2,6 +2,7 @@
 
 #include "core/rng.h"
 #include "devices/devices.h"
+#include "sim/error_groups.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -61,6 +62,7 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
   w->pool = std::make_unique<ThreadPool>(w->threads);
 
   // Loop functions load first so the floor exists before anything senses it.
+  w->loop_functions.SetLimits(options.lua);
   if (!w->loop_functions.Load(model, &w->robots, &w->physics, options.output_dir, error)) return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
 
@@ -81,6 +83,9 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
       }
     }
   }
+  // Printed like step() errors, identical ones grouped.
+  if (options.log_sink)
+    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text);
   if (!w->loop_functions.Call("init", error)) return nullptr;
   return w;
 }

@@ -6,6 +6,7 @@ import signal
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import pytest
 
@@ -186,6 +187,7 @@ def test_only_successful_runs_count_as_finished(tmp_path):
     assert not sweep.finished(d, argv)
     (d / "summary.json").write_text("{not json")
     assert not sweep.finished(d, argv)
+    (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 0}))
     for status, done in (("ok", True), ("controller_error", True), ("failed", False),
                          ("interrupted", False)):
         (d / "summary.json").write_text(json.dumps({"seed": 1, "status": status,
@@ -194,8 +196,11 @@ def test_only_successful_runs_count_as_finished(tmp_path):
     (d / "summary.json").write_text(json.dumps({"seed": 1, "controller_errors": [{"robot": "a"}]}))
     assert sweep.finished(d, argv) and not sweep.finished(d, argv, strict=True)
     (d / "summary.json").write_text(json.dumps({"seed": 1}))
-    (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 0}))
     assert sweep.finished(d, argv)
+    # Without the sweep's marker (an orphan of a killed sweep wrote it): redone.
+    (d / sweep.RUN_RECORD).unlink()
+    assert not sweep.finished(d, argv)
+    (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 0}))
     assert not sweep.finished(d, argv + ["--ticks", "5"])  # made by another command line
     (d / sweep.RUN_RECORD).write_text(json.dumps({"argv": argv, "returncode": 1}))
     assert not sweep.finished(d, argv)
@@ -207,3 +212,36 @@ def test_error_is_the_stderr_tail_without_lua_tracebacks():
            "stack traceback:\n\t[C]: in function 'error'\n")
     assert sweep.stderr_tail(err) == "robot fb0: tiny.lua:13: boom\nessaim run: robot fb0: tiny.lua:13: boom"
     assert sweep.stderr_tail("\n".join(f"l{i}" for i in range(9))) == "l4\nl5\nl6\nl7\nl8"
+
+
+def _alive(pid: int) -> bool:
+    """Running (a zombie waiting for its reaper counts as dead)."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="PR_SET_PDEATHSIG is Linux's")
+def test_runs_die_with_a_killed_sweep(tmp_path):
+    fake = tmp_path / "slow-essaim"
+    fake.write_text('#!/bin/sh\nfor last; do :; done\necho $$ > "$last/pid"\nexec sleep 60\n')
+    fake.chmod(0o755)
+    s = write_sweep(tmp_path / "s.toml", seeds=2, out=str(tmp_path / "out"))
+    p = subprocess.Popen([sys.executable, str(SCRIPTS / "sweep.py"), str(s), "-j", "2",
+                          "--essaim", str(fake), "--no-progress"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    pids = []
+    deadline = time.time() + 20
+    while len(pids) < 2 and time.time() < deadline:
+        time.sleep(0.1)
+        pids = [int(f.read_text()) for f in (tmp_path / "out" / "runs").glob("*/pid")
+                if f.read_text().strip()]
+    assert len(pids) == 2, "the stand-in runs did not start"
+    p.kill()  # SIGKILL: the sweep cannot clean up
+    p.communicate(timeout=20)
+    deadline = time.time() + 10
+    while any(_alive(pid) for pid in pids) and time.time() < deadline:
+        time.sleep(0.1)
+    assert not any(_alive(pid) for pid in pids)

@@ -208,7 +208,7 @@ TEST(LuaHost, SandboxStopsARunawayStep) {
   ASSERT_TRUE(s.ok()) << s.error;
   Step(*s.world);
   ASSERT_EQ(s.world->controller_errors.size(), 1u);
-  EXPECT_NE(s.world->controller_errors[0].message.find("instruction limit"), std::string::npos)
+  EXPECT_NE(s.world->controller_errors[0].message.find("instruction budget exceeded (100000 instructions per call"), std::string::npos)
       << s.world->controller_errors[0].message;
 }
 

@@ -1,0 +1,321 @@
+#include "lua/lua_guard.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <lua.hpp>
+
+namespace essaim {
+
+namespace {
+// The hook runs every kHookEvery instructions: the budget is checked to this precision,
+// and the per-instruction cost stays one decrement in the VM.
+constexpr int kHookEvery = 1000;
+
+std::atomic<bool> g_interrupt{false};
+std::atomic<LuaStuckHandler> g_stuck_handler{nullptr};
+
+long long NowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
+  auto* g = static_cast<LuaGuard*>(ud);
+  const size_t old = ptr ? osize : 0;
+  if (nsize == 0) {
+    std::free(ptr);
+    g->bytes -= old;
+    return nullptr;
+  }
+  if (g->limit && nsize > old && g->bytes - old + nsize > g->limit) {
+    g->memory_exceeded = true;
+    return nullptr;  // Lua raises "not enough memory"; the owner reports the limit
+  }
+  void* p = std::realloc(ptr, nsize);
+  if (p) {
+    g->bytes = g->bytes - old + nsize;
+    g->peak = std::max(g->peak, g->bytes);
+    ++g->allocations;
+  }
+  return p;
+}
+
+void GuardHook(lua_State* L, lua_Debug*);
+
+/// Raises `what` at the interrupted line. From now on the hook fires at every instruction
+/// of this coroutine, so a pcall around the loop cannot swallow the stop.
+[[noreturn]] void Stop(lua_State* L, const char* what) {
+  lua_sethook(L, GuardHook, LUA_MASKCOUNT, 1);
+  lua_Debug ar;
+  if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
+    lua_pushfstring(L, "%s:%d: %s", ar.short_src, ar.currentline, what);
+  else
+    lua_pushstring(L, what);
+  lua_error(L);
+  std::abort();  // lua_error does not return
+}
+
+void GuardHook(lua_State* L, lua_Debug*) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  auto* g = static_cast<LuaGuard*>(ud);
+  // lua_gethookcount: a coroutine stopped earlier may count every instruction.
+  if (g->budget > 0 && (g->budget_exceeded || (g->used += lua_gethookcount(L)) > g->budget)) {
+    g->budget_exceeded = true;
+    char what[96];
+    std::snprintf(what, sizeof what, "instruction budget exceeded (%lld instructions per call, --lua-budget)", g->budget);
+    Stop(L, what);
+  }
+  if (g->interrupted.load(std::memory_order_relaxed)) Stop(L, "interrupted by a signal");
+  if (g->wall_exceeded.load(std::memory_order_relaxed)) {
+    char what[96];
+    std::snprintf(what, sizeof what, "wall-clock limit exceeded (%g s per call)", g->wall_seconds);
+    Stop(L, what);
+  }
+}
+
+// The monitor: one thread for the process, started with the first state. It arms the
+// hook of calls that run long, flags wall-clock overruns and signals. Leaked on purpose,
+// so that it outlives static destructors at exit.
+struct Monitor {
+  std::mutex mutex;
+  std::vector<LuaGuard*> guards;
+};
+
+void Watch(LuaGuard* g, long long now) {
+  const long long start = g->call_started_ns.load(std::memory_order_relaxed);
+  if (start == 0) return;
+  const double s = static_cast<double>(now - start) * 1e-9;
+  if (s < kArmAfterSeconds) return;
+  if (g_interrupt.load(std::memory_order_relaxed)) g->interrupted.store(true, std::memory_order_relaxed);
+  if (g->wall_seconds > 0 && s > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
+  // Re-armed if the script cleared it (debug.sethook()). lua_sethook may be called
+  // asynchronously (ldebug.c).
+  if (lua_gethook(g->state) != GuardHook) {
+    lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);
+    g->armed.store(true, std::memory_order_relaxed);
+  }
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    if (g->running && lua_gethook(g->running) != GuardHook) lua_sethook(g->running, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  }
+  // No hook ran for another full limit: stuck inside a C function (a pathological
+  // string.find), which cannot be unwound safely. Stop the process with a message.
+  if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1) {
+    char message[160];
+    std::snprintf(message, sizeof message, "%s: stuck for %.0f s inside a C function called from Lua; stopping (exit 1)",
+                  g->name.c_str(), s);
+    if (LuaStuckHandler handler = g_stuck_handler.load()) handler(message);
+    std::fprintf(stderr, "essaim: %s\n", message);
+    std::fflush(stderr);
+    _exit(1);
+  }
+}
+
+Monitor& TheMonitor() {
+  static Monitor* m = [] {
+    auto* mon = new Monitor;
+    std::thread([mon] {
+      for (;;) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::lock_guard<std::mutex> lock(mon->mutex);
+        const long long now = NowNs();
+        for (LuaGuard* g : mon->guards) Watch(g, now);
+      }
+    }).detach();
+    return mon;
+  }();
+  return *m;
+}
+
+LuaGuard* GuardOf(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return static_cast<LuaGuard*>(ud);
+}
+
+// coroutine.resume, recording which coroutine runs (for the monitor) and handing it the
+// hook when the call is already armed.
+int GuardedResume(lua_State* L) {
+  LuaGuard* g = GuardOf(L);
+  lua_State* co = lua_tothread(L, 1);  // null: the original raises the usual error
+  lua_State* previous;
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    previous = g->running;
+    g->running = co;
+  }
+  if (co && lua_gethook(L) == GuardHook && lua_gethook(co) != GuardHook)
+    lua_sethook(co, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  const int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);
+  {
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    g->running = previous;
+  }
+  if (status != LUA_OK) return lua_error(L);
+  return lua_gettop(L);
+}
+
+// coroutine.wrap over the guarded resume; errors are re-raised with the caller's position,
+// as the original's.
+const char kGuardedWrap[] = R"(
+local create, resume, error = coroutine.create, coroutine.resume, error
+return function(f)
+  local co = create(f)
+  local function finish(ok, ...)
+    if not ok then error((...), 2) end
+    return ...
+  end
+  return function(...) return finish(resume(co, ...)) end
+end
+)";
+
+void GuardCoroutines(lua_State* L) {
+  lua_getglobal(L, "coroutine");
+  lua_getfield(L, -1, "resume");
+  lua_pushcclosure(L, GuardedResume, 1);
+  lua_setfield(L, -2, "resume");
+  if (luaL_loadbufferx(L, kGuardedWrap, sizeof kGuardedWrap - 1, "=coroutine.wrap", "t") == LUA_OK &&
+      lua_pcall(L, 0, 1, 0) == LUA_OK)
+    lua_setfield(L, -2, "wrap");
+  else
+    lua_pop(L, 1);
+  lua_pop(L, 1);
+}
+
+int TextOnlyLoad(lua_State* L) {
+  // load(chunk, chunkname, mode, env) with mode forced to "t": no bytecode in the sandbox.
+  if (lua_gettop(L) < 3) lua_settop(L, 3);
+  lua_pushliteral(L, "t");
+  lua_replace(L, 3);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+// package.searchers[2] under the sandbox: Lua files on package.path, as text only.
+int TextOnlyLuaSearcher(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "searchpath");
+  lua_pushstring(L, name);
+  lua_getfield(L, -3, "path");
+  lua_call(L, 2, 2);  // filename, or nil and the places tried
+  if (lua_isnil(L, -2)) return 1;
+  const char* filename = lua_tostring(L, -2);
+  if (luaL_loadfilex(L, filename, "t") != LUA_OK)
+    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, filename, lua_tostring(L, -1));
+  lua_pushstring(L, filename);
+  return 2;
+}
+}  // namespace
+
+lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
+  guard->limit = options.memory_limit;
+  guard->budget = options.instruction_limit;
+  guard->wall_seconds = options.wall_seconds;
+  lua_State* L = lua_newstate(GuardedAlloc, guard);
+  guard->state = L;
+  if (!L) return nullptr;
+  if (options.sandbox) {
+    // Every instruction counted, in every coroutine (they inherit the hook).
+    guard->always_armed = true;
+    guard->armed = true;
+    lua_sethook(L, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  }
+  Monitor& m = TheMonitor();
+  std::lock_guard<std::mutex> lock(m.mutex);
+  m.guards.push_back(guard);
+  return L;
+}
+
+void CloseGuardedState(LuaGuard* guard) {
+  if (!guard->state) return;
+  Monitor& m = TheMonitor();
+  std::lock_guard<std::mutex> lock(m.mutex);
+  m.guards.erase(std::remove(m.guards.begin(), m.guards.end(), guard), m.guards.end());
+  lua_close(guard->state);
+  guard->state = nullptr;
+}
+
+void OpenGuardedLibraries(lua_State* L, bool sandbox) {
+  luaL_openlibs(L);
+  GuardCoroutines(L);
+  if (!sandbox) return;
+  for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
+    lua_pushnil(L);
+    lua_setglobal(L, name);
+  }
+  lua_getglobal(L, "package");
+  const int package = lua_gettop(L);
+  lua_getfield(L, package, "loaded");
+  for (const char* name : {"io", "os", "debug"}) {
+    lua_pushnil(L);
+    lua_setfield(L, -2, name);
+  }
+  lua_pop(L, 1);
+  lua_pushnil(L);
+  lua_setfield(L, package, "loadlib");
+  lua_pushliteral(L, "");
+  lua_setfield(L, package, "cpath");
+  // Keep the preload searcher and Lua files (as text); drop the two that load C libraries.
+  lua_getfield(L, package, "searchers");
+  lua_pushcfunction(L, TextOnlyLuaSearcher);
+  lua_rawseti(L, -2, 2);
+  lua_pushnil(L);
+  lua_rawseti(L, -2, 4);
+  lua_pushnil(L);
+  lua_rawseti(L, -2, 3);
+  lua_pop(L, 1);
+  lua_pop(L, 1);
+  lua_getglobal(L, "load");
+  lua_pushcclosure(L, TextOnlyLoad, 1);
+  lua_setglobal(L, "load");
+}
+
+void BeginGuardedCall(LuaGuard* g) {
+  g->used = 0;
+  g->budget_exceeded = false;
+  g->wall_exceeded.store(false, std::memory_order_relaxed);
+  g->interrupted.store(false, std::memory_order_relaxed);
+  if (g->always_armed) {
+    if (lua_gethookcount(g->state) != kHookEvery || lua_gethook(g->state) != GuardHook)
+      lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);  // after a stop, or debug.sethook
+  } else if (g->armed.load(std::memory_order_relaxed)) {
+    lua_sethook(g->state, nullptr, 0, 0);  // the last call ran long; this one starts unhooked
+    g->armed.store(false, std::memory_order_relaxed);
+  }
+  g->call_started_ns.store(NowNs(), std::memory_order_relaxed);
+}
+
+std::string EndGuardedCall(LuaGuard* g, int status) {
+  g->call_started_ns.store(0, std::memory_order_relaxed);
+  if (g->memory_exceeded) {
+    char what[96];
+    if (g->limit >= (size_t{1} << 20))
+      std::snprintf(what, sizeof what, "memory limit exceeded (%zu MiB per Lua state, --lua-memory)", g->limit >> 20);
+    else
+      std::snprintf(what, sizeof what, "memory limit exceeded (%zu bytes per Lua state, --lua-memory)", g->limit);
+    return what;
+  }
+  // Limits hit but caught by the script's own pcall still stop it.
+  if (status == LUA_OK && g->budget_exceeded) return "instruction budget exceeded (caught by the script)";
+  if (status == LUA_OK && g->wall_exceeded.load(std::memory_order_relaxed)) return "wall-clock limit exceeded";
+  return {};
+}
+
+void SetLuaStuckHandler(LuaStuckHandler handler) { g_stuck_handler.store(handler); }
+
+void RequestLuaInterrupt() { g_interrupt.store(true, std::memory_order_relaxed); }
+
+}  // namespace essaim

@@ -1,0 +1,82 @@
+// The watchdog every lua_State runs under, controllers and loop functions alike
+// (docs/sandbox.md): a memory cap in the allocator, an instruction budget per call counted
+// by a count hook, interrupt requests (signals, the wall-clock monitor) seen by the same
+// hook, and the sandbox's library set.
+//
+// Lua 5.4 pays for a count hook at every instruction (the VM's trap path), whatever the
+// count: ~65% more Lua time on the foraging benchmark. So by default the hook is armed
+// only when a call has run kArmAfterSeconds (by a monitor thread); a normal step never
+// pays. Under --sandbox it is armed from the start and counts every instruction.
+#pragma once
+#include <atomic>
+#include <cstddef>
+#include <mutex>
+#include <string>
+
+struct lua_State;
+
+namespace essaim {
+
+/// The watchdog's limits, on by default (--lua-budget, --lua-memory, <system lua_budget>).
+/// A call running this long gets the count hook (and, after a signal, is interrupted).
+constexpr double kArmAfterSeconds = 0.1;
+
+struct LuaOptions {
+  bool sandbox = false;                       // no io, os, debug, loadlib, C modules, bytecode
+  size_t memory_limit = size_t{256} << 20;    // bytes per state; 0 = unlimited
+  long long instruction_limit = 1000000000;   // per call into Lua; 0 = unlimited
+  double wall_seconds = 60;                   // per call, backstop for time in C functions; 0 = off
+};
+
+/// One state's accounting. Its address is the allocator's user data: never moved.
+struct LuaGuard {
+  // Memory.
+  size_t bytes = 0;
+  size_t peak = 0;
+  size_t limit = 0;
+  size_t allocations = 0;  // number of (re)allocations, for the no-churn test
+  bool memory_exceeded = false;
+  // Instructions, counted per call.
+  long long budget = 0;
+  long long used = 0;
+  bool budget_exceeded = false;
+  bool always_armed = false;              // --sandbox: hooked from the first instruction
+  std::atomic<bool> armed{false};         // the count hook is installed
+  std::string name;  // "robot fb3" or "loop functions", for the stuck-in-C message
+  // Wall clock: the monitor thread reads these while the owner's thread runs Lua.
+  lua_State* state = nullptr;
+  double wall_seconds = 0;
+  std::atomic<long long> call_started_ns{0};  // 0: not inside a call
+  std::atomic<bool> wall_exceeded{false};
+  std::atomic<bool> interrupted{false};   // a signal arrived while this call was stuck
+  // The coroutine being resumed (null: the main thread), so that the monitor arms the
+  // thread that actually runs: hooks are per coroutine.
+  std::mutex thread_mutex;
+  lua_State* running = nullptr;
+};
+
+/// A new state whose allocator is `guard`'s, with the hook installed (budget, interrupts).
+/// Registers the state with the wall-clock monitor; close it with CloseGuardedState.
+lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options);
+void CloseGuardedState(LuaGuard* guard);
+
+/// The standard libraries; under the sandbox, without anything that reaches files,
+/// processes, native code, bytecode or the hooks.
+void OpenGuardedLibraries(lua_State* L, bool sandbox);
+
+/// Brackets one call into Lua: resets the budget and arms the wall clock.
+void BeginGuardedCall(LuaGuard* guard);
+/// Ends the call. When the guard stopped it (or a limit was hit and caught inside the
+/// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),
+/// else "". `status` is lua_pcall's result.
+std::string EndGuardedCall(LuaGuard* guard, int status);
+
+/// Called (from the monitor thread) just before the process exits because a call is stuck
+/// inside a C function: the last chance to write summary.json. Null: none.
+using LuaStuckHandler = void (*)(const std::string& message);
+void SetLuaStuckHandler(LuaStuckHandler handler);
+
+/// Asks every state to stop at its next hook (async-signal-safe): SIGINT/SIGTERM.
+void RequestLuaInterrupt();
+
+}  // namespace essaim
