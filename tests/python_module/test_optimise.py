@@ -71,3 +71,20 @@ def test_multi_objective_writes_a_pareto_front(tmp_path):
 def test_overlapping_seeds_are_refused(tmp_path):
     p = optimise(str(write_study(tmp_path / "s.toml")), "--seeds", "1,9", "--out", str(tmp_path / "o"))
     assert p.returncode == 2 and "overlap" in p.stderr
+
+
+def test_plot_study_draws_history_importances_and_pareto(tmp_path):
+    pytest.importorskip("essaim")
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "out"
+    p = optimise(str(write_study(tmp_path / "s.toml")), "--multi", "--trials", "3", "--ticks", "100",
+                 "--out", str(out), "--no-eval")
+    assert p.returncode == 0, p.stderr
+    p = subprocess.run([sys.executable, str(ROOT / "scripts" / "plot_study.py"), str(out)],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    for name in ("history.png", "importances.png", "pareto.png"):
+        assert (out / name).read_bytes()[:4] == b"\x89PNG"
+    p = subprocess.run([sys.executable, str(ROOT / "scripts" / "plot_study.py"), str(tmp_path / "none")],
+                       capture_output=True, text=True)
+    assert p.returncode == 2 and "no study database" in p.stderr
