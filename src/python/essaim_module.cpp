@@ -13,6 +13,7 @@
 
 #include "output/atomic_file.h"
 #include "model/xml_loader.h"
+#include "output/run_end.h"
 #include "output/summary.h"
 #include "sim/step.h"
 
@@ -144,27 +145,15 @@ class Simulation {
     World& w = Live();
     RunInfo info;
     info.version = ESSAIM_VERSION;
-    if (status_ == StepStatus::Failed) {
-      info.status = w.controller_errors.empty() ? "failed" : "controller_error";
-      info.finished_by = "error";
-    } else if (w.finished_by_loop_functions) {
-      info.finished_by = "loop_functions";
-    } else if (!LengthReached(w)) {
-      info.finished_by = "finish";  // stopped by the caller before the experiment's end
-    }
+    if (status_ == StepStatus::Running) info.finished_by = "finish";  // stopped before the end
     Json metrics;
     bool has_metrics = false;
-    std::string error;
-    bool ok = true;
     {
       py::gil_scoped_release nogil;
-      if (status_ != StepStatus::Failed && !FinishRun(w, &metrics, &has_metrics, &error)) {
-        w.failure = error;
-        info.status = "failed";
-        ok = false;
-      }
+      EndRun(w, status_, &info, &metrics, &has_metrics);
     }
-    if (info.status == "ok" && !w.controller_errors.empty()) info.status = "controller_error";
+    bool ok = !(info.status == "failed" && status_ != StepStatus::Failed);
+    std::string error;
     info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     finished_ = true;
     summary_ = FromJson(BuildSummary(w, info));
