@@ -63,7 +63,9 @@ def main(argv=None) -> int:
     if len(done) >= 2:
         # PED-ANOVA: Optuna's own importance evaluator (fANOVA would need scikit-learn).
         ev = optuna.importance.PedAnovaImportanceEvaluator()
-        ax = ovm.plot_param_importances(study, evaluator=ev, target=target, target_name=names[0])
+        # With a target PED-ANOVA ranks what makes it low: negate trips (maximised).
+        low = (lambda t: -t.values[0]) if multi else None
+        ax = ovm.plot_param_importances(study, evaluator=ev, target=low, target_name=names[0])
         ax.set_yticklabels([short(t.get_text()) for t in ax.get_yticklabels()])
         save(ax, "importances.png", f"Parameter importances for {names[0]} (PED-ANOVA)")
     if multi:
