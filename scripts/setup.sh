@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libbox2d-dev liblua5.4-dev lua5.4 libtinyxml2-dev libeigen3-dev libpng-dev libcairo2-dev
-          libgtest-dev googletest libcli11-dev nlohmann-json3-dev python3 python3-venv python3-pip chromium)
+          libgtest-dev googletest libcli11-dev nlohmann-json3-dev python3 python3-venv python3-pip python3-dev
+          pybind11-dev chromium)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -26,4 +27,7 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DESSAIM_PYTHON="$PWD/.venv/bin/python3" > /dev/null
 cmake --build build
-echo "essaim setup: built build/essaim"
+# `import essaim` in the venv: a .pth file puts build/python (the module) on its path.
+site=$(.venv/bin/python3 -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+echo "$PWD/build/python" > "$site/essaim-build.pth"
+echo "essaim setup: built build/essaim and the Python module (.venv/bin/python -c 'import essaim')"

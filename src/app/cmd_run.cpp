@@ -20,6 +20,7 @@
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
+#include "output/run_end.h"
 #include "output/summary.h"
 #include "sim/step.h"
 
@@ -243,20 +244,9 @@ static int Run(RunArgs& r) {
     status = StepStatus::Running;
     world->failure.clear();
   }
-  if (status == StepStatus::Failed) {
-    info.status = world->controller_errors.empty() ? "failed" : "controller_error";
-    info.finished_by = "error";
-  } else if (world->finished_by_loop_functions) {
-    info.finished_by = "loop_functions";
-  }
   Json metrics;
   bool has_metrics = false;
-  std::string finish_error;
-  if (status != StepStatus::Failed && !FinishRun(*world, &metrics, &has_metrics, &finish_error)) {
-    world->failure = finish_error;
-    info.status = "failed";
-  }
-  if (info.status == "ok" && !world->controller_errors.empty()) info.status = "controller_error";
+  EndRun(*world, status, &info, &metrics, &has_metrics);
   info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The recording ends with the run, however it ended (interrupted and failed runs too).
   if (recorder.IsOpen()) {

@@ -1,0 +1,18 @@
+"""Shared paths for the module and optimiser tests. ctest puts the built module on
+PYTHONPATH and the essaim executable in $ESSAIM."""
+import os
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+FORAGING = str(ROOT / "arenas" / "foraging.argos")
+SMALL = {"arena.distribute.entity.quantity": 5}  # a fast variant of the report's arena
+
+
+@pytest.fixture(scope="session")
+def essaim_bin():
+    path = os.environ.get("ESSAIM")
+    if not path or not os.access(path, os.X_OK):
+        pytest.skip("ESSAIM is not set to the essaim executable (ctest sets it)")
+    return path
