@@ -294,7 +294,13 @@ CommandMain AddRunCommand(CLI::App& app) {
   auto budget = std::make_shared<double>(-1);
   sub->add_option("--lua-budget", *budget, "instructions per call into Lua (default 1e9; 0 = unlimited)")
       ->type_name("N")
-      ->check(CLI::Range(0.0, 9e18));
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            auto d = ParseDouble(v);  // 1e9 is welcome
+            if (d && *d >= 0 && *d < 9e18 && *d == std::floor(*d)) return "";
+            return "'" + v + "' must be a non-negative integer (instructions per call; 0 = unlimited)";
+          },
+          ""));
   sub->add_option("--lua-memory", r->lua_memory_mib, "MiB per Lua state (default 256; 0 = unlimited)")
       ->type_name("MIB")
       ->check(IntegerIn(0, 1LL << 30, "0 = unlimited"));
