@@ -109,6 +109,12 @@ class Loader {
   Rng sim_rng_;
 };
 
+// Upper bounds on .argos numbers that size threads, loops or casts (docs/compatibility.md).
+constexpr long long kMaxThreads = 1024;
+constexpr long long kMaxTicksPerSecond = 1000000;
+constexpr long long kMaxIterations = 100000;
+constexpr double kMaxLengthTicks = 1e15;
+
 double Loader::Double(const XMLElement* e, const char* name, double def, bool required) {
   const char* v = e->Attribute(name);
   if (!v) {
@@ -236,8 +242,12 @@ void Loader::LoadFramework(const XMLElement* e) {
   CheckChildren(e, {"system", "experiment", "profiling"}, "expected system, experiment, profiling");
   ExperimentDef& x = model_->experiment;
   if (const XMLElement* sys = e->FirstChildElement("system")) {
-    x.threads = static_cast<int>(Int(sys, "threads", 0));
-    if (x.threads < 0) Error(sys, "threads must be >= 0");
+    // Bounded so a typo cannot ask std::thread for 100000 threads (std::system_error, abort).
+    long long threads = Int(sys, "threads", 0);
+    if (threads < 0 || threads > kMaxThreads)
+      Error(sys, "threads must be between 0 and " + std::to_string(kMaxThreads));
+    else
+      x.threads = static_cast<int>(threads);
     LoadWatchdog(sys, &x);
     std::string method = Str(sys, "method", "balance_quantity");
     if (method != "balance_quantity" && method != "balance_length")
@@ -248,15 +258,23 @@ void Loader::LoadFramework(const XMLElement* e) {
     Error(e, "missing required <experiment>");
     return;
   }
-  x.ticks_per_second = static_cast<int>(Int(exp, "ticks_per_second", 10, true));
-  if (x.ticks_per_second <= 0) {
-    Error(exp, "ticks_per_second must be > 0");
-    x.ticks_per_second = 10;
+  long long tps = Int(exp, "ticks_per_second", 10, true);
+  if (tps <= 0 || tps > kMaxTicksPerSecond) {
+    Error(exp, "ticks_per_second must be between 1 and " + std::to_string(kMaxTicksPerSecond));
+    tps = 10;
   }
+  x.ticks_per_second = static_cast<int>(tps);
   double length = Double(exp, "length", 0);
-  if (length < 0) Error(exp, "length must be >= 0");
-  // ARGoS truncates length × ticks_per_second (spec §10.1, quirk 11).
-  x.length_ticks = static_cast<uint64_t>(std::max(0.0, length * x.ticks_per_second));
+  // ARGoS truncates length × ticks_per_second (spec §10.1, quirk 11). The bound keeps the
+  // product inside uint64_t: length="1e300" was undefined behaviour in the cast.
+  double ticks = length * x.ticks_per_second;
+  if (length < 0) {
+    Error(exp, "length must be >= 0");
+  } else if (ticks > kMaxLengthTicks) {
+    Error(exp, "length is too long: length x ticks_per_second must be at most 1e15 ticks");
+  } else {
+    x.length_ticks = static_cast<uint64_t>(ticks);
+  }
   long long seed = Int(exp, "random_seed", 0);
   if (seed < 0) Error(exp, "random_seed must be >= 0");
   x.seed = static_cast<uint64_t>(std::max(0LL, seed));
@@ -376,8 +394,11 @@ void Loader::LoadPhysics(const XMLElement* e) {
     }
     PhysicsDef& p = model_->physics;
     p.id = Str(c, "id", "dyn2d");
-    p.iterations = static_cast<int>(Int(c, "iterations", 10));
-    if (p.iterations < 1) Error(c, "iterations must be >= 1");
+    long long iterations = Int(c, "iterations", 10);
+    if (iterations < 1 || iterations > kMaxIterations)
+      Error(c, "iterations must be between 1 and " + std::to_string(kMaxIterations));
+    else
+      p.iterations = static_cast<int>(iterations);
     p.gripping_rigidity = Double(c, "gripping_rigidity", p.gripping_rigidity);
     if (p.gripping_rigidity <= 0) Error(c, "gripping_rigidity must be > 0");
     CheckChildren(c, {"friction", "spatial_hash", "boundaries"}, "expected friction, spatial_hash, boundaries");
@@ -448,9 +469,13 @@ bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
   r->id = Required(e, "id");
   r->loc = Loc(e);
   r->rab_range = Double(e, "rab_range", 3.0);
-  r->rab_data_size = static_cast<int>(Int(e, "rab_data_size", 10));
+  long long rab_data_size = Int(e, "rab_data_size", 10);
   if (r->rab_range < 0) Error(e, "rab_range must be >= 0");
-  if (r->rab_data_size < 0 || r->rab_data_size > 65536) Error(e, "rab_data_size out of range");
+  // Checked before the cast to int: a huge value used to wrap into range.
+  if (rab_data_size < 0 || rab_data_size > 65536)
+    Error(e, "rab_data_size out of range");
+  else
+    r->rab_data_size = static_cast<int>(rab_data_size);
   r->camera_aperture = DegToRad(Double(e, "omnidirectional_camera_aperture", 70));
   CheckChildren(e, {"body", "controller", "battery", "dynamics2d"}, "expected body, controller, battery, dynamics2d");
   if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &r->pose, &r->z);

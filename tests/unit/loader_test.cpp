@@ -98,6 +98,31 @@ TEST(Loader, UnsupportedDeviceIsNamed) {
   EXPECT_NE(e.Format().find("<perspective_camera>: unknown sensor"), std::string::npos) << e.Format();
 }
 
+// Numbers that size threads, loops or integer casts are bounded with a clear error, not UB
+// (length="1e300" overflowed the cast to uint64_t; threads="100000" aborted in std::thread).
+TEST(Loader, HugeNumbersAreClearErrors) {
+  TempDir d;
+  d.Write("c.lua", "");
+  std::string xml = Experiment("", kCtrl);
+  size_t at = xml.find("<experiment");
+  LoadOptions o;
+  o.overrides = {"framework.experiment.length=1e300"};
+  ErrorList e1;
+  EXPECT_FALSE(LoadText(d, xml, &e1, o));
+  EXPECT_NE(e1.Format().find("length is too long"), std::string::npos) << e1.Format();
+  EXPECT_NE(e1.Format().find("x.argos:"), std::string::npos) << e1.Format();
+  o.overrides = {"framework.experiment.ticks_per_second=99999999999"};
+  ErrorList e2;
+  EXPECT_FALSE(LoadText(d, xml, &e2, o));
+  EXPECT_NE(e2.Format().find("ticks_per_second must be between 1 and 1000000"), std::string::npos)
+      << e2.Format();
+  std::string with_system = xml;
+  with_system.replace(at, 0, "<system threads=\"100000\"/>");
+  ErrorList e3;
+  EXPECT_FALSE(LoadText(d, with_system, &e3));
+  EXPECT_NE(e3.Format().find("threads must be between 0 and 1024"), std::string::npos) << e3.Format();
+}
+
 TEST(Loader, SetOverridesAttributesByPath) {
   TempDir d;
   d.Write("c.lua", "");
