@@ -375,6 +375,49 @@ bool RecordingWriter::Finish(const World& world, std::string* error) {
 
 // ---- reader -----------------------------------------------------------------------
 
+namespace {
+// Every number a reader draws with must be finite and of a size a 2D arena can have:
+// Cairo spins on NaN or astronomically large paths, and libpng/Cairo would try to allocate
+// whatever a damaged floor header claims.
+constexpr double kMaxCoordinate = 1e5;  // m
+bool Bounded(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+bool SaneScale(const RecordingScene& s) {
+  return Bounded(s.arena_min.x(), -kMaxCoordinate, kMaxCoordinate) &&
+         Bounded(s.arena_min.y(), -kMaxCoordinate, kMaxCoordinate) &&
+         Bounded(s.arena_size.x(), 1e-3, kMaxCoordinate) && Bounded(s.arena_size.y(), 1e-3, kMaxCoordinate) &&
+         Bounded(s.position_unit, 1e-9, 1.0) && Bounded(s.robot_radius, 0, 100) && s.every >= 1;
+}
+
+/// Width and height from a PNG's IHDR chunk (bytes 16..23), 0 when it is not a PNG.
+void PngSize(const std::string& png, uint32_t* w, uint32_t* h) {
+  static const unsigned char kSig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  *w = *h = 0;
+  if (png.size() < 24 || std::memcmp(png.data(), kSig, 8) != 0 || png.compare(12, 4, "IHDR") != 0) return;
+  const auto* b = reinterpret_cast<const uint8_t*>(png.data());
+  *w = (uint32_t{b[16]} << 24) | (uint32_t{b[17]} << 16) | (uint32_t{b[18]} << 8) | b[19];
+  *h = (uint32_t{b[20]} << 24) | (uint32_t{b[21]} << 16) | (uint32_t{b[22]} << 8) | b[23];
+}
+
+bool SaneGeometry(const RecordingScene& s) {
+  for (const RecordedObstacle& o : s.obstacles)
+    if (!Bounded(o.pose.x, -kMaxCoordinate, kMaxCoordinate) || !Bounded(o.pose.y, -kMaxCoordinate, kMaxCoordinate) ||
+        !Bounded(o.pose.yaw, -1e9, 1e9) || !Bounded(o.size_x, 0, kMaxCoordinate) ||
+        !Bounded(o.size_y, 0, kMaxCoordinate) || !Bounded(o.radius, 0, kMaxCoordinate) ||
+        !Bounded(o.height, 0, kMaxCoordinate))
+      return false;
+  for (const RecordedLight& l : s.lights)
+    if (!Bounded(l.position.x(), -kMaxCoordinate, kMaxCoordinate) ||
+        !Bounded(l.position.y(), -kMaxCoordinate, kMaxCoordinate) ||
+        !Bounded(l.position.z(), -kMaxCoordinate, kMaxCoordinate) || !std::isfinite(l.intensity))
+      return false;
+  if (s.floor_png.empty()) return true;
+  uint32_t w, h;
+  PngSize(s.floor_png, &w, &h);
+  return w >= 1 && h >= 1 && w <= kRecordingFloorMaxSide && h <= kRecordingFloorMaxSide;
+}
+}  // namespace
+
 bool Recording::Read(const std::string& path, Recording* out, std::string* error) {
   std::string bytes;
   if (!ReadFile(path, &bytes)) {
@@ -416,9 +459,11 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
   s.arena_size = Vec2(sx, sy);
   s.position_unit = in.F64();
   s.robot_radius = in.F64();
-  if (!in.ok || r.header_bytes_ > r.bytes_.size() ||
-      r.frame_bytes_ != kFrameTickBytes + kRecordedRobotBytes * robots + kRecordedMovableBytes * movable ||
-      movable > obstacles || !(s.position_unit > 0)) {
+  // In 64 bits: a damaged count must not wrap the product into a plausible frame size.
+  const uint64_t frame_bytes = uint64_t{kFrameTickBytes} + uint64_t{kRecordedRobotBytes} * robots +
+                               uint64_t{kRecordedMovableBytes} * movable;
+  if (!in.ok || r.header_bytes_ > r.bytes_.size() || r.frame_bytes_ != frame_bytes || movable > obstacles ||
+      !SaneScale(s)) {
     *error = "corrupt recording header";
     return false;
   }
@@ -464,6 +509,10 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
     return false;
   }
   s.floor_png.assign(reinterpret_cast<const char*>(png), png_bytes);
+  if (!SaneGeometry(s)) {
+    *error = "corrupt recording scene (non-finite or out-of-range geometry, or a bad floor image)";
+    return false;
+  }
   r.frame_count_ = (r.bytes_.size() - r.header_bytes_) / r.frame_bytes_;
   if (r.frame_count_ == 0) {
     *error = "recording has no frame";
