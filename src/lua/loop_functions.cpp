@@ -133,6 +133,16 @@ struct LoopFunctionsAccess {
 };
 
 namespace {
+// _G[name] read raw: these lookups run outside any pcall, so a script's metamethod on _G
+// must not run there.
+int RawGlobal(lua_State* L, const char* name) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushstring(L, name);
+  int type = lua_rawget(L, -2);
+  lua_remove(L, -2);
+  return type;
+}
+
 int Traceback(lua_State* L) {
   const char* msg = lua_tostring(L, 1);
   luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
@@ -346,6 +356,8 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_setfield(L, -2, "random");
   lua_pushcfunction(L, LoopFunctionsAccess::Timeseries);
   lua_setfield(L, -2, "timeseries");
+  lua_pushvalue(L, -1);
+  experiment_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_setglobal(L, "experiment");
 
   std::string dir = DirName(script_);
@@ -366,9 +378,12 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
 
 void LoopFunctions::SetTick(uint64_t tick) {
   if (!L_) return;
-  lua_getglobal(L_, "experiment");
+  // The host's own reference and a raw set, outside any pcall: no global a script rebinds
+  // (`experiment = nil`) and no metamethod it adds can make this raise (a Lua panic).
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, experiment_ref_);
+  lua_pushliteral(L_, "tick");
   lua_pushinteger(L_, static_cast<lua_Integer>(tick));
-  lua_setfield(L_, -2, "tick");
+  lua_rawset(L_, -3);
   lua_pop(L_, 1);
 }
 
@@ -392,14 +407,14 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string
 
 bool LoopFunctions::HasFunction(const char* name) {
   if (!L_) return false;
-  bool has = lua_getglobal(L_, name) == LUA_TFUNCTION;
+  bool has = RawGlobal(L_, name) == LUA_TFUNCTION;
   lua_pop(L_, 1);
   return has;
 }
 
 bool LoopFunctions::Call(const char* name, std::string* error) {
   if (!L_) return true;
-  if (lua_getglobal(L_, name) != LUA_TFUNCTION) {
+  if (RawGlobal(L_, name) != LUA_TFUNCTION) {
     lua_pop(L_, 1);
     return true;
   }
@@ -410,7 +425,7 @@ bool LoopFunctions::Call(const char* name, std::string* error) {
 
 bool LoopFunctions::FloorColor(double x, double y, Color* out, std::string* error) {
   lua_State* L = L_;
-  lua_getglobal(L, "floor_color");
+  RawGlobal(L, "floor_color");
   lua_pushnumber(L, x);
   lua_pushnumber(L, y);
   if (!PCall(2, 3, "floor_color", error)) return false;
@@ -433,7 +448,7 @@ bool LoopFunctions::FloorColor(double x, double y, Color* out, std::string* erro
 bool LoopFunctions::IsExperimentFinished(bool* finished, std::string* error) {
   *finished = false;
   if (!L_) return true;
-  if (lua_getglobal(L_, "is_experiment_finished") != LUA_TFUNCTION) {
+  if (RawGlobal(L_, "is_experiment_finished") != LUA_TFUNCTION) {
     lua_pop(L_, 1);
     return true;
   }
@@ -446,7 +461,7 @@ bool LoopFunctions::IsExperimentFinished(bool* finished, std::string* error) {
 bool LoopFunctions::PostExperiment(Json* metrics, bool* has_metrics, std::string* error) {
   *has_metrics = false;
   if (!L_) return true;
-  if (lua_getglobal(L_, "post_experiment") != LUA_TFUNCTION) {
+  if (RawGlobal(L_, "post_experiment") != LUA_TFUNCTION) {
     lua_pop(L_, 1);
     return true;
   }

@@ -52,6 +52,7 @@ class LoopFunctions {
   LuaOptions limits_;
   std::string script_;
   int traceback_ref_ = -1;
+  int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
   std::string log_;
   Timeseries series_;
   Rng rng_;

@@ -282,6 +282,17 @@ TEST(LoopFunctions, ErrorsNameTheHookAndTheLine) {
   EXPECT_NE(f.find("loop.lua:2: rule broken"), std::string::npos) << f;
 }
 
+// Used to be a Lua panic (exit 134): the host set experiment.tick through the global.
+TEST(LoopFunctions, RebindingExperimentOrMetatablesOnGlobalsCannotCrashTheHost) {
+  EXPECT_EQ(LoopFailure("function pre_step() experiment = nil end"), "");
+  EXPECT_EQ(LoopFailure("function pre_step() experiment = 5 end"), "");
+  EXPECT_EQ(LoopFailure("function init() setmetatable(experiment, {__newindex = function() error('no') end}) end"), "");
+  EXPECT_EQ(LoopFailure("function init() setmetatable(_G, {__index = function() error('no') end}) end"), "");
+  // The script's own use of the rebound global is an ordinary, reported error.
+  std::string f = LoopFailure("function pre_step() experiment = nil end\nfunction post_step() return experiment.tick end");
+  EXPECT_NE(f.find("loop functions (post_step): "), std::string::npos) << f;
+}
+
 TEST(LoopFunctions, HandleMisuseIsALuaError) {
   std::string f = LoopFailure("function pre_step() experiment.robots[1].position(42) end");
   EXPECT_NE(f.find("robot handle expected"), std::string::npos) << f;
