@@ -40,13 +40,16 @@ size_t PointGrid::DiscEntries(double radius) const {
 }
 
 int PointGrid::CellX(double x) const {
+  // Safe for any double: NaN and ±inf land in an edge cell, never cast out of range.
   double c = std::floor((x - origin.x()) / cell);
-  return c < 0 ? 0 : c >= nx ? nx - 1 : static_cast<int>(c);  // NaN lands in the last cell
+  if (!(c < nx)) return nx - 1;
+  return c >= 0 ? static_cast<int>(c) : 0;
 }
 
 int PointGrid::CellY(double y) const {
   double c = std::floor((y - origin.y()) / cell);
-  return c < 0 ? 0 : c >= ny ? ny - 1 : static_cast<int>(c);
+  if (!(c < ny)) return ny - 1;
+  return c >= 0 ? static_cast<int>(c) : 0;
 }
 
 template <class PosFn>

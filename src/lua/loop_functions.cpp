@@ -50,7 +50,11 @@ struct LoopFunctionsAccess {
   static int SetPose(lua_State* L) {
     LoopFunctions* lf = Self(L);
     int i = RobotIndex(L);
-    lf->physics_->SetRobotPose(i, {luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_optnumber(L, 4, 0)});
+    const double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), yaw = luaL_optnumber(L, 4, 0);
+    // A non-finite pose would poison the physics and every grid that indexes by position.
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
+      return luaL_error(L, "set_pose: x, y and yaw must be finite numbers, got %f, %f, %f", x, y, yaw);
+    lf->physics_->SetRobotPose(i, {x, y, yaw});
     return 0;
   }
   static int Battery(lua_State* L) {

@@ -293,6 +293,13 @@ TEST(LoopFunctions, RebindingExperimentOrMetatablesOnGlobalsCannotCrashTheHost) 
   EXPECT_NE(f.find("loop functions (post_step): "), std::string::npos) << f;
 }
 
+TEST(LoopFunctions, SetPoseRefusesNonFiniteValues) {
+  for (const char* v : {"0/0, 0, 0", "1/0, 0", "0, 0, -1/0"}) {
+    std::string f = LoopFailure(std::string("function pre_step() experiment.robots[1]:set_pose(") + v + ") end");
+    EXPECT_NE(f.find("set_pose: x, y and yaw must be finite numbers"), std::string::npos) << v << ": " << f;
+  }
+}
+
 TEST(LoopFunctions, HandleMisuseIsALuaError) {
   std::string f = LoopFailure("function pre_step() experiment.robots[1].position(42) end");
   EXPECT_NE(f.find("robot handle expected"), std::string::npos) << f;

@@ -445,3 +445,20 @@ end
 
 }  // namespace
 }  // namespace essaim
+
+namespace essaim {
+namespace {
+// Used to be a heap overflow: NaN (a robot set_pose'd to 0/0) cast to INT_MIN as a cell.
+TEST(PointGridCells, AnyDoubleLandsInAValidCell) {
+  PointGrid g;
+  g.Setup(Vec2(-5, -5), Vec2(5, 5), 1.0, 16, 1000);
+  for (double v : {std::nan(""), 1e300, -1e300, HUGE_VAL, -HUGE_VAL, 0.0, 4.99, -5.0}) {
+    int cx = g.CellX(v), cy = g.CellY(v);
+    EXPECT_GE(cx, 0) << v;
+    EXPECT_LT(cx, g.nx) << v;
+    EXPECT_GE(cy, 0) << v;
+    EXPECT_LT(cy, g.ny) << v;
+  }
+}
+}  // namespace
+}  // namespace essaim
