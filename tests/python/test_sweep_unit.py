@@ -153,12 +153,13 @@ def test_a_run_without_summary_is_a_failed_row(tmp_path):
     assert df["status"].tolist() == ["failed", "failed"]
 
 
-def test_ctrl_c_kills_the_runs_and_exits_130(tmp_path):
-    # A stand-in essaim that records its pid in its --out folder and sleeps.
+def start_slow_sweep(tmp_path, seeds):
+    """A sweep at -j 2 over a stand-in essaim that records its pid in its --out folder and
+    sleeps; returns the sweep process once both runs have started, and their pids."""
     fake = tmp_path / "slow-essaim"
     fake.write_text('#!/bin/sh\nfor last; do :; done\necho $$ > "$last/pid"\nexec sleep 60\n')
     fake.chmod(0o755)
-    s = write_sweep(tmp_path / "s.toml", seeds=4, out=str(tmp_path / "out"))
+    s = write_sweep(tmp_path / "s.toml", seeds=seeds, out=str(tmp_path / "out"))
     p = subprocess.Popen([sys.executable, str(SCRIPTS / "sweep.py"), str(s), "-j", "2",
                           "--essaim", str(fake), "--no-progress"],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
@@ -169,6 +170,11 @@ def test_ctrl_c_kills_the_runs_and_exits_130(tmp_path):
         pids = [int(f.read_text()) for f in (tmp_path / "out" / "runs").glob("*/pid")
                 if f.read_text().strip()]
     assert len(pids) == 2, "the stand-in runs did not start"
+    return p, pids
+
+
+def test_ctrl_c_kills_the_runs_and_exits_130(tmp_path):
+    p, pids = start_slow_sweep(tmp_path, seeds=4)
     t0 = time.time()
     p.send_signal(signal.SIGINT)
     _, err = p.communicate(timeout=20)
@@ -225,20 +231,7 @@ def _alive(pid: int) -> bool:
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="PR_SET_PDEATHSIG is Linux's")
 def test_runs_die_with_a_killed_sweep(tmp_path):
-    fake = tmp_path / "slow-essaim"
-    fake.write_text('#!/bin/sh\nfor last; do :; done\necho $$ > "$last/pid"\nexec sleep 60\n')
-    fake.chmod(0o755)
-    s = write_sweep(tmp_path / "s.toml", seeds=2, out=str(tmp_path / "out"))
-    p = subprocess.Popen([sys.executable, str(SCRIPTS / "sweep.py"), str(s), "-j", "2",
-                          "--essaim", str(fake), "--no-progress"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    pids = []
-    deadline = time.time() + 20
-    while len(pids) < 2 and time.time() < deadline:
-        time.sleep(0.1)
-        pids = [int(f.read_text()) for f in (tmp_path / "out" / "runs").glob("*/pid")
-                if f.read_text().strip()]
-    assert len(pids) == 2, "the stand-in runs did not start"
+    p, pids = start_slow_sweep(tmp_path, seeds=2)
     p.kill()  # SIGKILL: the sweep cannot clean up
     p.communicate(timeout=20)
     deadline = time.time() + 10
