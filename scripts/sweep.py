@@ -260,6 +260,28 @@ def load_sweep(path: str | Path, out: str | None = None, essaim: str | None = No
                  strict=bool(doc.get("strict", False)), extra_args=args, timeout=timeout)
 
 
+def validate_paths(sweep: Sweep, essaim: str, timeout: float = 300) -> None:
+    """Refuse, before any run, a sweep whose --set paths essaim does not read: a typo such as
+    `entity.quantiy` would give rows whose parameter column varies while every run is the
+    same. One `essaim check` with the first value of each parameter reports every unknown
+    path at once (with "did you mean"). Raises SweepError with essaim's messages."""
+    argv = [essaim, "check", str(sweep.experiment), "--quiet"]
+    for p, v in sweep.fixed.items():
+        argv += ["--set", f"{p}={format_value(v)}"]
+    for p, values in sweep.params.items():
+        argv += ["--set", f"{p}={format_value(values[0])}"]
+    if sweep.strict:
+        argv.append("--strict")
+    try:
+        r = subprocess.run(argv, cwd=sweep.workdir, capture_output=True, text=True,
+                           errors="replace", timeout=timeout)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        raise SweepError(f"cannot check the experiment with {essaim}: {e}") from None
+    if r.returncode != 0:
+        raise SweepError(f"{sweep.path}: the experiment does not load with this sweep's `set` and "
+                         f"`params` (nothing was run):\n{stderr_tail(r.stderr, 20)}")
+
+
 def check_set_path(sweep_path, p: str) -> None:
     if not re.fullmatch(r"[A-Za-z_][\w\-]*(\[\d+\])?(\.[A-Za-z_][\w\-]*(\[\d+\])?)+", p):
         raise SweepError(f"{sweep_path}: {p!r} is not a --set path (tag.tag.attribute)")
@@ -717,6 +739,9 @@ def main(argv=None) -> int:
         sweep = load_sweep(args.sweep, out=args.out)
         runs = sweep.runs()
         essaim = resolve_essaim(args.essaim, sweep, remote=bool(args.scheduler))
+        # On a cluster the binary may exist only on the workers: checked where it is found.
+        if not args.scheduler or shutil.which(essaim):
+            validate_paths(sweep, essaim)
     except SweepError as e:
         print(f"sweep: {e}", file=sys.stderr)
         return 2

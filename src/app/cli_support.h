@@ -5,14 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "core/strings.h"  // ClosestName
+
 namespace essaim {
 
 /// Accepts a whole number in [min, max]; the message names the bounds and `why` (e.g.
 /// "0 would run forever"), so `--threads 0` and `--threads 100000` each get a true answer.
 CLI::Validator IntegerIn(long long min, long long max, const std::string& why = "");
-
-/// The candidate closest to `typed` by edit distance, or "" when none is close enough.
-std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates);
 
 /// After parsing: prints the first unrecognised argument of `sub` (an unknown option with a
 /// suggestion, or an extra positional) and returns true when there was one.

@@ -49,7 +49,7 @@ double PeakRssMb() {
 struct BenchArgs {
   std::string dir = ESSAIM_SOURCE_DIR "/bench";
   long long ticks = 200;
-  bool quick = false;
+  bool quick = false, strict = false;
   std::vector<int> thread_counts = {1};
   std::vector<std::string> only;
 };
@@ -72,6 +72,7 @@ static int Bench(BenchArgs a) {
       lo.ticks = ticks;
       lo.threads = threads;
       if (s.overrides[0]) lo.overrides.push_back(s.overrides);
+      lo.strict = a.strict;
       ErrorList errors;
       auto model = LoadExperimentFile(JoinPath(dir, s.file), lo, &errors);
       if (!model) {
@@ -110,6 +111,7 @@ CommandMain AddBenchCommand(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand("bench", "print robot-steps per second on fixed scenarios");
   sub->add_flag("--quick", a->quick, "50 ticks per scenario instead of --ticks");
+  sub->add_flag("--strict", a->strict, "unknown attributes in a scenario file are errors (exit 2)");
   sub->add_option("--ticks", a->ticks, "ticks per scenario")
       ->type_name("N")
       ->check(IntegerIn(1, 1000000000))

@@ -98,6 +98,7 @@ bool ApplyOptions(RunArgs* r, std::string* error) {
   if (r->ticks) r->load.ticks = static_cast<uint64_t>(*r->ticks);
   if (r->seed) r->load.seed = static_cast<uint64_t>(*r->seed);
   if (r->threads) r->load.threads = static_cast<int>(*r->threads);
+  r->load.strict = r->strict;
   if (r->set_file.empty()) return true;
   std::vector<std::string> from_file;
   if (!ReadOverridesFile(r->set_file, &from_file, error)) return false;
@@ -278,6 +279,7 @@ CommandMain AddCheckCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("check", "validate an experiment and its scripts, list every error");
   AddExperimentOptions(sub, r.get());
   sub->add_flag("-q,--quiet", r->quiet, "errors only, no warnings");
+  sub->add_flag("--strict", r->strict, "unknown attributes in the file are errors (exit 2), not warnings");
   sub->footer("Example:\n  essaim check arenas/foraging.argos --set arena.distribute.entity.quantity=60");
   return [r] { return Check(*r); };
 }
@@ -288,7 +290,8 @@ CommandMain AddRunCommand(CLI::App& app) {
   AddExperimentOptions(sub, r.get());
   sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
   sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
-  sub->add_flag("--strict", r->strict, "the first controller error ends the run (exit 1)");
+  sub->add_flag("--strict", r->strict,
+                "unknown attributes in the file are errors (exit 2); the first controller error ends the run (exit 1)");
   sub->add_flag("--sandbox", r->sandbox,
                 "untrusted scripts: no io/os/debug/native code, every instruction counted (docs/sandbox.md)");
   auto budget = std::make_shared<double>(-1);

@@ -1,5 +1,6 @@
 #include "core/strings.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -91,6 +92,35 @@ std::string FormatDouble(double v) {
   int digits = 0;
   for (size_t i = 0; i < e; ++i) digits += sci[i] >= '0' && sci[i] <= '9';
   return exponent >= -4 && exponent < digits ? fixed() : sci;
+}
+
+namespace {
+// Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
+// neighbours ("tikcs" is one edit from "ticks").
+size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+std::string WithoutDashes(const std::string& s) { return s.substr(std::min(s.find_first_not_of('-'), s.size())); }
+}  // namespace
+
+std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates) {
+  std::string core = WithoutDashes(typed), best;
+  if (core.size() < 3) return best;  // "-q" is one letter from every short option
+  size_t best_d = std::max<size_t>(1, core.size() / 3) + 1;  // farther than this is no suggestion
+  for (const std::string& c : candidates) {
+    size_t d = EditDistance(core, WithoutDashes(c));
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
 }
 
 }  // namespace essaim

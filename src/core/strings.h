@@ -21,5 +21,8 @@ std::optional<std::vector<double>> ParseVector(const std::string& s, size_t n);
 std::optional<std::pair<double, double>> ParseRange(const std::string& s);
 /// Shortest text that reads back as the same double ("%.17g" trimmed).
 std::string FormatDouble(double v);
+/// The candidate closest to `typed` by edit distance, or "" when none is close enough
+/// (leading dashes ignored, so "--tikcs" finds "--ticks"). For "did you mean".
+std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates);
 
 }  // namespace essaim

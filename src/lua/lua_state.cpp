@@ -126,7 +126,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   PushReadings();
 
   const std::string& script = controller_->script;
-  if (script.empty()) return true;  // ARGoS allows a controller without script
+  if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
   // `require` finds modules next to the script.
   std::string dir = DirName(script);
   std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";

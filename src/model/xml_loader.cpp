@@ -11,6 +11,7 @@
 #include "core/rng.h"
 #include "core/paths.h"
 #include "core/strings.h"
+#include "model/attribute_ledger.h"
 #include "model/distribute.h"
 #include "model/floor_image.h"
 #include "model/xml_overrides.h"
@@ -38,14 +39,19 @@ class Loader {
   }
   SourceLoc Loc(const XMLElement* e) const { return {path_, e->GetLineNum(), e->Name()}; }
 
-  // ---- typed attribute access: report and return a default on bad text
-  bool Has(const XMLElement* e, const char* name) { return e->Attribute(name) != nullptr; }
+  // ---- typed attribute access: report and return a default on bad text. Every read goes
+  // through Get, which records it: what nobody read is reported (ReportUnknownAttributes).
+  const char* Get(const XMLElement* e, const char* name) {
+    ledger_.Read(e, name);
+    return e->Attribute(name);
+  }
+  bool Has(const XMLElement* e, const char* name) { return Get(e, name) != nullptr; }
   std::string Str(const XMLElement* e, const char* name, const std::string& def = "") {
-    const char* v = e->Attribute(name);
+    const char* v = Get(e, name);
     return v ? v : def;
   }
   std::string Required(const XMLElement* e, const char* name) {
-    const char* v = e->Attribute(name);
+    const char* v = Get(e, name);
     if (!v) Error(e, std::string("missing required attribute '") + name + "'");
     return v ? v : "";
   }
@@ -57,6 +63,7 @@ class Loader {
   void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
 
   std::string ResolvePath(const std::string& rel) const;
+  void ReportUnknownAttributes(const XMLElement* root);
 
   // ---- sections
   void LoadFramework(const XMLElement* e);
@@ -67,7 +74,7 @@ class Loader {
   void LoadMedia(const XMLElement* e);
   void LoadLoopFunctions(const XMLElement* e);
   bool LoadFootBot(const XMLElement* e, RobotDef* r);
-  bool LoadObstacle(const XMLElement* e, ObstacleDef* o);
+  bool LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body = true);
   bool LoadLight(const XMLElement* e, LightDef* l);
   void LoadFloor(const XMLElement* e);
   void LoadBody(const XMLElement* body, Pose2* pose, double* z);
@@ -92,6 +99,8 @@ class Loader {
     }
     return f;
   }
+  std::string OutsideArena(const RobotDef& r) const;
+  std::string Overlap(const RobotDef& r, size_t robots_before) const;
   bool Collides(const Footprint& f) const {
     for (const Footprint& p : placed_)
       if (FootprintsOverlap(f, p)) return true;
@@ -107,6 +116,8 @@ class Loader {
   std::set<std::string> ids_;
   std::vector<Footprint> placed_;
   Rng sim_rng_;
+  AttributeLedger ledger_;
+  std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
 };
 
 // Upper bounds on .argos numbers that size threads, loops or casts (docs/compatibility.md).
@@ -116,7 +127,7 @@ constexpr long long kMaxIterations = 100000;
 constexpr double kMaxLengthTicks = 1e15;
 
 double Loader::Double(const XMLElement* e, const char* name, double def, bool required) {
-  const char* v = e->Attribute(name);
+  const char* v = Get(e, name);
   if (!v) {
     if (required) Error(e, std::string("missing required attribute '") + name + "'");
     return def;
@@ -130,7 +141,7 @@ double Loader::Double(const XMLElement* e, const char* name, double def, bool re
 }
 
 long long Loader::Int(const XMLElement* e, const char* name, long long def, bool required) {
-  const char* v = e->Attribute(name);
+  const char* v = Get(e, name);
   if (!v) {
     if (required) Error(e, std::string("missing required attribute '") + name + "'");
     return def;
@@ -144,7 +155,7 @@ long long Loader::Int(const XMLElement* e, const char* name, long long def, bool
 }
 
 bool Loader::Bool(const XMLElement* e, const char* name, bool def) {
-  const char* v = e->Attribute(name);
+  const char* v = Get(e, name);
   if (!v) return def;
   auto b = ParseBool(v);
   if (!b) {
@@ -155,7 +166,7 @@ bool Loader::Bool(const XMLElement* e, const char* name, bool def) {
 }
 
 Vec3 Loader::Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required) {
-  const char* v = e->Attribute(name);
+  const char* v = Get(e, name);
   if (!v) {
     if (required) Error(e, std::string("missing required attribute '") + name + "'");
     return def;
@@ -169,9 +180,13 @@ Vec3 Loader::Vector3(const XMLElement* e, const char* name, const Vec3& def, boo
 }
 
 void Loader::CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what) {
-  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
-    if (!allowed.count(c->Name()))
-      Error(c, std::string("unknown element inside <") + e->Name() + "> (" + what + ")");
+  ledger_.Visit(e);
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (allowed.count(c->Name())) continue;
+    std::string hint = ClosestName(c->Name(), {allowed.begin(), allowed.end()});
+    Error(c, std::string("unknown element inside <") + e->Name() + "> (" +
+                 (hint.empty() ? what : "did you mean <" + hint + ">?") + ")");
+  }
 }
 
 std::string Loader::ResolvePath(const std::string& rel) const {
@@ -200,7 +215,9 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
   }
   for (const std::string& o : options_.overrides) {
     std::string err;
-    if (!ApplyXmlOverride(doc, o, &err)) errors_->Add(path_, 0, "", err);
+    OverrideTarget target;
+    if (!ApplyXmlOverride(doc, o, &err, &target)) errors_->Add(path_, 0, "", err);
+    else set_targets_.emplace_back(target, o);
   }
   XMLElement* root = doc.RootElement();
   if (!root) {
@@ -234,6 +251,7 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
   }
   if (arena) LoadArena(arena);
   CheckReferences();
+  ReportUnknownAttributes(root);
   if (!errors_->Empty()) return nullptr;
   return std::move(model_);
 }
@@ -304,6 +322,7 @@ void Loader::LoadWatchdog(const XMLElement* sys, ExperimentDef* x) {
 }
 
 void Loader::LoadControllers(const XMLElement* e) {
+  ledger_.Visit(e);
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     if (std::string(c->Name()) != "lua_controller") {
       Error(c, "unsupported controller type: essaim runs Lua controllers (<lua_controller>)");
@@ -325,11 +344,15 @@ void Loader::LoadControllers(const XMLElement* e) {
     if (act) LoadDevices(act, false, &def);
     if (sen) LoadDevices(sen, true, &def);
     if (par) {
+      ledger_.ReadAll(par);  // free-form: the controller reads robot.params
       for (auto* a = par->FirstAttribute(); a; a = a->Next()) def.params[a->Name()] = a->Value();
       std::string script = Str(par, "script");
       if (!script.empty()) {
         def.script = ResolvePath(script);
         if (!FileExists(def.script)) Error(par, "script '" + script + "' not found (looked beside the .argos file and in the working directory)");
+      } else {
+        // ARGoS loads no script and its robots stand still in silence: never what was meant.
+        Error(c, "lua_controller '" + def.id + "' has no script: add <params script=\"file.lua\"/>");
       }
     }
     model_->controllers.push_back(std::move(def));
@@ -338,6 +361,7 @@ void Loader::LoadControllers(const XMLElement* e) {
 
 void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c) {
   std::vector<DeviceConfig>& out = sensors ? c->sensors : c->actuators;
+  ledger_.Visit(list);
   for (auto* d = list->FirstChildElement(); d; d = d->NextSiblingElement()) {
     const DeviceRow* row = FindDevice(d->Name(), sensors);
     if (!row) {
@@ -359,14 +383,9 @@ void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c)
       if (std::find(impls.begin(), impls.end(), cfg.implementation) == impls.end())
         Error(d, "implementation '" + cfg.implementation + "' unknown; expected " + row->implementations);
     }
-    for (auto* a = d->FirstAttribute(); a; a = a->Next()) {
-      cfg.attrs[a->Name()] = a->Value();
-      std::string name = a->Name();
-      if (name == "implementation") continue;
-      bool known = false;
-      for (const DeviceAttr& da : row->attrs) known |= name == da.name;
-      if (!known) Warn(d, "attribute '" + name + "' is not used by essaim");
-    }
+    // The device table's row is the schema: its attributes are the ones read (device_params).
+    for (const DeviceAttr& da : row->attrs) ledger_.Read(d, da.name);
+    for (auto* a = d->FirstAttribute(); a; a = a->Next()) cfg.attrs[a->Name()] = a->Value();
     for (const DeviceAttr& da : row->attrs)
       if (da.required && !Has(d, da.name)) Error(d, std::string("missing required attribute '") + da.name + "'");
     for (const DeviceConfig& prev : out)
@@ -381,6 +400,7 @@ void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c)
 }
 
 void Loader::LoadPhysics(const XMLElement* e) {
+  ledger_.Visit(e);
   int engines = 0;
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     std::string name = c->Name();
@@ -416,6 +436,7 @@ void Loader::LoadPhysics(const XMLElement* e) {
 }
 
 void Loader::LoadMedia(const XMLElement* e) {
+  ledger_.Visit(e);
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     std::string name = c->Name();
     if (name == "range_and_bearing") {
@@ -444,6 +465,7 @@ void Loader::LoadLoopFunctions(const XMLElement* e) {
   }
   LoopFunctionsDef& lf = model_->loop_functions;
   lf.loc = Loc(e);
+  ledger_.ReadAll(e);  // free-form: every attribute is a parameter for the script
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
   std::string script = Str(e, "script");
   if (script.empty()) {
@@ -489,6 +511,7 @@ bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
       // Per-robot <params> replaces the controller's entirely (spec quirk 15).
       r->params.clear();
       r->params["__own__"] = "";
+      ledger_.ReadAll(params);
       for (auto* a = params->FirstAttribute(); a; a = a->Next()) r->params[a->Name()] = a->Value();
     }
   }
@@ -511,6 +534,7 @@ bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
     if (bd.full_charge <= 0) Error(b, "full_charge must be > 0");
   }
   if (const XMLElement* d = e->FirstChildElement("dynamics2d")) {
+    CheckChildren(d, {"differential_steering"}, "expected differential_steering");
     if (const XMLElement* ds = d->FirstChildElement("differential_steering")) {
       r->max_force = Double(ds, "max_force", footbot::kMaxForce);
       r->max_torque = Double(ds, "max_torque", footbot::kMaxTorque);
@@ -519,7 +543,7 @@ bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
   return errors_->Size() == before;
 }
 
-bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o) {
+bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) {
   size_t before = errors_->Size();
   std::string tag = e->Name();
   o->kind = tag == "box" ? ShapeKind::Box : ShapeKind::Cylinder;
@@ -542,7 +566,7 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o) {
   }
   CheckChildren(e, {"body", "leds"}, "expected body, leds");
   if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &o->pose, &o->z);
-  else Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
+  else if (needs_body) Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
   if (const XMLElement* leds = e->FirstChildElement("leds")) {
     o->led_medium = Required(leds, "medium");
     for (auto* l = leds->FirstChildElement(); l; l = l->NextSiblingElement()) {
@@ -627,12 +651,42 @@ void Loader::LoadArena(const XMLElement* e) {
     } else {
       Error(c, "unsupported entity: essaim simulates foot-bot, box, cylinder, light, floor and distribute");
     }
-    if (const char* id = c->Attribute("id")) {
+    if (const char* id = Get(c, "id")) {
       if (name != "distribute" && !ids_.insert(id).second) Error(c, std::string("duplicate id '") + id + "'");
     }
   }
+  for (size_t i = 0; i < model_->robots.size(); ++i) {
+    const RobotDef& r = model_->robots[i];
+    std::string problem = OutsideArena(r);
+    if (problem.empty()) problem = Overlap(r, i);
+    if (!problem.empty()) errors_->Add(r.loc.file, r.loc.line, r.loc.element, "foot-bot '" + r.id + "' " + problem);
+  }
   for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute"))
     LoadDistribute(c);
+}
+
+// A robot outside the arena breaks ARGoS's media grids: "" when `r` stands inside.
+std::string Loader::OutsideArena(const RobotDef& r) const {
+  Vec2 lo = model_->arena.Min(), hi = model_->arena.Max();
+  if (r.pose.x >= lo.x() && r.pose.x <= hi.x() && r.pose.y >= lo.y() && r.pose.y <= hi.y()) return "";
+  return "at (" + FormatDouble(r.pose.x) + ", " + FormatDouble(r.pose.y) + ") is outside the arena [" +
+         FormatDouble(lo.x()) + ", " + FormatDouble(hi.x()) + "] x [" + FormatDouble(lo.y()) + ", " +
+         FormatDouble(hi.y()) + "]";
+}
+
+// ARGoS refuses a robot that overlaps another entity. Checks `r` against every obstacle and
+// the first `robots_before` robots; "" when it stands free. (Obstacles may overlap each
+// other: walls share corners.)
+std::string Loader::Overlap(const RobotDef& r, size_t robots_before) const {
+  Footprint f = FootprintOf(r);
+  for (const ObstacleDef& o : model_->obstacles)
+    if (FootprintsOverlap(f, FootprintOf(o)))
+      return std::string("overlaps ") + (o.kind == ShapeKind::Box ? "box" : "cylinder") + " '" + o.id + "' (line " +
+             std::to_string(o.loc.line) + ")";
+  for (size_t j = 0; j < robots_before; ++j)
+    if (FootprintsOverlap(f, FootprintOf(model_->robots[j])))
+      return "overlaps foot-bot '" + model_->robots[j].id + "' (line " + std::to_string(model_->robots[j].loc.line) + ")";
+  return "";
 }
 
 bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
@@ -672,6 +726,7 @@ bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
 }
 
 void Loader::LoadDistribute(const XMLElement* e) {
+  CheckChildren(e, {"position", "orientation", "entity"}, "expected position, orientation, entity");
   const XMLElement* pos = e->FirstChildElement("position");
   const XMLElement* ori = e->FirstChildElement("orientation");
   const XMLElement* ent = e->FirstChildElement("entity");
@@ -702,6 +757,15 @@ void Loader::LoadDistribute(const XMLElement* e) {
     Error(proto, "missing required attribute 'id' (the base of the generated ids)");
     return;
   }
+  // The prototype is read once (also when quantity is 0, so its attributes are checked);
+  // each entity is a copy with its own id and pose.
+  RobotDef robot_proto;
+  ObstacleDef obstacle_proto;
+  LightDef light_proto;
+  if (kind == "foot-bot" && !LoadFootBot(proto, &robot_proto)) return;
+  // A distributed box or cylinder gets its <body> from the generators.
+  if ((kind == "box" || kind == "cylinder") && !LoadObstacle(proto, &obstacle_proto, false)) return;
+  if (kind == "light" && !LoadLight(proto, &light_proto)) return;
   int draw = 0;  // grid cell counter: every attempt consumes one (a retry is fatal on a grid)
   for (long long i = 0; i < quantity; ++i) {
     std::string id = base_id + std::to_string(i + base_num);
@@ -720,42 +784,47 @@ void Loader::LoadDistribute(const XMLElement* e) {
       for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
       Pose2 pose{p.x(), p.y(), DegToRad(o.x())};
       if (kind == "light") {
-        LightDef l;
-        if (!LoadLight(proto, &l)) return;
+        LightDef l = light_proto;
         l.id = id;
         l.position = p;
         model_->lights.push_back(l);
         placed = true;
       } else if (kind == "foot-bot") {
-        RobotDef r;
-        if (!LoadFootBot(proto, &r)) return;
+        RobotDef r = robot_proto;
         r.id = id;
         r.pose = pose;
         r.z = p.z();
+        std::string outside = OutsideArena(r);
+        if (!outside.empty()) {  // a generator that reaches out of the arena: no retry helps
+          Error(proto, "generated foot-bot '" + id + "' " + outside);
+          return;
+        }
         Footprint f = FootprintOf(r);
-        if (Collides(f)) continue;
+        if (Collides(f)) {
+          if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
+          continue;
+        }
         placed_.push_back(f);
         model_->robots.push_back(std::move(r));
         placed = true;
       } else {
-        ObstacleDef ob;
-        // The prototype has no <body>; LoadObstacle would complain, so fill a copy.
-        tinyxml2::XMLDocument scratch;
-        XMLElement* copy = proto->DeepClone(&scratch)->ToElement();
-        scratch.InsertEndChild(copy);
-        if (!copy->FirstChildElement("body")) copy->InsertEndChild(scratch.NewElement("body"));
-        if (!LoadObstacle(copy, &ob)) return;
-        ob.loc = Loc(proto);
+        ObstacleDef ob = obstacle_proto;
         ob.id = id;
         ob.pose = pose;
         ob.z = p.z();
         Footprint f = FootprintOf(ob);
-        if (Collides(f)) continue;
+        if (Collides(f)) {
+          if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
+          continue;
+        }
         placed_.push_back(f);
         model_->obstacles.push_back(std::move(ob));
         placed = true;
       }
-      if (gp.kind == Generator::Kind::Grid && !placed) break;
+    }
+    if (!placed && gp.kind == Generator::Kind::Grid) {
+      Error(ent, "could not place '" + id + "': its grid cell overlaps another entity (a grid allows no retry)");
+      return;
     }
     if (!placed) {
       Error(ent, "could not place '" + id + "' without overlap after " + std::to_string(max_trials + 1) +
@@ -763,6 +832,31 @@ void Loader::LoadDistribute(const XMLElement* e) {
       return;
     }
   }
+}
+
+// Attributes nobody read: an error for a --set (a sweep over it would change nothing), a
+// warning in the file (an error under --strict), each with the closest known name.
+void Loader::ReportUnknownAttributes(const XMLElement* root) {
+  auto hint = [&](const XMLElement* e, const std::string& name) {
+    std::string best = ledger_.Suggest(e, name);
+    return best.empty() ? std::string() : "; did you mean '" + best + "'?";
+  };
+  std::set<std::pair<const XMLElement*, std::string>> from_set;
+  for (const auto& [target, assignment] : set_targets_) {
+    from_set.insert({target.element, target.attribute});
+    if (ledger_.Known(target.element, target.attribute)) continue;
+    std::string what = ledger_.Visited(target.element)
+                           ? "essaim reads no attribute '" + target.attribute + "' on <" + target.element->Name() +
+                                 ">" + hint(target.element, target.attribute)
+                           : std::string("essaim does not read <") + target.element->Name() + "> or its attributes";
+    Error(target.element, "--set " + assignment + ": " + what);
+  }
+  ledger_.ForEachUnknown(root, [&](const XMLElement* e, const std::string& name) {
+    if (from_set.count({e, name})) return;
+    std::string msg = "unknown attribute '" + name + "' (essaim does not read it)" + hint(e, name);
+    if (options_.strict) Error(e, msg);
+    else Warn(e, msg);
+  });
 }
 
 void Loader::CheckReferences() {

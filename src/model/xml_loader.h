@@ -18,6 +18,8 @@ struct LoadOptions {
   std::optional<int> threads;
   /// Where relative paths fall back to after the .argos folder (ARGoS: the process cwd).
   std::string working_dir = ".";
+  /// Unknown attributes in the file are errors, not warnings (--strict).
+  bool strict = false;
 };
 
 /// Returns nullptr and fills `errors` when the file is unusable. `warnings` receives

@@ -34,7 +34,8 @@ tinyxml2::XMLElement* FindChild(tinyxml2::XMLElement* parent, const std::string&
 }
 }  // namespace
 
-bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment, std::string* error) {
+bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment, std::string* error,
+                      OverrideTarget* target) {
   size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
     *error = "--set " + assignment + ": expected PATH=VALUE";
@@ -61,6 +62,7 @@ bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment,
     }
   }
   node->SetAttribute(segments.back().c_str(), value.c_str());
+  if (target) *target = {node, segments.back()};
   return true;
 }
 

@@ -4,12 +4,20 @@
 
 namespace tinyxml2 {
 class XMLDocument;
+class XMLElement;
 }
 
 namespace essaim {
 
+/// Where an override landed, so the loader can check that something reads it.
+struct OverrideTarget {
+  const tinyxml2::XMLElement* element = nullptr;
+  std::string attribute;
+};
+
 /// Applies one "path=value" override; returns false with `error` set when the path names
-/// no element or the text is malformed.
-bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment, std::string* error);
+/// no element or the text is malformed. `target` (optional) receives where it landed.
+bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment, std::string* error,
+                      OverrideTarget* target = nullptr);
 
 }  // namespace essaim

@@ -39,8 +39,9 @@ std::string ValueText(const py::handle& v) {
 class Simulation {
  public:
   Simulation(const std::string& path, std::optional<uint64_t> seed, std::optional<int> threads,
-             std::optional<py::dict> overrides, std::optional<std::string> out) {
+             std::optional<py::dict> overrides, std::optional<std::string> out, bool strict) {
     LoadOptions load;
+    load.strict = strict;
     load.seed = seed;
     load.threads = threads;
     if (overrides)
@@ -48,6 +49,14 @@ class Simulation {
     ErrorList errors, warnings;
     model_ = LoadExperimentFile(path, load, &errors, &warnings);
     if (!model_) throw Error(errors.Format());
+    // The CLI's warnings (unknown attributes...) as Python warnings, one per line.
+    for (const InputError& w : warnings.Items()) {
+      ErrorList one;
+      one.Add(w.file, w.line, w.element, w.message);
+      std::string text = one.Format();
+      while (!text.empty() && text.back() == '\n') text.pop_back();
+      py::module_::import("warnings").attr("warn")(text, py::module_::import("builtins").attr("UserWarning"), 2);
+    }
     out_ = out.value_or("");
     std::string error;
     if (!out_.empty() && !MakeDirs(out_, &error)) throw Error(error);
@@ -206,10 +215,11 @@ PYBIND11_MODULE(essaim, m) {
   py::register_exception<Simulation::Error>(m, "Error");
   py::class_<Simulation>(m, "Simulation")
       .def(py::init<const std::string&, std::optional<uint64_t>, std::optional<int>, std::optional<py::dict>,
-                    std::optional<std::string>>(),
+                    std::optional<std::string>, bool>(),
            py::arg("path"), py::arg("seed") = py::none(), py::arg("threads") = py::none(),
-           py::arg("overrides") = py::none(), py::arg("out") = py::none(),
-           "Loads an .argos experiment. overrides: {--set path: value}; out: folder for the CLI's output files.")
+           py::arg("overrides") = py::none(), py::arg("out") = py::none(), py::arg("strict") = false,
+           "Loads an .argos experiment. overrides: {--set path: value}; out: folder for the CLI's output files; "
+           "strict: unknown attributes in the file are errors, not warnings.")
       .def("step", &Simulation::StepN, py::arg("n") = 1, "Steps n ticks (fewer at the experiment's end); returns those stepped.")
       .def("run", &Simulation::Run, "Steps to the experiment's end; returns the ticks stepped.")
       .def_property_readonly("tick", &Simulation::Tick)

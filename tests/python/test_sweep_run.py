@@ -77,8 +77,7 @@ def test_local_sweep_then_resume(tmp_path, essaim):
 
 
 def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
-    # A --set path that names no element (exit 2), and a controller error with --strict
-    # (exit 1), next to runs that succeed.
+    # A controller error with --strict (exit 1), next to a run that succeeds.
     s, out = tiny_sweep(tmp_path, params={"controllers.ctrl.params.fail": [0, 1]},
                         strict=True, seeds=1)
     r = run_sweep(s, essaim=essaim)
@@ -94,20 +93,14 @@ def test_failed_runs_are_rows_not_fatal(tmp_path, essaim):
     r = run_sweep(s, essaim=essaim)
     assert r.returncode == 1 and "1 already done, 1 to run" in r.stderr
 
+    # A --set path that names no element is refused before any run (it used to fail each).
     s, out = tiny_sweep(tmp_path, name="badpath", params={QUANTITY: [2],
                                                           "arena.nosuchthing.attr": [1, 2]},
                         seeds=1)
     r = run_sweep(s, essaim=essaim)
-    assert r.returncode == 1
-    df = pd.read_parquet(out / "results.parquet")
-    assert df["status"].tolist() == ["failed", "failed"]
-    assert df["returncode"].tolist() == [2, 2]
-    assert all("nosuchthing" in e for e in df["error"])
-    assert "2 failed" in r.stderr and "2 x exit 2" in r.stderr
-
-    # A rerun tries the failed runs again (they have no summary.json).
-    r = run_sweep(s, essaim=essaim)
-    assert "0 already done, 2 to run" in r.stderr
+    assert r.returncode == 2, r.stderr
+    assert "no element at 'arena.nosuchthing'" in r.stderr and "nothing was run" in r.stderr
+    assert not (out / "runs").exists()
 
 
 def test_dask_cluster_gives_the_same_table(tmp_path, essaim):
@@ -152,3 +145,15 @@ def test_loop_function_metrics_become_columns(tmp_path, essaim):
     plot = load_module("plot")
     files = plot.make_figures(df, tmp_path / "fig")
     assert len(files) == 8
+
+
+def test_a_sweep_over_a_path_nobody_reads_is_refused_before_any_run(tmp_path, essaim):
+    # A typo used to give rows whose quantity column said 2 and 4 while every run had 4 robots.
+    s, out = tiny_sweep(tmp_path, params={"arena.distribute.entity.quantiy": [2, 4]},
+                        set={"framework.experiment.lenght": 3})
+    r = run_sweep(s, essaim=essaim)
+    assert r.returncode == 2, r.stderr
+    assert "nothing was run" in r.stderr
+    assert "'quantiy' on <entity>; did you mean 'quantity'?" in r.stderr
+    assert "did you mean 'length'?" in r.stderr
+    assert not (out / "runs").exists()

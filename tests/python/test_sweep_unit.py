@@ -157,7 +157,7 @@ def start_slow_sweep(tmp_path, seeds):
     """A sweep at -j 2 over a stand-in essaim that records its pid in its --out folder and
     sleeps; returns the sweep process once both runs have started, and their pids."""
     fake = tmp_path / "slow-essaim"
-    fake.write_text('#!/bin/sh\nfor last; do :; done\necho $$ > "$last/pid"\nexec sleep 60\n')
+    fake.write_text('#!/bin/sh\n[ "$1" = check ] && exit 0\nfor last; do :; done\necho $$ > "$last/pid"\nexec sleep 60\n')
     fake.chmod(0o755)
     s = write_sweep(tmp_path / "s.toml", seeds=seeds, out=str(tmp_path / "out"))
     p = subprocess.Popen([sys.executable, str(SCRIPTS / "sweep.py"), str(s), "-j", "2",

@@ -113,3 +113,18 @@ def test_same_seed_same_result_as_the_cli_whatever_the_threads(essaim_bin, tmp_p
         assert metrics == json.loads((cli_out / "metrics.json").read_text())
         assert (py_out / "metrics.json").read_bytes() == (cli_out / "metrics.json").read_bytes()
         assert (py_out / "timeseries.csv").read_bytes() == (cli_out / "timeseries.csv").read_bytes()
+
+
+def test_unknown_attributes_warn_and_strict_refuses(tmp_path):
+    with pytest.raises(essaim.Error, match="did you mean 'quantity'"):
+        essaim.Simulation(FORAGING, overrides={"arena.distribute.entity.quantiy": 5})
+    text = open(FORAGING).read().replace("<arena ", '<arena sise="1,1,1" ', 1)
+    typo = tmp_path / "typo.argos"
+    typo.write_text(text)
+    scripts = {"script=\"": f"script=\"{FORAGING.rsplit('/', 1)[0]}/"}
+    for a, b in scripts.items():
+        typo.write_text(typo.read_text().replace(a, b))
+    with pytest.warns(UserWarning, match="unknown attribute 'sise'.*did you mean 'size'"):
+        essaim.Simulation(str(typo), overrides=SMALL).close()
+    with pytest.raises(essaim.Error, match="unknown attribute 'sise'"):
+        essaim.Simulation(str(typo), overrides=SMALL, strict=True)

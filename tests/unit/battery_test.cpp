@@ -15,10 +15,10 @@ using namespace essaim::testing;
 
 const char* kBatteryController =
     "<lua_controller id=\"b\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors><battery implementation=\"default\"/></sensors><params/></lua_controller>";
+    "<sensors><battery implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 const char* kNoSensorController =
     "<lua_controller id=\"n\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors/><params/></lua_controller>";
+    "<sensors/><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 
 std::string Bot(const std::string& battery, double yaw_deg = 0, const std::string& ctrl = "b") {
   return "<foot-bot id=\"fb\"><body position=\"0,0,0\" orientation=\"" + std::to_string(yaw_deg) +

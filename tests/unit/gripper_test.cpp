@@ -19,7 +19,7 @@ constexpr double kGap = 0.002;   // initial gap between robot and object (m), in
 const char* kGripController =
     "<lua_controller id=\"g\"><actuators><differential_steering implementation=\"default\"/>"
     "<footbot_gripper implementation=\"default\"/><footbot_turret implementation=\"default\"/></actuators>"
-    "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params/></lua_controller>";
+    "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 
 std::string Cylinder(const std::string& id, double x, double y, bool movable = true, double mass = 0.1) {
   char buf[256];

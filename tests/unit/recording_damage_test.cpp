@@ -17,7 +17,7 @@ using namespace essaim::testing;
 
 const char* kPlain =
     "<lua_controller id=\"p\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors/><params/></lua_controller>";
+    "<sensors/><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 
 /// A recording of one robot beside a cylinder, as bytes.
 std::string RecordedBytes(const TempDir& d) {

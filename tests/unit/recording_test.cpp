@@ -19,7 +19,7 @@ using namespace essaim::testing;
 // Robots driven from C++ (controllers without a script keep the commands we write).
 const char* kPlainController =
     "<lua_controller id=\"p\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors/><params/></lua_controller>";
+    "<sensors/><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 
 void Wheels(RobotState& r, double left_m_s, double right_m_s) {
   r.cmd.wheel_left = left_m_s;

@@ -23,7 +23,7 @@ using namespace essaim::testing;
 
 const char* kPlainController =
     "<lua_controller id=\"p\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors/><params/></lua_controller>";
+    "<sensors/><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
 
 /// Arena 4 m × 2 m centred at (1, 0.5): x in [-1, 3], y in [-0.5, 1.5]. The floor is blue
 /// in its bottom-left quarter (x < 0, y < 0), white elsewhere.

@@ -17,7 +17,7 @@ const char* kTurretController =
     "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params %s/></lua_controller>";
 
 std::string Controller(const std::string& script = "") {
-  std::string params = script.empty() ? "" : "script=\"" + script + "\"";
+  std::string params = "script=\"" + (script.empty() ? std::string(ESSAIM_SOURCE_DIR "/tests/support/idle.lua") : script) + "\"";
   char buf[512];
   std::snprintf(buf, sizeof buf, kTurretController, params.c_str());
   return buf;
