@@ -13,7 +13,17 @@ struct Parser {
     errors->Add(cfg->loc.file, cfg->loc.line, cfg->loc.element,
                 "attribute '" + name + "': '" + cfg->attrs[name] + "' " + what);
   }
-  bool Present(const std::string& name) const { return cfg->attrs.count(name) > 0; }
+  // Every read goes through here. A name missing from the device table's row would be
+  // reported as an unknown attribute in the user's file: fail loudly instead (the row is
+  // the schema, xml_loader.cpp's AttributeLedger relies on it).
+  bool Present(const std::string& name) const {
+    bool in_row = false;
+    for (const DeviceAttr& a : GetDeviceRow(cfg->type).attrs) in_row |= name == a.name;
+    if (!in_row)
+      errors->Add(cfg->loc.file, cfg->loc.line, cfg->loc.element,
+                  "internal error: attribute '" + name + "' is read but missing from the device table");
+    return cfg->attrs.count(name) > 0;
+  }
   double Number(const std::string& name, double def, double min = -1e300, double max = 1e300) {
     if (!Present(name)) return def;
     auto v = ParseDouble(cfg->attrs[name]);

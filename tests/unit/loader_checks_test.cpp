@@ -2,6 +2,8 @@
 // (from the file or --set), a controller without a script, robots placed where they cannot be.
 #include <gtest/gtest.h>
 
+#include "model/device_params.h"
+#include "model/device_table.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -135,6 +137,18 @@ TEST(UnknownAttributes, UnknownElementsSuggestTheClosestOne) {
   EXPECT_FALSE(l.model);
   EXPECT_TRUE(Contains(l.Errors(), "<orientatoin>: unknown element inside <distribute> (did you mean <orientation>?)"))
       << l.Errors();
+}
+
+TEST(UnknownAttributes, EveryAttributeDeviceParamsReadsIsInTheDeviceTable) {
+  // The device table's rows are the schema for device attributes: a read outside them would
+  // flag a user's correct attribute as unknown.
+  for (const DeviceRow& row : DeviceTable()) {
+    DeviceConfig cfg;
+    cfg.type = row.type;
+    ErrorList errors;
+    ParseDeviceParams(&cfg, &errors);
+    EXPECT_TRUE(errors.Empty()) << row.xml_name << ": " << errors.Format();
+  }
 }
 
 // ---- a controller without a script
