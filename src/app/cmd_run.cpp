@@ -13,6 +13,7 @@
 
 #include "app/cli_support.h"
 #include "app/commands.h"
+#include "app/log_printer.h"
 #include "app/set_file.h"
 #include "core/paths.h"
 #include "core/strings.h"
@@ -47,6 +48,8 @@ struct RunArgs {
   std::string record;  // --record's value: "" or every=N
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
+  bool log_prefix = false;  // --log-prefix: "[t=120 fb7] " before each log line
+  std::string log_dir;      // --log-dir: one file per robot
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
   long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
   double lua_seconds = -1;                          // wall clock per Lua call; -1: default
@@ -196,9 +199,12 @@ static int Run(RunArgs& r) {
   opt.output_dir = out;
   opt.strict = r.strict;
   opt.lua = WatchdogOptions(*model, r);
-  opt.log_sink = [](char stream, const std::string& line) {
-    std::fprintf(stream == 'E' ? stderr : stdout, "%s\n", line.c_str());
-  };
+  auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
+  if (!logs->Prepare(&error)) {
+    std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+  opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
   auto t0 = std::chrono::steady_clock::now();
   auto world = World::Create(*model, opt, &error);
   if (!world) {
@@ -223,6 +229,7 @@ static int Run(RunArgs& r) {
   std::signal(SIGINT, OnSignal);
   std::signal(SIGTERM, OnSignal);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
+  logs->SetProgress(&progress);
   RunInfo info;
   info.version = ESSAIM_VERSION;
   StepStatus status = StepStatus::Running;
@@ -238,6 +245,7 @@ static int Run(RunArgs& r) {
     progress.Update(world->tick);
   }
   progress.Finish();
+  logs->SetProgress(nullptr);
   if (g_interrupted && status == StepStatus::Failed) {
     // A loop-function hook stopped by the signal: the run was interrupted, not broken.
     info.status = "interrupted";
@@ -248,6 +256,7 @@ static int Run(RunArgs& r) {
   Json metrics;
   bool has_metrics = false;
   EndRun(*world, status, &info, &metrics, &has_metrics);
+  if (!logs->Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
   info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The recording ends with the run, however it ended (interrupted and failed runs too).
   if (recorder.IsOpen()) {
@@ -292,6 +301,9 @@ CommandMain AddRunCommand(CLI::App& app) {
   sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
   sub->add_flag("--strict", r->strict,
                 "unknown attributes in the file are errors (exit 2); the first controller error ends the run (exit 1)");
+  sub->add_flag("--log-prefix", r->log_prefix, "start each log line with its tick and robot: [t=120 fb7] ...");
+  sub->add_option("--log-dir", r->log_dir, "write each robot's log lines to DIR/<robot id>.log instead")
+      ->type_name("DIR");
   sub->add_flag("--sandbox", r->sandbox,
                 "untrusted scripts: no io/os/debug/native code, every instruction counted (docs/sandbox.md)");
   auto budget = std::make_shared<double>(-1);

@@ -31,10 +31,14 @@ class Progress {
  public:
   Progress(bool enabled, unsigned long long total_ticks, size_t robots);
   void Update(unsigned long long tick);
+  /// Erases the progress line if it is shown, so that a log line starts on a clean line; the
+  /// next Update draws it again.
+  void Clear();
   void Finish();
 
  private:
   bool enabled_;
+  bool shown_ = false;
   unsigned long long total_;
   size_t robots_;
   double start_, last_;

@@ -28,12 +28,16 @@ void Progress::Update(unsigned long long tick) {
     std::fprintf(stderr, "\r  tick %llu  %.0f ticks/s  %zu robots   ", tick, rate, robots_);
   }
   std::fflush(stderr);
+  shown_ = true;
 }
 
-void Progress::Finish() {
-  if (!enabled_) return;
+void Progress::Clear() {
+  if (!enabled_ || !shown_) return;
   std::fprintf(stderr, "\r%*s\r", 79, "");
   std::fflush(stderr);
+  shown_ = false;
 }
+
+void Progress::Finish() { Clear(); }
 
 }  // namespace essaim

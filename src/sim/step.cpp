@@ -12,20 +12,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-void FlushLog(World& w, std::string& buffer) {
-  if (buffer.empty()) return;
-  if (w.options.log_sink) {
-    size_t start = 0;
-    while (start < buffer.size()) {
-      size_t end = buffer.find('\n', start);
-      if (end == std::string::npos) end = buffer.size();
-      w.options.log_sink(buffer[start], buffer.substr(start + 1, end - start - 1));
-      start = end + 1;
-    }
-  }
-  buffer.clear();  // keeps capacity: no churn once warm
-}
-
 bool LoopCall(World& w, const char* hook) {
   std::string err;
   if (!w.loop_functions.Call(hook, &err)) {
@@ -56,7 +42,7 @@ StepStatus Step(World& w) {
   UpdateMedia(m, w.physics, w.robots, &w.media);
   auto t3 = Clock::now();
   bool ok = LoopCall(w, "pre_step");
-  FlushLog(w, w.loop_functions.LogBuffer());
+  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
   auto t4 = Clock::now();
   w.times.act += Seconds(t0, t1);
   w.times.physics += Seconds(t1, t2);
@@ -100,7 +86,7 @@ StepStatus Step(World& w) {
   bool failed = false;
   const size_t errors_before = w.controller_errors.size();
   for (int i = 0; i < n; ++i) {
-    FlushLog(w, w.controllers[i]->LogBuffer());
+    FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
     if (!w.pending_errors[i].empty()) {
       w.controller_errors.push_back({m.robots[i].id, w.tick, w.pending_errors[i]});
       w.pending_errors[i].clear();
@@ -112,7 +98,7 @@ StepStatus Step(World& w) {
   }
   // This tick's errors, identical ones grouped (after the logs, as before).
   if (w.options.log_sink && w.controller_errors.size() > errors_before)
-    for (const std::string& text : GroupControllerErrors(w.controller_errors, errors_before)) w.options.log_sink('E', text);
+    for (const std::string& text : GroupControllerErrors(w.controller_errors, errors_before)) w.options.log_sink('E', text, {w.tick, kLogHost});
   if (failed) return StepStatus::Failed;
   ok = LoopCall(w, "post_step");
   bool finished = false;
@@ -121,7 +107,7 @@ StepStatus Step(World& w) {
     ok = w.loop_functions.IsExperimentFinished(&finished, &err);
     if (!ok) w.failure = err;
   }
-  FlushLog(w, w.loop_functions.LogBuffer());
+  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
   w.times.loop_functions += Seconds(t5, Clock::now());
   if (!ok) return StepStatus::Failed;
   if (finished) {
@@ -133,12 +119,12 @@ StepStatus Step(World& w) {
 
 bool FinishRun(World& w, Json* metrics, bool* has_metrics, std::string* error) {
   bool ok = w.loop_functions.PostExperiment(metrics, has_metrics, error);
-  FlushLog(w, w.loop_functions.LogBuffer());
+  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
     if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err))
       w.controller_errors.push_back({w.model.robots[i].id, w.tick, err});
-    FlushLog(w, w.controllers[i]->LogBuffer());
+    FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
   }
   return ok;
 }

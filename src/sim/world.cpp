@@ -83,11 +83,30 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
       }
     }
   }
+  for (size_t i = 0; i < n; ++i) FlushLog(*w, w->controllers[i]->LogBuffer(), static_cast<int>(i));
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)
-    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text);
-  if (!w->loop_functions.Call("init", error)) return nullptr;
+    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text, {0, kLogHost});
+  bool loop_ok = w->loop_functions.Call("init", error);
+  FlushLog(*w, w->loop_functions.LogBuffer(), kLogLoopFunctions);
+  if (!loop_ok) return nullptr;
   return w;
+}
+
+void FlushLog(World& w, std::string& buffer, int robot) {
+  if (buffer.empty()) return;
+  if (w.options.log_sink) {
+    // Each line is "<stream char><text>\n" (lua_state.cpp's log/logerr/print).
+    const LogOrigin from{w.tick, robot};
+    size_t start = 0;
+    while (start < buffer.size()) {
+      size_t end = buffer.find('\n', start);
+      if (end == std::string::npos) end = buffer.size();
+      w.options.log_sink(buffer[start], buffer.substr(start + 1, end - start - 1), from);
+      start = end + 1;
+    }
+  }
+  buffer.clear();  // keeps capacity: no churn once warm
 }
 
 }  // namespace essaim

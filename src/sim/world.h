@@ -28,13 +28,24 @@ struct ControllerError {
   std::string message;
 };
 
+/// Where a log line comes from: the tick it was written in (0: during init) and the robot's
+/// index into model.robots, or kLogLoopFunctions, or kLogHost (essaim's own messages, such
+/// as grouped controller errors).
+struct LogOrigin {
+  uint64_t tick = 0;
+  int robot = -1;
+};
+constexpr int kLogLoopFunctions = -1;
+constexpr int kLogHost = -2;
+
 struct SimOptions {
   LuaOptions lua;
   std::string output_dir;      // given to the loop functions
   bool strict = false;         // first controller error ends the run
   int threads = -1;            // -1: the model's <system threads>
-  /// Receives log()/logerr() lines in robot order ('O' stdout, 'E' stderr). Null: dropped.
-  std::function<void(char stream, const std::string& line)> log_sink;
+  /// Receives log()/logerr() lines in robot order ('O' stdout, 'E' stderr, 'P' print) with
+  /// who wrote them. Null: dropped.
+  std::function<void(char stream, const std::string& line, const LogOrigin& from)> log_sink;
 };
 
 class ThreadPool;
@@ -72,5 +83,9 @@ class World {
  private:
   World(const Model& m, const SimOptions& o);
 };
+
+/// Hands a Lua state's buffered log lines to options.log_sink (from robot index `robot`, or
+/// kLogLoopFunctions) and empties the buffer.
+void FlushLog(World& w, std::string& buffer, int robot);
 
 }  // namespace essaim

@@ -111,7 +111,7 @@ end
   const double side = kR + 0.05 + 0.002;
   std::vector<std::string> lines;
   SimOptions sim;
-  sim.log_sink = [&](char, const std::string& line) { lines.push_back(line); };
+  sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { lines.push_back(line); };
   Scene s = Load(d, Experiment(FootBot("fb", 0, 0, 0, "c") + Cylinder(0, side), kController, 600), {}, sim);
   ASSERT_TRUE(s.ok()) << s.error;
   World& w = *s.world;

@@ -43,7 +43,7 @@ std::unique_ptr<Run> Start(const TempDir& d, const std::string& xml) {
   auto r = std::make_unique<Run>();
   SimOptions sim;
   Run* raw = r.get();
-  sim.log_sink = [raw](char, const std::string& line) { raw->lines.push_back(line); };
+  sim.log_sink = [raw](char, const std::string& line, const LogOrigin&) { raw->lines.push_back(line); };
   r->s = Load(d, xml, {}, sim);
   return r;
 }

@@ -177,7 +177,7 @@ TEST(Battery, LuaSeesInitialValuesInInitThenTheDischarge) {
           "function step() log(string.format('%.12f %.9f', robot.battery.available_charge, robot.battery.time_left)) end\n");
   std::vector<std::string> lines;
   SimOptions sim;
-  sim.log_sink = [&](char, const std::string& line) { lines.push_back(line); };
+  sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { lines.push_back(line); };
   std::string ctrl =
       "<lua_controller id=\"b\"><actuators/><sensors><battery implementation=\"default\"/></sensors>"
       "<params script=\"b.lua\"/></lua_controller>";

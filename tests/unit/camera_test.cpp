@@ -156,7 +156,7 @@ TEST(Camera, BlackLedsAndDisabledCameraSeeNothing) {
   d.Write("look.lua", kLook);
   std::vector<std::string> lines;
   SimOptions sim;
-  sim.log_sink = [&lines](char, const std::string& line) { lines.push_back(line); };
+  sim.log_sink = [&lines](char, const std::string& line, const LogOrigin&) { lines.push_back(line); };
   Scene s = Load(d,
                  CamExperiment(Bot("look", 0, 0, 0, "look") + Bot("dark", 0.4, 0, 0, "dark") + Bot("blind", 0, 0.4, 0, "blind") +
                                    Bot("blink", -0.4, 0, 0, "blink") + Bot("g", -0.4, -0.4, 0, "green"),

@@ -32,7 +32,7 @@ Scene LoadScript(const TempDir& d, const std::string& lua, const std::string& ar
                  std::vector<std::string>* log = nullptr) {
   d.Write("c.lua", lua);
   SimOptions so;
-  if (log) so.log_sink = [log](char, const std::string& l) { log->push_back(l); };
+  if (log) so.log_sink = [log](char, const std::string& l, const LogOrigin&) { log->push_back(l); };
   return Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + arena, Controller("c.lua", actuator)), {}, so);
 }
 

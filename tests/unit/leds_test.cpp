@@ -32,7 +32,7 @@ std::unique_ptr<Logged> LoadLogged(const TempDir& d, const std::string& xml) {
   auto l = std::make_unique<Logged>();
   SimOptions sim;
   Logged* raw = l.get();
-  sim.log_sink = [raw](char, const std::string& line) { raw->lines.push_back(line); };
+  sim.log_sink = [raw](char, const std::string& line, const LogOrigin&) { raw->lines.push_back(line); };
   l->s = Load(d, xml, {}, sim);
   return l;
 }

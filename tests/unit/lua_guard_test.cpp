@@ -231,7 +231,7 @@ TEST(ErrorReports, InitErrorsArePrintedAndIdenticalOnesGrouped) {
   d.Write("ok.lua", "function step() end");
   std::vector<std::string> printed;
   SimOptions so;
-  so.log_sink = [&](char stream, const std::string& line) {
+  so.log_sink = [&](char stream, const std::string& line, const LogOrigin&) {
     if (stream == 'E') printed.push_back(line);
   };
   std::string arena = FootBot("a", 0, 0, 0, "c") + FootBot("b", 0, 1, 0, "c") + FootBot("c", 0, 2, 0, "c") +

@@ -16,7 +16,7 @@ struct Logged {
 
 Scene LoadWithLog(const TempDir& d, const std::string& xml, Logged* log, LoadOptions lo = {}) {
   SimOptions so;
-  so.log_sink = [log](char s, const std::string& l) { log->lines.push_back({s, l}); };
+  so.log_sink = [log](char s, const std::string& l, const LogOrigin&) { log->lines.push_back({s, l}); };
   return Load(d, xml, lo, so);
 }
 

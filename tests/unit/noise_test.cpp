@@ -244,7 +244,7 @@ Trace RunPair(const std::string& second_ctrl, bool with_second, int threads = 1)
   std::vector<double> logged;  // robot.random draws, robot order within a tick
   SimOptions sim;
   sim.threads = threads;
-  sim.log_sink = [&](char, const std::string& line) { logged.push_back(std::strtod(line.c_str(), nullptr)); };
+  sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { logged.push_back(std::strtod(line.c_str(), nullptr)); };
   Scene s = Load(d, Experiment(arena, std::string(kQuiet) + kNoisy, 100, 42), {}, sim);
   EXPECT_TRUE(s.ok()) << s.error;
   if (!s.ok()) return t;
@@ -301,7 +301,7 @@ TEST(Noise, SensorNoiseLeavesRobotRandomAlone) {
   auto run = [&](const std::string& ctrl) {
     std::vector<double> out;
     SimOptions sim;
-    sim.log_sink = [&](char, const std::string& line) { out.push_back(std::strtod(line.c_str(), nullptr)); };
+    sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { out.push_back(std::strtod(line.c_str(), nullptr)); };
     Scene s = Load(d, Experiment(FootBot("r0", 0, 0, 0, ctrl), std::string(kQuiet) + clean, 30, 42), {}, sim);
     EXPECT_TRUE(s.ok()) << s.error;
     if (s.ok()) RunTicks(*s.world, 30);

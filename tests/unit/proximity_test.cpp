@@ -183,7 +183,7 @@ end
   std::string arena = FootBot("fb0", 0, 0, 0, "c") + Box("wall", kR + 0.05 + 0.05, 0, 0.1, 4, 0.5);
   std::vector<std::string> lines;
   SimOptions so;
-  so.log_sink = [&](char, const std::string& l) { lines.push_back(l); };
+  so.log_sink = [&](char, const std::string& l, const LogOrigin&) { lines.push_back(l); };
   Scene s = Load(d, Experiment(arena, Controller("c.lua")), {}, so);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 3);

@@ -55,7 +55,7 @@ std::unique_ptr<LoggedScene> LoadLogged(const TempDir& d, const std::string& xml
   auto ls = std::make_unique<LoggedScene>();
   SimOptions sim;
   LoggedScene* raw = ls.get();
-  sim.log_sink = [raw](char, const std::string& line) { raw->lines.push_back(line); };
+  sim.log_sink = [raw](char, const std::string& line, const LogOrigin&) { raw->lines.push_back(line); };
   ls->s = Load(d, xml, {}, sim);
   return ls;
 }

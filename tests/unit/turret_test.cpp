@@ -29,7 +29,7 @@ std::vector<double> LoggedNumbers(const std::string& script, int ticks, std::vec
   d.Write("turret.lua", script);
   std::vector<double> out;
   SimOptions sim;
-  sim.log_sink = [&](char stream, const std::string& line) {
+  sim.log_sink = [&](char stream, const std::string& line, const LogOrigin&) {
     if (stream == 'O') out.push_back(std::strtod(line.c_str(), nullptr));
   };
   Scene s = Load(d, Experiment(FootBot("fb", 0, 0, 0, "t"), Controller("turret.lua"), ticks), {}, sim);

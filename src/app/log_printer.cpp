@@ -1,0 +1,74 @@
+#include "app/log_printer.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include "app/commands.h"
+#include "core/paths.h"
+#include "output/atomic_file.h"  // MakeDirs
+
+namespace essaim {
+
+namespace {
+constexpr size_t kBlock = 64 * 1024;  // bytes a robot's lines wait in memory before a write
+}
+
+LogPrinter::LogPrinter(const Model& model, bool prefix, std::string dir) : prefix_(prefix), dir_(std::move(dir)) {
+  for (const RobotDef& r : model.robots) robot_ids_.push_back(r.id);
+  if (!dir_.empty()) {
+    pending_.resize(robot_ids_.size() + 1);
+    started_.resize(robot_ids_.size() + 1, false);
+  }
+}
+
+bool LogPrinter::Prepare(std::string* error) { return dir_.empty() || MakeDirs(dir_, error); }
+
+std::string LogPrinter::Prefix(const LogOrigin& from) const {
+  std::string who = from.robot >= 0 && static_cast<size_t>(from.robot) < robot_ids_.size() ? robot_ids_[from.robot]
+                                                                                           : "loop";
+  return "[t=" + std::to_string(from.tick) + " " + who + "] ";
+}
+
+void LogPrinter::Print(char stream, const std::string& line, const LogOrigin& from) {
+  bool from_script = from.robot != kLogHost;
+  if (!dir_.empty() && from_script) {
+    size_t slot = from.robot >= 0 ? static_cast<size_t>(from.robot) : robot_ids_.size();
+    std::string& p = pending_[slot];
+    if (prefix_) p += Prefix(from);
+    p += line;
+    p += '\n';
+    std::string error;
+    if (p.size() >= kBlock && !WriteOut(slot, &error)) {
+      if (progress_) progress_->Clear();
+      std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+    }
+    return;
+  }
+  if (progress_) progress_->Clear();
+  std::FILE* out = stream == 'E' ? stderr : stdout;
+  if (prefix_ && from_script) std::fputs(Prefix(from).c_str(), out);
+  std::fprintf(out, "%s\n", line.c_str());
+  if (progress_) std::fflush(out);  // before the progress line comes back
+}
+
+bool LogPrinter::WriteOut(size_t slot, std::string* error) {
+  std::string name = slot < robot_ids_.size() ? robot_ids_[slot] : "loop_functions";
+  std::string path = JoinPath(dir_, name + ".log");
+  // The first write replaces an old file: a run's folder holds only its own logs.
+  std::FILE* f = std::fopen(path.c_str(), started_[slot] ? "ab" : "wb");
+  bool ok = f && std::fwrite(pending_[slot].data(), 1, pending_[slot].size(), f) == pending_[slot].size();
+  if (f && std::fclose(f) != 0) ok = false;
+  if (!ok && error) *error = "cannot write " + path + ": " + std::strerror(errno);
+  started_[slot] = true;
+  pending_[slot].clear();
+  return ok;
+}
+
+bool LogPrinter::Flush(std::string* error) {
+  bool ok = true;
+  for (size_t slot = 0; slot < pending_.size(); ++slot)
+    if (!pending_[slot].empty() && !WriteOut(slot, error)) ok = false;
+  return ok;
+}
+
+}  // namespace essaim
