@@ -40,6 +40,9 @@ void AttributeLedger::Visit(const Element* e) { read_[e]; }
 
 bool AttributeLedger::Known(const Element* e, const std::string& name) const {
   if (read_all_.count(e)) return true;
+  // XML namespaces and schema hints (xmlns:xsi, xsi:noNamespaceSchemaLocation) are the
+  // file's business, not the simulator's.
+  if (name.rfind("xmlns", 0) == 0 || name.find(':') != std::string::npos) return true;
   auto it = read_.find(e);
   if (it != read_.end() && it->second.count(name)) return true;
   for (const std::string& n : KnownIgnoredAttributes(e->Name()))

@@ -224,6 +224,7 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
     errors_->Add(path_, 0, "", "empty document");
     return nullptr;
   }
+  ledger_.ReadAll(root);  // ARGoS checks neither the root's name nor its attributes
   CheckChildren(root,
                 {"framework", "controllers", "arena", "physics_engines", "media", "loop_functions",
                  "visualization"},

@@ -114,6 +114,9 @@ TEST(UnknownAttributes, AttributesArgosAcceptsAndEssaimIgnoresAreNotTypos) {
   xml = Replace(xml, "<framework>", "<framework><system threads=\"0\" pin_threads_to_cores=\"false\"/>"
               "<profiling file=\"p.txt\" format=\"table\" truncate_file=\"true\"/>");
   xml = Replace(xml, "<dynamics2d id=\"dyn2d\" iterations=\"10\"/>", "<dynamics2d id=\"dyn2d\" iterations=\"10\"><spatial_hash cell_size=\"1\" cell_num=\"10\"/></dynamics2d>");
+  xml = Replace(xml, "<argos-configuration>",
+                "<argos-configuration xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+                "xsi:noNamespaceSchemaLocation=\"argos.xsd\">");
   Loaded l = LoadWith(xml);
   ASSERT_TRUE(l.model) << l.Errors();
   EXPECT_TRUE(l.warnings.Empty()) << l.Warnings();
