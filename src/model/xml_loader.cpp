@@ -840,6 +840,9 @@ void Loader::LoadDistribute(const XMLElement* e) {
 void Loader::ReportUnknownAttributes(const XMLElement* root) {
   auto hint = [&](const XMLElement* e, const std::string& name) {
     std::string best = ledger_.Suggest(e, name);
+    // Read on another element of this tag: a setting that only counts with other values
+    // (a box's mass when movable="true", a generator's min with method="uniform").
+    if (best == name) return std::string("; it counts on other <") + e->Name() + "> elements, not with this one's settings";
     return best.empty() ? std::string() : "; did you mean '" + best + "'?";
   };
   std::set<std::pair<const XMLElement*, std::string>> from_set;

@@ -122,6 +122,18 @@ TEST(UnknownAttributes, AttributesArgosAcceptsAndEssaimIgnoresAreNotTypos) {
   EXPECT_TRUE(l.warnings.Empty()) << l.Warnings();
 }
 
+TEST(UnknownAttributes, AnAttributeThatCountsOnlyWithOtherSettingsIsToldSo) {
+  std::string arena = Box("a", 2, 2, 1, 1, 0.5) +
+                      "<box id=\"b\" size=\"1,1,1\" movable=\"true\" mass=\"2\"><body position=\"-2,-2,0\"/></box>";
+  LoadOptions opt;
+  opt.overrides = {"arena.a.mass=3"};  // a static box has no mass: a sweep over it changes nothing
+  Loaded l = LoadWith(Experiment(arena, kCtrl), opt);
+  EXPECT_FALSE(l.model);
+  EXPECT_TRUE(Contains(l.Errors(), "--set arena.a.mass=3: essaim reads no attribute 'mass' on <box>; it counts on "
+                                   "other <box> elements, not with this one's settings"))
+      << l.Errors();
+}
+
 TEST(UnknownAttributes, ADistributedPrototypeIsCheckedEvenWithQuantityZero) {
   std::string arena = kDistribute;
   arena = Replace(arena, "quantity=\"5\"", "quantity=\"0\"");
