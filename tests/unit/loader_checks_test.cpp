@@ -2,6 +2,8 @@
 // (from the file or --set), a controller without a script, robots placed where they cannot be.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "model/device_params.h"
 #include "model/device_table.h"
 #include "support/scene.h"
@@ -164,6 +166,24 @@ TEST(UnknownAttributes, EveryAttributeDeviceParamsReadsIsInTheDeviceTable) {
     ParseDeviceParams(&cfg, &errors);
     EXPECT_TRUE(errors.Empty()) << row.xml_name << ": " << errors.Format();
   }
+}
+
+TEST(UnknownAttributes, EveryShippedExperimentLoadsWithoutWarnings) {
+  int files = 0;
+  for (const char* dir : {"arenas", "bench", "tests"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(ESSAIM_SOURCE_DIR) + "/" + dir)) {
+      if (entry.path().extension() != ".argos") continue;
+      ++files;
+      ErrorList errors, warnings;
+      LoadOptions opt;
+      opt.seed = 1;
+      opt.working_dir = entry.path().parent_path().string();
+      auto m = LoadExperimentFile(entry.path().string(), opt, &errors, &warnings);
+      EXPECT_TRUE(m) << errors.Format();
+      EXPECT_TRUE(warnings.Empty()) << warnings.Format();
+    }
+  }
+  EXPECT_GE(files, 16);
 }
 
 // ---- a controller without a script
