@@ -157,3 +157,14 @@ def test_a_sweep_over_a_path_nobody_reads_is_refused_before_any_run(tmp_path, es
     assert "'quantiy' on <entity>; did you mean 'quantity'?" in r.stderr
     assert "did you mean 'length'?" in r.stderr
     assert not (out / "runs").exists()
+
+
+def test_a_value_that_cannot_load_fails_its_own_runs_only(tmp_path, essaim):
+    # 500 robots do not fit in tiny.argos's 3 m x 3 m: that value fails, the other runs.
+    s, out = tiny_sweep(tmp_path, name="v", params={QUANTITY: [500, 2]}, seeds=1)
+    r = run_sweep(s, essaim=essaim)
+    assert r.returncode == 1, r.stderr
+    df = pd.read_parquet(out / "results.parquet").set_index("run")
+    assert df.loc["quantity=500__seed=1", "status"] == "failed"
+    assert "could not place" in df.loc["quantity=500__seed=1", "error"]
+    assert df.loc["quantity=2__seed=1", "status"] == "ok"
