@@ -1,5 +1,6 @@
 #include "app/log_printer.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 
@@ -11,7 +12,17 @@ namespace essaim {
 
 namespace {
 constexpr size_t kBlock = 64 * 1024;  // bytes a robot's lines wait in memory before a write
+
+// A robot id as a file name: an id is any XML text ("../x", "a/b"), a file must stay in DIR.
+// A changed id gets its index, so two ids never share a file.
+std::string FileNameFor(const std::string& id, size_t index) {
+  std::string name = id;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
+  if (name.empty() || name[0] == '.') name = "_" + name;
+  return name == id ? name : name + "~" + std::to_string(index);
 }
+}  // namespace
 
 LogPrinter::LogPrinter(const Model& model, bool prefix, std::string dir) : prefix_(prefix), dir_(std::move(dir)) {
   for (const RobotDef& r : model.robots) robot_ids_.push_back(r.id);
@@ -52,7 +63,7 @@ void LogPrinter::Print(char stream, const std::string& line, const LogOrigin& fr
 }
 
 bool LogPrinter::WriteOut(size_t slot, std::string* error) {
-  std::string name = slot < robot_ids_.size() ? robot_ids_[slot] : "loop_functions";
+  std::string name = slot < robot_ids_.size() ? FileNameFor(robot_ids_[slot], slot) : "loop_functions";
   std::string path = JoinPath(dir_, name + ".log");
   // The first write replaces an old file: a run's folder holds only its own logs.
   std::FILE* f = std::fopen(path.c_str(), started_[slot] ? "ab" : "wb");

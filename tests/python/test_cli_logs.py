@@ -71,3 +71,16 @@ def test_log_dir_writes_one_file_per_robot(tmp_path):
     assert (logs / "fb0.log").read_text() == "ready\n"
     assert (logs / "fb1.log").read_text() == "tick 5\ntick 10\n"
     assert not (logs / "fb2.log").exists()
+
+
+def test_log_dir_keeps_odd_robot_ids_inside_the_folder(tmp_path):
+    f = experiment(tmp_path)
+    (tmp_path / "logger.lua").write_text('function step() log(robot.id) end\n')
+    f.write_text(f.read_text().replace('<foot-bot id="fb">', '<foot-bot id="../fb">'))
+    logs = tmp_path / "logs"
+    r = subprocess.run([ESSAIM, "run", str(f), "--ticks", "5", "--quiet", "--log-dir", str(logs),
+                        "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert sorted(p.name for p in logs.iterdir()) == [f"_.._fb{i}~{i}.log" for i in range(4)]
+    assert (logs / "_.._fb2~2.log").read_text() == "../fb2\n" * 5
+    assert not list(tmp_path.glob("fb*.log"))
