@@ -61,6 +61,7 @@ class Simulation {
       world_ = World::Create(*model_, opt, &error);
     }
     if (!world_) throw Error(error);
+    if (!world_->failure.empty()) throw Error(world_->failure);  // an init() error
     if (LengthReached(*world_)) status_ = StepStatus::Finished;
   }
 
