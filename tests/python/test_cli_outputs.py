@@ -260,3 +260,27 @@ end
     r = run("run", exp, "--ticks", 4, "--quiet", "--out", tmp_path / "o", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert (tmp_path / "o" / "timeseries.csv").read_text() == "a,b\n1,2\n6,7\n"
+
+
+def test_deeply_nested_metrics_are_written_or_refused_cleanly(tmp_path):
+    # The conversion runs outside any pcall and uses a few stack slots per level.
+    exp = loop_experiment(tmp_path, """
+function post_experiment()
+  local depth = tonumber(experiment.params.depth)
+  local t = {leaf = 1, list = {1, 2}}
+  for i = 1, depth do t = {a = t, b = {x = i}, c = {t}} end
+  return t
+end
+""")
+    argos = exp.read_text().replace('script="loop.lua"', 'script="loop.lua" depth="14"')
+    exp.write_text(argos)
+    r = run("run", exp, "--ticks", 1, "--quiet", "--out", tmp_path / "o", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    m = json.loads((tmp_path / "o" / "metrics.json").read_text())
+    for _ in range(14):
+        m = m["a"]
+    assert m == {"leaf": 1, "list": [1, 2]}
+    exp.write_text(argos.replace('depth="14"', 'depth="40"'))
+    r = run("run", exp, "--ticks", 1, "--quiet", "--out", tmp_path / "p", cwd=tmp_path)
+    assert r.returncode == 1 and "nested too deep" in r.stderr
+    assert summary(tmp_path / "p")["status"] == "failed"
