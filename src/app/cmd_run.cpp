@@ -280,8 +280,8 @@ static int Run(RunArgs& r) {
     else info.output_errors.push_back(error);
   }
   std::vector<std::string> unwritten = info.output_errors;
-  bool summary_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
-  if (!summary_written) unwritten.push_back(error);
+  bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
+  if (!all_written) unwritten.push_back(error);  // metrics, time series or summary
   if (!world->failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world->failure.c_str());
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
