@@ -86,6 +86,10 @@ static int Bench(BenchArgs a) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return kExitBadInput;
       }
+      if (!world->failure.empty()) {  // an init() error
+        std::fprintf(stderr, "%s\n", world->failure.c_str());
+        return kExitRunFailed;
+      }
       auto t0 = std::chrono::steady_clock::now();
       while (Step(*world) == StepStatus::Running) {
       }

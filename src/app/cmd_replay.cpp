@@ -76,6 +76,10 @@ static int Replay(const std::string& run, std::string out) {
     return kExitBadInput;
   }
   if (out.empty()) out = JoinPath(IsDirectory(run) ? run : DirName(run), "replay.html");
+  if (!CheckOutputFile(out, &error)) {  // before building the page: a wrong target is bad input
+    std::fprintf(stderr, "essaim replay: %s\n", error.c_str());
+    return kExitBadInput;
+  }
   if (!WriteFileAtomic(out, ReplayHtml(rec), &error)) {
     std::fprintf(stderr, "essaim replay: %s\n", error.c_str());
     return kExitRunFailed;

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "app/cli_support.h"
 #include "app/commands.h"
@@ -20,6 +21,7 @@
 #include "lua/lua_guard.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
+#include "output/out_folder.h"
 #include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
@@ -176,6 +178,10 @@ static int Check(RunArgs& r) {
     std::fprintf(stderr, "%s\n", err.c_str());
     return kExitBadInput;
   }
+  if (!world->failure.empty()) {  // a runtime error in init(): as `run` would report it
+    std::fprintf(stderr, "essaim check: %s\n", world->failure.c_str());
+    return kExitRunFailed;
+  }
   std::printf("%s: ok (%zu robots, %zu obstacles, %llu ticks)\n", r.file.c_str(), model->robots.size(),
               model->obstacles.size(), static_cast<unsigned long long>(model->experiment.length_ticks));
   return kExitOk;
@@ -190,9 +196,9 @@ static int Run(RunArgs& r) {
   auto model = LoadOrReport(r);
   if (!model) return kExitBadInput;
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
-  if (!MakeDirs(out, &error)) {
+  if (!PrepareOutFolder(out, &error)) {  // before any script runs: a wrong --out is bad input
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitRunFailed;
+    return kExitBadInput;
   }
 
   SimOptions opt;
@@ -211,11 +217,25 @@ static int Run(RunArgs& r) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitBadInput;
   }
-  RecordingWriter recorder;
-  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error)) {
+  // The folder will hold this run's outputs only: an earlier run's go into previous/.
+  std::vector<std::string> moved;
+  if (!SetAsideEarlierOutputs(out, &moved, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
+  if (!moved.empty()) {
+    std::string names;
+    for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
+    std::fprintf(stderr, "essaim run: %s held an earlier run's outputs; moved them into %s: %s\n", out.c_str(),
+                 JoinPath(out, kPreviousRunFolder).c_str(), names.c_str());
+  }
+  RunInfo info;
+  info.version = ESSAIM_VERSION;
+  // A recording that cannot be written (a full disk) does not stop the run: the other
+  // outputs are still written, and the run ends with exit 1.
+  RecordingWriter recorder;
+  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error))
+    std::fprintf(stderr, "essaim run: %s; the run goes on without a recording\n", error.c_str());
   g_run.out = out;
   g_run.world = world.get();
   g_run.info.version = ESSAIM_VERSION;
@@ -230,10 +250,9 @@ static int Run(RunArgs& r) {
   std::signal(SIGTERM, OnSignal);
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   logs->SetProgress(&progress);
-  RunInfo info;
-  info.version = ESSAIM_VERSION;
   StepStatus status = StepStatus::Running;
   if (LengthReached(*world)) status = StepStatus::Finished;
+  if (!world->failure.empty()) status = StepStatus::Failed;  // init() failed
   while (status == StepStatus::Running) {
     if (g_interrupted) {
       info.status = "interrupted";
@@ -241,7 +260,14 @@ static int Run(RunArgs& r) {
       break;
     }
     status = Step(*world);
-    if (recorder.IsOpen()) recorder.Record(*world);
+    if (recorder.IsOpen()) {
+      recorder.Record(*world);
+      if (!recorder.IsOpen()) {
+        progress.Finish();
+        std::fprintf(stderr, "essaim run: %s at tick %llu; the run goes on without a recording\n",
+                     recorder.Failure().c_str(), static_cast<unsigned long long>(world->tick));
+      }
+    }
     progress.Update(world->tick);
   }
   progress.Finish();
@@ -259,18 +285,20 @@ static int Run(RunArgs& r) {
   if (!logs->Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
   info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The recording ends with the run, however it ended (interrupted and failed runs too).
-  if (recorder.IsOpen()) {
-    if (!recorder.Finish(*world, &error)) {
-      std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-      return kExitRunFailed;
-    }
-    info.outputs.push_back(kRecordingFile);
+  if (r.record_every > 0) {
+    if (recorder.Finish(*world, &error)) info.outputs.push_back(kRecordingFile);
+    else info.output_errors.push_back(error);
   }
-  if (!WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error)) {
-    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitRunFailed;
-  }
+  std::vector<std::string> unwritten = info.output_errors;
+  bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
+  if (!all_written) unwritten.push_back(error);  // metrics, time series or summary
   if (!world->failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world->failure.c_str());
+  if (!unwritten.empty()) {
+    for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
+    std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", out.c_str(),
+                 FileExists(JoinPath(out, "summary.json")) ? "; summary.json lists those written" : "");
+    if (info.status != "interrupted") return kExitRunFailed;
+  }
   if (!r.quiet) {
     double steps = static_cast<double>(world->tick) * model->robots.size();
     std::printf("essaim: %llu ticks, %zu robots, %.2f s, %.0f robot-steps/s; %zu controller error(s); output in %s\n",

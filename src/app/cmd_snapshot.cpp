@@ -55,6 +55,10 @@ static int Snapshot(SnapshotArgs s) {
   size_t frame = rec.FrameAtOrBefore(tick);
   uint64_t shown = rec.Tick(frame);
   if (s.out.empty()) s.out = JoinPath(path == s.run ? DirName(s.run) : s.run, "snapshot-" + std::to_string(shown) + ".png");
+  if (!CheckOutputFile(s.out, &error)) {  // before drawing: a wrong target is bad input
+    std::fprintf(stderr, "essaim snapshot: %s\n", error.c_str());
+    return kExitBadInput;
+  }
   SnapshotOptions opt;
   opt.size = static_cast<int>(s.size);
   opt.trail_ticks = static_cast<int>(std::min<long long>(s.trail, 0x7FFFFFFF));

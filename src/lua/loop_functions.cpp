@@ -110,28 +110,50 @@ struct LoopFunctionsAccess {
     lua_rawget(L, -2);
     return 1;
   }
+  // Two passes, so no Lua error unwinds through a C++ object (Debian's Lua longjmps, and a
+  // half-appended row would be left behind): the first checks every item and leaves its
+  // name and value on the stack; the second calls nothing that can raise and copies them.
   static int Timeseries(lua_State* L) {
     LoopFunctions* lf = Self(L);
     luaL_checktype(L, 1, LUA_TTABLE);
-    lua_Integer n = luaL_len(L, 1);
-    bool first = lf->series_.columns.empty() && lf->series_.rows.empty();
-    if (!first && static_cast<size_t>(n) != lf->series_.columns.size())
-      return luaL_error(L, "timeseries: row has %d columns, the first row had %d", (int)n, (int)lf->series_.columns.size());
-    std::vector<double> row;
+    const lua_Integer n = luaL_len(L, 1);
+    const std::vector<std::string>& columns = lf->series_.columns;
+    const bool first = columns.empty() && lf->series_.rows.empty();
+    if (!first && static_cast<size_t>(n) != columns.size())
+      return luaL_error(L, "timeseries: row has %d columns, the first row had %d", (int)n, (int)columns.size());
+    if (n < 0 || n > 100000) return luaL_error(L, "timeseries: a row has 0 to 100000 columns, got %d", (int)n);
+    luaL_checkstack(L, static_cast<int>(2 * n) + 3, "timeseries: too many columns");
     for (lua_Integer k = 1; k <= n; ++k) {
       lua_rawgeti(L, 1, k);
       if (!lua_istable(L, -1)) return luaL_error(L, "timeseries: each item must be {name, value}");
       lua_rawgeti(L, -1, 1);
       lua_rawgeti(L, -2, 2);
-      const char* name = lua_tostring(L, -2);
+      size_t len = 0;
+      const char* name = lua_isstring(L, -2) ? lua_tolstring(L, -2, &len) : nullptr;  // a number becomes text here
       if (!name || !lua_isnumber(L, -1)) return luaL_error(L, "timeseries: item %d must be {name, number}", (int)k);
-      if (first) lf->series_.columns.push_back(name);
-      else if (lf->series_.columns[k - 1] != name)
-        return luaL_error(L, "timeseries: column %d is '%s', expected '%s'", (int)k, name, lf->series_.columns[k - 1].c_str());
-      row.push_back(lua_tonumber(L, -1));
-      lua_pop(L, 3);
+      if (!first && (columns[k - 1].size() != len || std::memcmp(columns[k - 1].data(), name, len) != 0))
+        return luaL_error(L, "timeseries: column %d is '%s', expected '%s'", (int)k, name, columns[k - 1].c_str());
+      lua_remove(L, -3);  // the item; its name and value stay
     }
-    lf->series_.rows.push_back(std::move(row));
+    const int base = lua_gettop(L) - static_cast<int>(2 * n);
+    std::vector<double>& row = lf->series_.rows.emplace_back();
+    row.reserve(static_cast<size_t>(n));
+    int nonfinite = -1;
+    for (int k = 0; k < n; ++k) {
+      size_t len = 0;
+      const char* name = lua_tolstring(L, base + 1 + 2 * k, &len);
+      if (first) lf->series_.columns.emplace_back(name, len);  // whole, NUL bytes included
+      row.push_back(lua_tonumber(L, base + 2 + 2 * k));
+      if (nonfinite < 0 && !std::isfinite(row.back())) nonfinite = k;
+    }
+    if (nonfinite >= 0 && !lf->warned_nonfinite_row_) {
+      lf->warned_nonfinite_row_ = true;
+      std::string column = lf->series_.columns[static_cast<size_t>(nonfinite)];
+      std::replace(column.begin(), column.end(), '\n', ' ');  // one log line
+      lf->log_ += "Eloop functions: warning: timeseries(): NaN or infinite value in column '" + column +
+                  "' at tick " + std::to_string(lf->tick_) +
+                  ", written as NaN, Inf or -Inf in timeseries.csv (warned once per run)\n";
+    }
     return 0;
   }
 };
@@ -189,6 +211,11 @@ bool ToJson(lua_State* L, int idx, Json* out, int depth, const std::string& wher
   idx = lua_absindex(L, idx);
   if (depth > 32) {
     *error = "table nested too deep (cycle?)";
+    return false;
+  }
+  // Runs outside any pcall, one level per nesting: grow the stack without raising.
+  if (!lua_checkstack(L, 4)) {
+    *error = "out of Lua stack";
     return false;
   }
   switch (lua_type(L, idx)) {
@@ -381,6 +408,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
 }
 
 void LoopFunctions::SetTick(uint64_t tick) {
+  tick_ = tick;
   if (!L_) return;
   // The host's own reference and a raw set, outside any pcall: no global a script rebinds
   // (`experiment = nil`) and no metamethod it adds can make this raise (a Lua panic).

@@ -55,6 +55,8 @@ class LoopFunctions {
   int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
   std::string log_;
   Timeseries series_;
+  bool warned_nonfinite_row_ = false;  // timeseries(): NaN/inf is warned about once per run
+  uint64_t tick_ = 0;
   Rng rng_;
   // Context the robot handles reach through the registry.
   const Model* model_ = nullptr;

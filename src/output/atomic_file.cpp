@@ -8,19 +8,76 @@
 
 namespace essaim {
 
+namespace fs = std::filesystem;
+
+namespace {
+const char* KindName(fs::file_type t) {
+  switch (t) {
+    case fs::file_type::directory: return "a folder";
+    case fs::file_type::fifo: return "a FIFO";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
+}
+
+/// The file a write to `path` lands in: `path` itself, or a symlink's final target.
+bool ResolveOutput(const std::string& path, std::string* target, std::string* error) {
+  std::error_code ec;
+  *target = path;
+  if (!fs::is_symlink(fs::symlink_status(path, ec))) return true;
+  fs::path real = fs::canonical(path, ec);  // follows every link; fails on a dangling one
+  if (ec) {
+    *error = "cannot write " + path + ": a symlink whose target cannot be reached (" + ec.message() + ")";
+    return false;
+  }
+  *target = real.string();
+  return true;
+}
+}  // namespace
+
+bool CheckOutputFile(const std::string& path, std::string* error) {
+  std::string target;
+  if (!ResolveOutput(path, &target, error)) return false;
+  std::error_code ec;
+  fs::file_status st = fs::symlink_status(target, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    *error = "cannot write " + path + ": it is " + KindName(st.type()) +
+             ", not a regular file (refusing to replace it)";
+    return false;
+  }
+  fs::path parent = fs::path(target).parent_path();
+  if (parent.empty()) parent = ".";
+  if (!fs::is_directory(parent, ec)) {
+    *error = "cannot write " + path + ": no folder " + parent.string();
+    return false;
+  }
+  return true;
+}
+
 bool WriteFileAtomic(const std::string& path, const std::string& content, std::string* error) {
-  std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  std::string target;
+  if (!CheckOutputFile(path, error) || !ResolveOutput(path, &target, error)) return false;
+  std::string tmp = target + ".tmp." + std::to_string(::getpid());
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) {
     *error = "cannot write " + tmp + ": " + std::strerror(errno);
     return false;
   }
-  bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
-  ok &= std::fflush(f) == 0;
-  ok &= ::fsync(fileno(f)) == 0;
-  ok &= std::fclose(f) == 0;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    *error = "cannot write " + path + ": " + std::strerror(errno);
+  // The first failure's errno is the reason (fclose after a failed write may set another).
+  int failure = 0;
+  auto check = [&](bool ok) {
+    if (!ok && !failure) failure = errno ? errno : EIO;
+  };
+  errno = 0;
+  check(std::fwrite(content.data(), 1, content.size(), f) == content.size());
+  check(std::fflush(f) == 0);
+  check(::fsync(fileno(f)) == 0);
+  check(std::fclose(f) == 0);
+  if (!failure) check(std::rename(tmp.c_str(), target.c_str()) == 0);
+  if (failure) {
+    *error = "cannot write " + path + ": " + std::strerror(failure);
     std::remove(tmp.c_str());
     return false;
   }

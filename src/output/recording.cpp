@@ -295,6 +295,12 @@ void RecordingWriter::Close() {
   file_ = nullptr;
 }
 
+void RecordingWriter::Fail(int err) {
+  failure_ = "cannot write " + path_ + ": " + std::strerror(err ? err : EIO);
+  Close();
+  std::remove(tmp_.c_str());
+}
+
 bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t every, std::string* error) {
   path_ = path;
   tmp_ = path + ".tmp." + std::to_string(::getpid());
@@ -311,9 +317,14 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   io_buffer_.resize(std::max<size_t>(1 << 20, 4 * static_cast<size_t>(frame_bytes)));
   std::setvbuf(file_, io_buffer_.data(), _IOFBF, io_buffer_.size());
   std::string header = SerializeScene(scene_, frame_bytes);
-  if (std::fwrite(header.data(), 1, header.size(), file_) != header.size()) write_failed_ = true;
+  errno = 0;
+  if (std::fwrite(header.data(), 1, header.size(), file_) != header.size()) Fail(errno);
   bytes_ = header.size();
-  WriteFrame(world);
+  if (file_) WriteFrame(world);
+  if (!failure_.empty()) {
+    *error = failure_;
+    return false;
+  }
   return true;
 }
 
@@ -348,25 +359,29 @@ void RecordingWriter::WriteFrame(const World& w) {
     Put16(p + 4, QuantiseYaw(pose.yaw));
     p += kRecordedMovableBytes;
   }
-  if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) write_failed_ = true;
+  errno = 0;
+  if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) return Fail(errno);
   bytes_ += frame_.size();
   ++frames_;
   last_tick_ = w.tick;
 }
 
 bool RecordingWriter::Finish(const World& world, std::string* error) {
+  if (file_ && world.tick != last_tick_) WriteFrame(world);
   if (!file_) {
-    *error = "recording " + path_ + " is not open";
+    *error = failure_.empty() ? "recording " + path_ + " is not open" : failure_;
     return false;
   }
-  if (world.tick != last_tick_) WriteFrame(world);
-  bool ok = !write_failed_;
-  ok &= std::fflush(file_) == 0;
-  ok &= ::fsync(fileno(file_)) == 0;
-  ok &= std::fclose(file_) == 0;
+  // The first failure's errno is the reason (fclose after a failed flush may set another).
+  int err = 0;
+  errno = 0;
+  if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) err = errno ? errno : EIO;
+  if (std::fclose(file_) != 0 && !err) err = errno ? errno : EIO;
   file_ = nullptr;
-  if (!ok || std::rename(tmp_.c_str(), path_.c_str()) != 0) {
-    *error = "cannot write " + path_ + ": " + std::strerror(errno);
+  if (!err && std::rename(tmp_.c_str(), path_.c_str()) != 0) err = errno;
+  if (err) {
+    failure_ = "cannot write " + path_ + ": " + std::strerror(err);
+    *error = failure_;
     std::remove(tmp_.c_str());
     return false;
   }

@@ -88,25 +88,30 @@ class RecordingWriter {
 
   /// Writes the scene and the frame of the world's current tick (usually 0).
   bool Open(const std::string& path, const World& world, uint32_t every, std::string* error);
-  /// Writes a frame when the world's tick is a multiple of `every`.
+  /// Writes a frame when the world's tick is a multiple of `every`. A failed write (a full
+  /// disk) ends the recording at once: the temporary file is removed to free the space
+  /// for the run's other outputs, and Failure() says why.
   void Record(const World& world);
   /// Writes the last tick's frame if it was not recorded, flushes and renames the file.
+  /// False with the reason when any write failed, now or during the run.
   bool Finish(const World& world, std::string* error);
   bool IsOpen() const { return file_ != nullptr; }
+  /// Why the recording stopped ("" while it goes on).
+  const std::string& Failure() const { return failure_; }
   uint64_t FramesWritten() const { return frames_; }
   uint64_t BytesWritten() const { return bytes_; }
 
  private:
   void WriteFrame(const World& world);
   void Close();
-  std::string path_, tmp_;
+  void Fail(int err);
+  std::string path_, tmp_, failure_;
   FILE* file_ = nullptr;
   std::vector<char> io_buffer_;
   std::vector<uint8_t> frame_;
   RecordingScene scene_;
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0, bytes_ = 0;
-  bool write_failed_ = false;
 };
 
 /// A recording read back whole into memory; frames are decoded on demand.

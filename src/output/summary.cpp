@@ -1,5 +1,7 @@
 #include "output/summary.h"
 
+#include <cmath>
+
 #include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
@@ -22,7 +24,9 @@ Json BuildSummary(const World& w, const RunInfo& info) {
   for (const RobotState& r : w.robots) alive += r.alive;
   s["robots_alive"] = alive;
   s["threads"] = w.threads;
-  s["status"] = info.status;
+  std::string status = info.status;
+  if (!info.output_errors.empty() && (status == "ok" || status == "controller_error")) status = "failed";
+  s["status"] = status;
   s["finished_by"] = info.finished_by;
   double steps = static_cast<double>(w.tick) * static_cast<double>(w.robots.size());
   s["wall_seconds"] = info.wall_seconds;
@@ -41,35 +45,57 @@ Json BuildSummary(const World& w, const RunInfo& info) {
   for (const ControllerError& e : w.controller_errors)
     s["controller_errors"].push_back(
         Json::object({{"robot", e.robot}, {"tick", static_cast<uint64_t>(e.tick)}, {"message", e.message}}));
-  if (!w.failure.empty()) s["failure"] = w.failure;
+  std::string failure = w.failure;
+  for (const std::string& e : info.output_errors) failure += (failure.empty() ? "" : "; ") + e;
+  if (!failure.empty()) s["failure"] = failure;
   s["outputs"] = info.outputs;
   return s;
 }
 
+namespace {
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string CsvNumber(double v) {
+  if (std::isnan(v)) return "NaN";
+  if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
+  return FormatDouble(v);
+}
+}  // namespace
+
 std::string TimeseriesCsv(const Timeseries& series) {
   std::string out;
-  for (size_t i = 0; i < series.columns.size(); ++i) out += (i ? "," : "") + series.columns[i];
+  for (size_t i = 0; i < series.columns.size(); ++i) out += (i ? "," : "") + CsvField(series.columns[i]);
   out += "\n";
   for (const auto& row : series.rows) {
-    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + FormatDouble(row[i]);
+    for (size_t i = 0; i < row.size(); ++i) out += (i ? "," : "") + CsvNumber(row[i]);
     out += "\n";
   }
   return out;
 }
 
 bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Json* metrics, std::string* error) {
+  std::vector<std::string> failed;  // this function's own failures, for `error`
+  auto write = [&](const char* name, const std::string& content) {
+    std::string err;
+    if (WriteFileAtomic(JoinPath(dir, name), content, &err)) info.outputs.push_back(name);
+    else failed.push_back(err);
+  };
   if (!MakeDirs(dir, error)) return false;
-  if (metrics) {
-    if (!WriteFileAtomic(JoinPath(dir, "metrics.json"), DumpJson(*metrics), error)) return false;
-    info.outputs.push_back("metrics.json");
-  }
+  if (metrics) write("metrics.json", DumpJson(*metrics));
   const Timeseries& ts = w.loop_functions.Series();
-  if (!ts.columns.empty()) {
-    if (!WriteFileAtomic(JoinPath(dir, "timeseries.csv"), TimeseriesCsv(ts), error)) return false;
-    info.outputs.push_back("timeseries.csv");
-  }
+  if (!ts.columns.empty()) write("timeseries.csv", TimeseriesCsv(ts));
+  info.output_errors.insert(info.output_errors.end(), failed.begin(), failed.end());
   info.outputs.insert(info.outputs.begin(), "summary.json");
-  return WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(BuildSummary(w, info)), error);
+  std::string err;
+  if (!WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(BuildSummary(w, info)), &err)) failed.push_back(err);
+  error->clear();
+  for (const std::string& e : failed) *error += (error->empty() ? "" : "; ") + e;
+  return failed.empty();
 }
 
 }  // namespace essaim

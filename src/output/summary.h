@@ -15,12 +15,20 @@ struct RunInfo {
   std::string status = "ok";        // ok | controller_error | failed | interrupted
   std::string finished_by = "length";
   std::vector<std::string> outputs; // file names written
+  /// Outputs that could not be written (a full disk): they make the status "failed" and
+  /// go into summary.json's "failure".
+  std::vector<std::string> output_errors;
 };
 
 Json BuildSummary(const World& world, const RunInfo& info);
+/// RFC 4180: a column name holding a comma, a quote or a line break is quoted, quotes
+/// doubled. Values are shortest round-trip; NaN and infinities are NaN, Inf and -Inf
+/// (what pandas, numpy and R read back).
 std::string TimeseriesCsv(const Timeseries& series);
 /// Writes metrics.json and timeseries.csv (when there is something to write), then
-/// summary.json last, so a folder with summary.json holds a finished run.
+/// summary.json last, so a folder with summary.json holds a finished run. One that cannot
+/// be written does not stop the others: summary.json is still attempted, with status
+/// "failed" and the reasons. False when anything failed, `error` listing what ("; ").
 bool WriteRunOutputs(const std::string& dir, const World& world, RunInfo info, const Json* metrics,
                      std::string* error);
 

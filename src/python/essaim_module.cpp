@@ -12,6 +12,8 @@
 #include <string>
 
 #include "output/atomic_file.h"
+#include "core/paths.h"
+#include "output/out_folder.h"
 #include "model/xml_loader.h"
 #include "output/run_end.h"
 #include "output/summary.h"
@@ -59,7 +61,7 @@ class Simulation {
     }
     out_ = out.value_or("");
     std::string error;
-    if (!out_.empty() && !MakeDirs(out_, &error)) throw Error(error);
+    if (!out_.empty() && !PrepareOutFolder(out_, &error)) throw Error(error);
     SimOptions opt;
     opt.output_dir = out_;
     opt.lua.memory_limit = 64u << 20;  // the CLI's limits
@@ -70,6 +72,16 @@ class Simulation {
       world_ = World::Create(*model_, opt, &error);
     }
     if (!world_) throw Error(error);
+    if (!world_->failure.empty()) throw Error(world_->failure);  // an init() error
+    // As `essaim run`: the folder holds this run's outputs only; an earlier run's are moved.
+    std::vector<std::string> moved;
+    if (!out_.empty() && !SetAsideEarlierOutputs(out_, &moved, &error)) throw Error(error);
+    if (!moved.empty()) {
+      std::string names;
+      for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
+      py::module_::import("warnings").attr("warn")(out_ + " held an earlier run's outputs; moved them into " +
+                                                   JoinPath(out_, kPreviousRunFolder) + ": " + names);
+    }
     if (LengthReached(*world_)) status_ = StepStatus::Finished;
   }
 

@@ -78,8 +78,8 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
       w->robots[i].controller_ok = false;
       w->controller_errors.push_back({model.robots[i].id, 0, err});
       if (options.strict) {
-        *error = err;
-        return nullptr;
+        w->failure = err;
+        break;
       }
     }
   }
@@ -87,9 +87,11 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)
     for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text, {0, kLogHost});
-  bool loop_ok = w->loop_functions.Call("init", error);
+  // A runtime error in init() is the run failing, not bad input: the World is returned
+  // with `failure` set, so the caller can still write a summary (exit 1, docs/cli.md).
+  std::string err;
+  if (w->failure.empty() && !w->loop_functions.Call("init", &err)) w->failure = err;
   FlushLog(*w, w->loop_functions.LogBuffer(), kLogLoopFunctions);
-  if (!loop_ok) return nullptr;
   return w;
 }
 

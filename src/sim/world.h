@@ -53,7 +53,9 @@ class ThreadPool;
 class World {
  public:
   /// Builds physics, robot states, Lua controllers (running their init()) and loop
-  /// functions. Returns nullptr with `error` when a script fails to load.
+  /// functions (running theirs). Returns nullptr with `error` when a script fails to load
+  /// (bad input). A runtime error in the loop functions' init(), or in a controller's under
+  /// `strict`, returns the World with `failure` set: it must not be stepped.
   static std::unique_ptr<World> Create(const Model& model, const SimOptions& options, std::string* error);
   ~World();
 

@@ -128,3 +128,22 @@ def test_unknown_attributes_warn_and_strict_refuses(tmp_path):
         essaim.Simulation(str(typo), overrides=SMALL).close()
     with pytest.raises(essaim.Error, match="unknown attribute 'sise'"):
         essaim.Simulation(str(typo), overrides=SMALL, strict=True)
+
+
+def test_out_is_checked_and_an_earlier_runs_outputs_are_moved_aside(tmp_path):
+    over = dict(SMALL, **{"framework.experiment.length": 1})
+    (tmp_path / "a-file").write_text("x")
+    with pytest.raises(essaim.Error, match="is a file, not a folder"):
+        essaim.Simulation(FORAGING, seed=1, overrides=over, out=str(tmp_path / "a-file"))
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "recording.bin").write_bytes(b"old")
+    (out / "mine.txt").write_text("kept")
+    with pytest.warns(UserWarning, match="moved them into .*previous: recording.bin"):
+        sim = essaim.Simulation(FORAGING, seed=1, overrides=over, out=str(out))
+    with sim:
+        sim.run()
+        sim.finish()
+    assert (out / "previous" / "recording.bin").read_bytes() == b"old"
+    assert not (out / "recording.bin").exists() and (out / "mine.txt").exists()
+    assert (out / "summary.json").is_file()
