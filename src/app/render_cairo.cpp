@@ -145,8 +145,11 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   cairo_translate(cr, -s.arena_min.x(), -s.arena_min.y());
 
   size_t moving = 0;
-  for (const RecordedObstacle& o : s.obstacles)
-    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, moving++) : o.pose, px);
+  for (const RecordedObstacle& o : s.obstacles) {
+    const size_t k = o.movable ? moving++ : 0;
+    if (o.movable && !rec.MovablePresent(frame, k)) continue;  // removed by the loop functions
+    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, k) : o.pose, px);
+  }
   for (const RecordedLight& l : s.lights) {
     cairo_new_path(cr);
     cairo_arc(cr, l.position.x(), l.position.y(), std::max(0.05, 4 * px), 0, kTwoPi);

@@ -107,6 +107,7 @@ class Loader {
   std::set<std::string> ids_;
   std::vector<Footprint> placed_;
   Rng sim_rng_;
+  bool legacy_led_warned_ = false;  // one warning per file for <led position=...>
 };
 
 // Upper bounds on .argos numbers that size threads, loops or casts (docs/compatibility.md).
@@ -445,6 +446,13 @@ void Loader::LoadLoopFunctions(const XMLElement* e) {
   LoopFunctionsDef& lf = model_->loop_functions;
   lf.loc = Loc(e);
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
+  // ARGoS hands the whole element to Init(TConfigurationNode&); scripts read its children
+  // as experiment.params.<child>.<attribute>.
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (lf.children.count(c->Name())) continue;
+    AttrMap& attrs = lf.children[c->Name()];
+    for (auto* a = c->FirstAttribute(); a; a = a->Next()) attrs[a->Name()] = a->Value();
+  }
   std::string script = Str(e, "script");
   if (script.empty()) {
     Error(e, "missing attribute 'script' (a Lua file, docs/loop-functions.md)");
@@ -551,7 +559,16 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o) {
         continue;
       }
       LedDef led;
-      led.offset = Vector3(l, "offset", Vec3::Zero(), true);
+      if (Has(l, "position") && !Has(l, "offset")) {
+        // ARGoS 3 before offset/anchor: position is the offset from the body's origin.
+        led.offset = Vector3(l, "position", Vec3::Zero(), true);
+        if (!legacy_led_warned_)
+          Warn(l, "legacy <led position=...>: read as offset from the body origin, anchor \"origin\" "
+                  "(current ARGoS: offset=\"x,y,z\" anchor=\"origin\")");
+        legacy_led_warned_ = true;
+      } else {
+        led.offset = Vector3(l, "offset", Vec3::Zero(), true);
+      }
       auto c = ParseColor(Str(l, "color", "black"));
       if (!c) Error(l, "bad colour '" + Str(l, "color") + "'");
       else led.color = *c;

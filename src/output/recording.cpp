@@ -299,6 +299,8 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   path_ = path;
   tmp_ = path + ".tmp." + std::to_string(::getpid());
   scene_ = SceneOf(world, every);
+  movable_refs_.clear();
+  for (int k : scene_.movable) movable_refs_.push_back(world.entities.ObstacleRef(k));
   uint32_t frame_bytes = kFrameTickBytes + kRecordedRobotBytes * static_cast<uint32_t>(scene_.robot_ids.size()) +
                          kRecordedMovableBytes * static_cast<uint32_t>(scene_.movable.size());
   frame_.assign(frame_bytes, 0);
@@ -341,7 +343,15 @@ void RecordingWriter::WriteFrame(const World& w) {
     p[8] = static_cast<uint8_t>(std::lround(std::clamp(frac, 0.0, 1.0) * 255));
     p[9] = static_cast<uint8_t>((r.alive ? kRecAlive : 0) | (r.controller_ok ? kRecControllerOk : 0));
   }
-  for (int k : scene_.movable) {
+  for (const EntityRef& ref : movable_refs_) {
+    const int k = w.entities.IndexOf(ref);
+    if (k < 0) {  // removed by the loop functions
+      Put16(p + 0, static_cast<uint16_t>(kRecGone));
+      Put16(p + 2, 0);
+      Put16(p + 4, 0);
+      p += kRecordedMovableBytes;
+      continue;
+    }
     Pose2 pose = w.physics.ObstaclePose(k);
     Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
     Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
@@ -550,6 +560,12 @@ Pose2 Recording::Movable(size_t frame, size_t k) const {
   pose.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
   pose.yaw = YawOf(Get16(p + 4));
   return pose;
+}
+
+bool Recording::MovablePresent(size_t frame, size_t k) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + RobotCount() * kRecordedRobotBytes + k * kRecordedMovableBytes;
+  return static_cast<int16_t>(Get16(p)) != kRecGone;
 }
 
 size_t Recording::FrameAtOrBefore(uint64_t tick) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "devices/entity_store.h"
 
 namespace essaim {
 
@@ -26,6 +27,9 @@ constexpr uint32_t kFrameTickBytes = 4;         // u32 tick
 /// Flags of a recorded robot.
 constexpr uint8_t kRecAlive = 1;         // not killed by the loop functions / battery
 constexpr uint8_t kRecControllerOk = 2;  // no controller error so far
+
+/// Quantised x of a movable obstacle removed during the run (never a quantised position).
+constexpr int16_t kRecGone = INT16_MIN;
 
 /// The floor raster is downsampled to at most this many pixels per side.
 constexpr int kRecordingFloorMaxSide = 512;
@@ -104,6 +108,7 @@ class RecordingWriter {
   std::vector<char> io_buffer_;
   std::vector<uint8_t> frame_;
   RecordingScene scene_;
+  std::vector<EntityRef> movable_refs_;  // the recorded movable obstacles, found by ref as indices shift
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0, bytes_ = 0;
   bool write_failed_ = false;
@@ -124,6 +129,8 @@ class Recording {
   uint64_t Tick(size_t frame) const;
   RecordedRobot Robot(size_t frame, size_t robot) const;
   Pose2 Movable(size_t frame, size_t k) const;  // pose of obstacles[scene.movable[k]]
+  /// False once the loop functions removed that movable obstacle (x written as kRecGone).
+  bool MovablePresent(size_t frame, size_t k) const;
   /// The last frame whose tick is <= `tick` (0 if none is).
   size_t FrameAtOrBefore(uint64_t tick) const;
 
