@@ -58,7 +58,7 @@ void DrawFloor(cairo_t* cr, const RecordingScene& s, int width, int height) {
   cairo_surface_destroy(floor);
 }
 
-void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, double px) {
+void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, Color led, double px) {
   cairo_save(cr);
   cairo_translate(cr, pose.x, pose.y);
   cairo_rotate(cr, pose.yaw);
@@ -69,6 +69,12 @@ void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, dou
   SetRgb(cr, kOutline, 0.6);
   cairo_set_line_width(cr, px);
   cairo_stroke(cr);
+  if (!led.IsBlack()) {  // its LED colour as an inner disc (loop functions recolour them)
+    const double r = 0.6 * (o.cylinder ? o.radius : std::min(o.size_x, o.size_y) / 2);
+    cairo_arc(cr, 0, 0, std::max(r, 2 * px), 0, kTwoPi);
+    SetColor(cr, led);
+    cairo_fill(cr);
+  }
   cairo_restore(cr);
 }
 
@@ -148,7 +154,7 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   for (const RecordedObstacle& o : s.obstacles) {
     const size_t k = o.movable ? moving++ : 0;
     if (o.movable && !rec.MovablePresent(frame, k)) continue;  // removed by the loop functions
-    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, k) : o.pose, px);
+    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, k) : o.pose, o.movable ? rec.MovableLed(frame, k) : o.led, px);
   }
   for (const RecordedLight& l : s.lights) {
     cairo_new_path(cr);

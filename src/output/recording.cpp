@@ -138,6 +138,12 @@ Color RepresentativeColor(const Color* leds, int n) {
   return Color{0, 0, 0, 255};
 }
 
+Color ObstacleLed(const ObstacleDef& o) {
+  for (const LedDef& l : o.leds)
+    if (!l.color.IsBlack()) return l.color;
+  return Color{0, 0, 0, 255};
+}
+
 // ---- floor ------------------------------------------------------------------------
 
 /// The raster downsampled (nearest pixel) to at most kRecordingFloorMaxSide per side, as a
@@ -210,6 +216,7 @@ std::string SerializeScene(const RecordingScene& s, uint32_t frame_bytes) {
     b.F32(o.size_y);
     b.F32(o.radius);
     b.F32(o.height);
+    b.U16(PackRgb565(o.led));
     b.Str(o.id);
   }
   for (int k : s.movable) b.U32(static_cast<uint32_t>(k));
@@ -273,6 +280,7 @@ RecordingScene SceneOf(const World& w, uint32_t every) {
     ro.size_y = o.size_y;
     ro.radius = o.radius;
     ro.height = o.height;
+    ro.led = ObstacleLed(o);
     s.obstacles.push_back(ro);
     if (o.movable) s.movable.push_back(static_cast<int>(i));
   }
@@ -349,6 +357,7 @@ void RecordingWriter::WriteFrame(const World& w) {
       Put16(p + 0, static_cast<uint16_t>(kRecGone));
       Put16(p + 2, 0);
       Put16(p + 4, 0);
+      Put16(p + 6, 0);
       p += kRecordedMovableBytes;
       continue;
     }
@@ -356,6 +365,7 @@ void RecordingWriter::WriteFrame(const World& w) {
     Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
     Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
     Put16(p + 4, QuantiseYaw(pose.yaw));
+    Put16(p + 6, PackRgb565(ObstacleLed(w.model.obstacles[k])));  // loop functions may recolour it
     p += kRecordedMovableBytes;
   }
   if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) write_failed_ = true;
@@ -490,6 +500,7 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
     o.size_y = in.F32();
     o.radius = in.F32();
     o.height = in.F32();
+    o.led = UnpackRgb565(in.U16());
     o.id = in.Str();
     s.obstacles.push_back(o);
   }
@@ -560,6 +571,12 @@ Pose2 Recording::Movable(size_t frame, size_t k) const {
   pose.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
   pose.yaw = YawOf(Get16(p + 4));
   return pose;
+}
+
+Color Recording::MovableLed(size_t frame, size_t k) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + RobotCount() * kRecordedRobotBytes + k * kRecordedMovableBytes;
+  return UnpackRgb565(Get16(p + 6));
 }
 
 bool Recording::MovablePresent(size_t frame, size_t k) const {

@@ -17,11 +17,11 @@ class World;
 
 /// File name of a run's recording inside its output folder.
 constexpr const char* kRecordingFile = "recording.bin";
-constexpr uint32_t kRecordingVersion = 1;
+constexpr uint32_t kRecordingVersion = 2;  // 2: LED colour of obstacles
 
 /// Bytes of one recorded robot and one movable obstacle in a frame.
 constexpr uint32_t kRecordedRobotBytes = 10;    // i16 x, i16 y, u16 yaw, u16 rgb565, u8 battery, u8 flags
-constexpr uint32_t kRecordedMovableBytes = 6;   // i16 x, i16 y, u16 yaw
+constexpr uint32_t kRecordedMovableBytes = 8;   // i16 x, i16 y, u16 yaw, u16 rgb565
 constexpr uint32_t kFrameTickBytes = 4;         // u32 tick
 
 /// Flags of a recorded robot.
@@ -42,6 +42,7 @@ struct RecordedObstacle {
   double size_x = 0, size_y = 0;  // box (m)
   double radius = 0;              // cylinder (m)
   double height = 0;              // m
+  Color led;                      // its first lit LED at the start (RGB565 precision); black: none
 };
 
 struct RecordedLight {
@@ -129,6 +130,8 @@ class Recording {
   uint64_t Tick(size_t frame) const;
   RecordedRobot Robot(size_t frame, size_t robot) const;
   Pose2 Movable(size_t frame, size_t k) const;  // pose of obstacles[scene.movable[k]]
+  /// First lit LED of that movable obstacle in this frame (black: none).
+  Color MovableLed(size_t frame, size_t k) const;
   /// False once the loop functions removed that movable obstacle (x written as kRecGone).
   bool MovablePresent(size_t frame, size_t k) const;
   /// The last frame whose tick is <= `tick` (0 if none is).

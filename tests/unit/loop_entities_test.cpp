@@ -170,11 +170,15 @@ TEST(LoopEntities, AddedObstaclesArePhysicalAndRecorded) {
   d.Write("loop.lua", R"(
 function init()
   box = experiment.add_entity("box", {id = "crate", position = {0.5, 0}, size = {0.1, 0.6, 0.2},
-                                      movable = true, mass = 5})
+                                      movable = true, mass = 5, medium = "leds",
+                                      leds = {{offset = {0, 0, 0.2}, color = {255, 0, 0}}}})
   gone = experiment.add_entity("cylinder", {id = "gone", position = {-2, -2}, radius = 0.1, height = 0.1,
                                             movable = true, mass = 1})
 end
-function post_step() if experiment.tick == 5 then experiment.remove_entity(gone) end end
+function post_step()
+  if experiment.tick == 5 then experiment.remove_entity(gone) end
+  if experiment.tick == 10 then box:set_led_color("blue") end
+end
 )");
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"),
                                    WheelsController("c", "c.lua")));
@@ -198,6 +202,10 @@ function post_step() if experiment.tick == 5 then experiment.remove_entity(gone)
   EXPECT_TRUE(r.MovablePresent(4, 1));
   EXPECT_FALSE(r.MovablePresent(5, 1));
   EXPECT_TRUE(r.MovablePresent(5, 0));
+  EXPECT_EQ(r.scene().obstacles[0].led.r, 255);  // as added
+  EXPECT_EQ(r.MovableLed(9, 0).r, 255);
+  EXPECT_EQ(r.MovableLed(10, 0).b, 255);          // recoloured in post_step of tick 10
+  EXPECT_EQ(r.MovableLed(10, 0).r, 0);
 }
 
 TEST(LoopEntities, LuaGlobalCopiesNestedTablesAndCyclesAndSetLuaGlobalWrites) {
