@@ -208,6 +208,36 @@ end
   EXPECT_EQ(r.MovableLed(10, 0).r, 0);
 }
 
+TEST(LoopEntities, RemovingAHeldCylinderReleasesTheGripAndShiftsNoOtherHold) {
+  TempDir d;
+  d.Write("c.lua", "function init() robot.gripper.lock_positive() robot.wheels.set_velocity(5, 5) end\n"
+                   "function step() end");
+  d.Write("loop.lua", R"(
+function post_step()
+  if experiment.tick == 40 then experiment.remove_entity(experiment.entities("cylinder")[1]) end
+end
+)");
+  const std::string ctrl =
+      "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
+      "<footbot_gripper implementation=\"default\"/></actuators><sensors/><params script=\"c.lua\"/></lua_controller>";
+  // Robot 0 grips cylinder "a" (index 0), robot 1 grips "b" (index 1, then 0 once "a" is gone).
+  Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0, 1, 0, "c") +
+                                       Cylinder("a", 0.3, 0, true) + Cylinder("b", 0.3, 1, true),
+                                   ctrl));
+  ASSERT_TRUE(s.ok()) << s.error;
+  RunTicks(*s.world, 39);
+  ASSERT_TRUE(s.world->physics.Gripped(0).Holding());
+  ASSERT_EQ(s.world->physics.Gripped(1).index, 1);
+  Step(*s.world);  // post_step of tick 40 removes "a"
+  EXPECT_EQ(s.world->physics.ObstacleCount(), 1);
+  EXPECT_FALSE(s.world->physics.Gripped(0).Holding());
+  EXPECT_EQ(s.world->physics.Gripped(1).index, 0);
+  for (int i = 0; i < 20; ++i) ASSERT_EQ(Step(*s.world), StepStatus::Running) << s.world->failure;
+  EXPECT_TRUE(s.world->physics.Gripped(1).Holding());
+  EXPECT_NEAR(s.world->physics.ObstaclePose(0).y, 1, 0.01);  // "b", still carried by fb1
+  EXPECT_GT(s.world->physics.ObstaclePose(0).x, 0.3);
+}
+
 TEST(LoopEntities, LuaGlobalCopiesNestedTablesAndCyclesAndSetLuaGlobalWrites) {
   TempDir d;
   d.Write("c.lua", R"(
