@@ -105,6 +105,10 @@ TEST(LoopEntities, TheCameraSeesARecolouredLedFromTheNextSense) {
   TempDir d;
   d.Write("c.lua", kStill);
   d.Write("loop.lua", R"(
+function init()  -- an added cylinder's LED is seen too
+  experiment.add_entity("cylinder", {position = {0, 0.5}, radius = 0.05, height = 0.2, medium = "leds",
+                                     leds = {{offset = {0, 0, 0.2}, anchor = "origin", color = "green"}}})
+end
 function pre_step()
   local c = experiment.entities("cylinder")[1]
   if experiment.tick == 2 then c:set_led_color("blue") end
@@ -126,11 +130,11 @@ end
     return out;
   };
   Step(*s.world);
-  EXPECT_EQ(colours(), "255,0,0;255,0,0;");
+  EXPECT_EQ(colours(), "255,0,0;255,0,0;0,255,0;");
   Step(*s.world);  // recoloured in this tick's pre_step: seen by this tick's sense
-  EXPECT_EQ(colours(), "0,0,255;0,0,255;");
+  EXPECT_EQ(colours(), "0,0,255;0,0,255;0,255,0;");
   Step(*s.world);
-  EXPECT_EQ(colours(), "0,0,255;0,255,0;");
+  EXPECT_EQ(colours(), "0,0,255;0,255,0;0,255,0;");
   EXPECT_EQ(Step(*s.world), StepStatus::Running) << s.world->failure;
 }
 
