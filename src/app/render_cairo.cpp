@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace essaim {
 
@@ -150,11 +151,17 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   cairo_scale(cr, scale, -static_cast<double>(height) / s.arena_size.y());
   cairo_translate(cr, -s.arena_min.x(), -s.arena_min.y());
 
-  size_t moving = 0;
-  for (const RecordedObstacle& o : s.obstacles) {
-    const size_t k = o.movable ? moving++ : 0;
-    if (o.movable && !rec.MovablePresent(frame, k)) continue;  // removed by the loop functions
-    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, k) : o.pose, o.movable ? rec.MovableLed(frame, k) : o.led, px);
+  // Obstacles with a slot in the frames (movable ones, and any added during the run) are
+  // drawn from the frame; the others where the scene has them.
+  std::vector<int> slot(s.obstacles.size(), -1);
+  for (size_t k = 0; k < s.movable.size(); ++k) slot[s.movable[k]] = static_cast<int>(k);
+  for (size_t i = 0; i < s.obstacles.size(); ++i) {
+    const RecordedObstacle& o = s.obstacles[i];
+    if (slot[i] < 0) {
+      DrawObstacle(cr, o, o.pose, o.led, px);
+    } else if (rec.MovablePresent(frame, slot[i])) {  // else removed, or not added yet
+      DrawObstacle(cr, o, rec.Movable(frame, slot[i]), rec.MovableLed(frame, slot[i]), px);
+    }
   }
   for (const RecordedLight& l : s.lights) {
     cairo_new_path(cr);

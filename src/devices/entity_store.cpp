@@ -23,6 +23,7 @@ void EntityStore::Init(Model* scene, PhysicsWorld* physics) {
   scene_ = scene;
   physics_ = physics;
   order_.clear();
+  added_.clear();
   obstacle_serial_.clear(), light_serial_.clear(), obstacle_index_.clear(), light_index_.clear();
   for (size_t i = 0; i < scene->robots.size(); ++i) order_.push_back({EntityKind::FootBot, static_cast<uint32_t>(i)});
   for (size_t i = 0; i < scene->obstacles.size(); ++i) {
@@ -64,6 +65,7 @@ EntityRef EntityStore::AddObstacle(const ObstacleDef& def) {
   obstacle_index_.push_back(index);
   EntityRef e{ObstacleKind(def), serial};
   order_.push_back(e);
+  added_.push_back(e);
   MarkChanged(true);
   return e;
 }
@@ -75,6 +77,7 @@ EntityRef EntityStore::AddLight(const LightDef& def) {
   scene_->lights.push_back(def);
   EntityRef e{EntityKind::Light, serial};
   order_.push_back(e);
+  added_.push_back(e);
   MarkChanged(true);
   return e;
 }

@@ -30,6 +30,9 @@ class EntityStore {
 
   /// Every live entity, creation order (the model's robots, obstacles, lights, then added ones).
   const std::vector<EntityRef>& All() const { return order_; }
+  /// Every entity added after Init, in order, removed ones included (append-only: a
+  /// recorder follows it by count).
+  const std::vector<EntityRef>& Added() const { return added_; }
   /// Current index in scene->robots / obstacles / lights; -1 once removed.
   int IndexOf(const EntityRef& e) const;
   /// The ref of the obstacle at `index` now.
@@ -58,6 +61,7 @@ class EntityStore {
   Model* scene_ = nullptr;
   PhysicsWorld* physics_ = nullptr;
   std::vector<EntityRef> order_;
+  std::vector<EntityRef> added_;
   std::vector<uint32_t> obstacle_serial_, light_serial_;  // by current index
   std::vector<int> obstacle_index_, light_index_;         // by serial; -1 removed
   bool changed_ = false, layout_changed_ = false;

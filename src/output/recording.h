@@ -83,7 +83,8 @@ struct RecordedRobot {
 
 /// Streams a run into `path` (via path.tmp.PID). Record() after every Step; Finish() at
 /// the end. The frame buffer and the stdio buffer are allocated by Open(): Record() does
-/// not allocate.
+/// not allocate, unless loop functions added boxes or cylinders during the run (their slots
+/// are kept aside, and Finish() rewrites the file with them).
 class RecordingWriter {
  public:
   RecordingWriter() = default;
@@ -103,6 +104,9 @@ class RecordingWriter {
 
  private:
   void WriteFrame(const World& world);
+  /// Slots of obstacles added after Open (and lights added then), for RewriteWithLate.
+  void RecordLate(const World& world, const Vec2& center, double unit);
+  bool RewriteWithLate(std::string* error);
   void Close();
   std::string path_, tmp_;
   FILE* file_ = nullptr;
@@ -110,6 +114,14 @@ class RecordingWriter {
   std::vector<uint8_t> frame_;
   RecordingScene scene_;
   std::vector<EntityRef> movable_refs_;  // the recorded movable obstacles, found by ref as indices shift
+  size_t header_bytes_ = 0;
+  size_t added_seen_ = 0;                 // entries of EntityStore::Added() already looked at
+  std::vector<EntityRef> late_refs_;      // obstacles added after Open: extra slots
+  std::vector<RecordedObstacle> late_obstacles_;
+  std::vector<RecordedLight> late_lights_;
+  std::vector<uint8_t> late_bytes_;       // their slots, frame after frame from late_first_frame_
+  std::vector<size_t> late_frame_end_;    // end of each such frame's slots in late_bytes_
+  uint64_t late_first_frame_ = 0;
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0, bytes_ = 0;
   bool write_failed_ = false;

@@ -182,6 +182,10 @@ end
 function post_step()
   if experiment.tick == 5 then experiment.remove_entity(gone) end
   if experiment.tick == 10 then box:set_led_color("blue") end
+  if experiment.tick == 12 then  -- added during the run: a slot of its own in the frames
+    experiment.add_entity("box", {id = "late", position = {-1, -1}, size = {0.2, 0.2, 0.2}})
+    experiment.add_entity("light", {id = "lamp", position = {1, 1, 0.5}, color = "yellow", medium = "leds"})
+  end
 end
 )");
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"),
@@ -201,7 +205,7 @@ end
   EXPECT_LT(s.world->physics.RobotPose(0).x, crate - 0.05 - 0.08);  // behind it, not through it
   Recording r;
   ASSERT_TRUE(Recording::Read(d.path() + "/rec.bin", &r, &err)) << err;
-  ASSERT_EQ(r.scene().obstacles.size(), 2u);
+  ASSERT_EQ(r.scene().obstacles.size(), 3u);  // crate, gone, and late (added at tick 12)
   EXPECT_EQ(r.scene().obstacles[0].id, "crate");
   EXPECT_TRUE(r.MovablePresent(4, 1));
   EXPECT_FALSE(r.MovablePresent(5, 1));
@@ -210,6 +214,16 @@ end
   EXPECT_EQ(r.MovableLed(9, 0).r, 255);
   EXPECT_EQ(r.MovableLed(10, 0).b, 255);          // recoloured in post_step of tick 10
   EXPECT_EQ(r.MovableLed(10, 0).r, 0);
+  ASSERT_EQ(r.scene().movable.size(), 3u);
+  EXPECT_EQ(r.scene().obstacles[2].id, "late");
+  EXPECT_FALSE(r.scene().obstacles[2].movable);
+  EXPECT_FALSE(r.MovablePresent(11, 2));
+  EXPECT_TRUE(r.MovablePresent(12, 2));
+  EXPECT_NEAR(r.Movable(30, 2).x, -1, 1e-3);
+  EXPECT_EQ(r.FrameCount(), 31u);
+  EXPECT_NEAR(r.Movable(30, 0).x, s.world->physics.ObstaclePose(0).x, 1e-3);  // earlier slots intact
+  ASSERT_EQ(r.scene().lights.size(), 1u);
+  EXPECT_EQ(r.scene().lights[0].id, "lamp");
 }
 
 TEST(LoopEntities, RemovingAHeldCylinderReleasesTheGripAndShiftsNoOtherHold) {
