@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 namespace essaim {
 
@@ -58,7 +59,7 @@ void DrawFloor(cairo_t* cr, const RecordingScene& s, int width, int height) {
   cairo_surface_destroy(floor);
 }
 
-void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, double px) {
+void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, Color led, double px) {
   cairo_save(cr);
   cairo_translate(cr, pose.x, pose.y);
   cairo_rotate(cr, pose.yaw);
@@ -69,6 +70,12 @@ void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, dou
   SetRgb(cr, kOutline, 0.6);
   cairo_set_line_width(cr, px);
   cairo_stroke(cr);
+  if (!led.IsBlack()) {  // its LED colour as an inner disc (loop functions recolour them)
+    const double r = 0.6 * (o.cylinder ? o.radius : std::min(o.size_x, o.size_y) / 2);
+    cairo_arc(cr, 0, 0, std::max(r, 2 * px), 0, kTwoPi);
+    SetColor(cr, led);
+    cairo_fill(cr);
+  }
   cairo_restore(cr);
 }
 
@@ -144,9 +151,18 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   cairo_scale(cr, scale, -static_cast<double>(height) / s.arena_size.y());
   cairo_translate(cr, -s.arena_min.x(), -s.arena_min.y());
 
-  size_t moving = 0;
-  for (const RecordedObstacle& o : s.obstacles)
-    DrawObstacle(cr, o, o.movable ? rec.Movable(frame, moving++) : o.pose, px);
+  // Obstacles with a slot in the frames (movable ones, and any added during the run) are
+  // drawn from the frame; the others where the scene has them.
+  std::vector<int> slot(s.obstacles.size(), -1);
+  for (size_t k = 0; k < s.movable.size(); ++k) slot[s.movable[k]] = static_cast<int>(k);
+  for (size_t i = 0; i < s.obstacles.size(); ++i) {
+    const RecordedObstacle& o = s.obstacles[i];
+    if (slot[i] < 0) {
+      DrawObstacle(cr, o, o.pose, o.led, px);
+    } else if (rec.MovablePresent(frame, slot[i])) {  // else removed, or not added yet
+      DrawObstacle(cr, o, rec.Movable(frame, slot[i]), rec.MovableLed(frame, slot[i]), px);
+    }
+  }
   for (const RecordedLight& l : s.lights) {
     cairo_new_path(cr);
     cairo_arc(cr, l.position.x(), l.position.y(), std::max(0.05, 4 * px), 0, kTwoPi);

@@ -11,51 +11,21 @@
 #include "core/strings.h"
 #include "lua/lua_math_types.h"
 #include "lua/lua_random.h"
+#include "lua/loop_handles.h"
 
 namespace essaim {
 
-// Registry keys by address: every handle call reaches its context without interning a
-// name (the foraging rules make a few per robot per tick).
-const char kSelfKey = 0, kHandleMetaKey = 0;
-
 struct LoopFunctionsAccess {
   static LoopFunctions* Self(lua_State* L) {
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &kSelfKey);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
     auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
     lua_pop(L, 1);
     return lf;
   }
   static int RobotIndex(lua_State* L) {
-    void* p = lua_touserdata(L, 1);
-    bool ok = p && lua_getmetatable(L, 1);
-    if (ok) {
-      lua_rawgetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
-      ok = lua_rawequal(L, -1, -2);
-      lua_pop(L, 2);
-    }
-    if (!ok) luaL_typeerror(L, 1, "robot handle");
-    return *static_cast<int*>(p);
-  }
-  static int Position(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    Pose2 p = lf->physics_->RobotPose(RobotIndex(L));
-    lua_pushnumber(L, p.x);
-    lua_pushnumber(L, p.y);
-    return 2;
-  }
-  static int Heading(lua_State* L) {
-    lua_pushnumber(L, WrapSigned(Self(L)->physics_->RobotPose(RobotIndex(L)).yaw));
-    return 1;
-  }
-  static int SetPose(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
-    const double x = luaL_checknumber(L, 2), y = luaL_checknumber(L, 3), yaw = luaL_optnumber(L, 4, 0);
-    // A non-finite pose would poison the physics and every grid that indexes by position.
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw))
-      return luaL_error(L, "set_pose: x, y and yaw must be finite numbers, got %f, %f, %f", x, y, yaw);
-    lf->physics_->SetRobotPose(i, {x, y, yaw});
-    return 0;
+    EntityHandle* h = ToEntityHandle(L, 1);
+    if (!h || h->ref.kind != EntityKind::FootBot) luaL_typeerror(L, 1, "robot handle");
+    return static_cast<int>(h->ref.serial);
   }
   static int Battery(lua_State* L) {
     LoopFunctions* lf = Self(L);
@@ -99,12 +69,85 @@ struct LoopFunctionsAccess {
     lua_pushinteger(L, c.b);
     return 3;
   }
-  static int HandleIndex(lua_State* L) {
+  // r:lua_global / r:set_lua_global: CLuaController::GetLuaState(). The copy crosses
+  // states through the tape; the controller's side runs under its own pcall, so a memory
+  // error there stays there.
+  struct CopyJob {
+    LuaTape* tape;
+    const char* name;
+    const char* bad;
+    bool ok;
+  };
+  static int CollectGlobal(lua_State* C) {
+    auto* job = static_cast<CopyJob*>(lua_touserdata(C, 1));
+    lua_rawgeti(C, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+    lua_pushstring(C, job->name);
+    lua_rawget(C, -2);
+    job->ok = job->tape->Record(C, -1, false, &job->bad);
+    return 0;
+  }
+  static int StoreGlobal(lua_State* C) {
+    auto* job = static_cast<CopyJob*>(lua_touserdata(C, 1));
+    lua_rawgeti(C, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+    lua_pushstring(C, job->name);
+    job->tape->Replay(C);
+    lua_rawset(C, -3);
+    job->ok = true;
+    return 0;
+  }
+  static bool RunInController(lua_State* C, lua_CFunction fn, CopyJob* job) {
+    if (!lua_checkstack(C, 3)) return false;
+    const int top = lua_gettop(C);
+    lua_pushcfunction(C, fn);
+    lua_pushlightuserdata(C, job);
+    const bool ok = lua_pcall(C, 1, 0, 0) == LUA_OK;
+    lua_settop(C, top);
+    return ok && job->ok;
+  }
+  static lua_State* ControllerState(LoopFunctions* lf, int i) {
+    if (!lf->controllers_ || static_cast<size_t>(i) >= lf->controllers_->size()) return nullptr;
+    return (*lf->controllers_)[i]->State();  // null: no script, or closed after its memory limit
+  }
+  static int LuaGlobal(lua_State* L) {
     LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
+    const int i = RobotIndex(L);
+    const char* name = luaL_checkstring(L, 2);
+    lua_State* C = ControllerState(lf, i);
+    if (!C) return lua_pushnil(L), 1;
+    CopyJob job{&lf->tape_, name, nullptr, false};
+    if (!RunInController(C, CollectGlobal, &job))
+      return luaL_error(L, "lua_global: cannot copy '%s' from robot '%s': %s", name, lf->model_->robots[i].id.c_str(),
+                        job.bad ? job.bad : "its Lua state is out of memory");
+    lf->tape_.Replay(L);
+    return 1;
+  }
+  static int SetLuaGlobal(lua_State* L) {
+    LoopFunctions* lf = Self(L);
+    const int i = RobotIndex(L);
+    const char* name = luaL_checkstring(L, 2);
+    luaL_checkany(L, 3);
+    const char* bad = nullptr;
+    if (!lf->tape_.Record(L, 3, true, &bad))
+      return luaL_error(L, "set_lua_global: '%s' must be plain data (numbers, strings, booleans, tables): %s", name,
+                        bad ? bad : "?");
+    lua_State* C = ControllerState(lf, i);
+    if (!C) return luaL_error(L, "set_lua_global: robot '%s' has no running controller", lf->model_->robots[i].id.c_str());
+    CopyJob job{&lf->tape_, name, nullptr, false};
+    if (!RunInController(C, StoreGlobal, &job))
+      return luaL_error(L, "set_lua_global: robot '%s': its Lua state is out of memory", lf->model_->robots[i].id.c_str());
+    return 0;
+  }
+  static int HandleIndex(lua_State* L) {
+    EntityHandle* h = ToEntityHandle(L, 1);
+    if (!h) luaL_typeerror(L, 1, "entity handle");
     const char* k = luaL_checkstring(L, 2);
-    if (!std::strcmp(k, "id")) return lua_pushstring(L, lf->model_->robots[i].id.c_str()), 1;
-    if (!std::strcmp(k, "index")) return lua_pushinteger(L, i + 1), 1;
+    if (!std::strcmp(k, "id")) return lua_getiuservalue(L, 1, 1), 1;  // kept after removal, for messages
+    if (!std::strcmp(k, "kind")) return lua_pushstring(L, EntityKindName(h->ref.kind)), 1;
+    if (!std::strcmp(k, "index")) {
+      if (h->ref.kind == EntityKind::FootBot) lua_pushinteger(L, static_cast<lua_Integer>(h->ref.serial) + 1);
+      else lua_pushnil(L);
+      return 1;
+    }
     lua_getmetatable(L, 1);
     lua_pushvalue(L, 2);
     lua_rawget(L, -2);
@@ -302,10 +345,13 @@ LoopFunctions::~LoopFunctions() {
 }
 
 bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
+                         EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
                          const std::string& output_dir, std::string* error) {
   model_ = &model;
   robots_ = robots;
   physics_ = physics;
+  entities_ = entities;
+  controllers_ = controllers;
   script_ = model.loop_functions.script;
   if (script_.empty()) return true;
   guard_.name = "loop functions";
@@ -317,7 +363,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_State* L = L_;
   OpenGuardedLibraries(L, limits_.sandbox);
   lua_pushlightuserdata(L, this);
-  lua_rawsetp(L, LUA_REGISTRYINDEX, &kSelfKey);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   OpenMathTypes(L);
@@ -338,8 +384,8 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
     lua_pop(L, 1);
   }
   static const luaL_Reg handle_methods[] = {
-      {"position", LoopFunctionsAccess::Position}, {"heading", LoopFunctionsAccess::Heading},
-      {"set_pose", LoopFunctionsAccess::SetPose},  {"battery", LoopFunctionsAccess::Battery},
+      {"battery", LoopFunctionsAccess::Battery},
+      {"lua_global", LoopFunctionsAccess::LuaGlobal}, {"set_lua_global", LoopFunctionsAccess::SetLuaGlobal},
       {"set_battery", LoopFunctionsAccess::SetBattery}, {"alive", LoopFunctionsAccess::Alive},
       {"kill", LoopFunctionsAccess::Kill},         {"led", LoopFunctionsAccess::Led},
       {"controller_ok", LoopFunctionsAccess::ControllerOk}, {nullptr, nullptr}};
@@ -365,6 +411,14 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
     lua_pushstring(L, kv.second.c_str());
     lua_setfield(L, -2, kv.first.c_str());
   }
+  for (const auto& child : model.loop_functions.children) {  // <params reset_all="true"/> → params.params.reset_all
+    lua_newtable(L);
+    for (const auto& kv : child.second) {
+      lua_pushstring(L, kv.second.c_str());
+      lua_setfield(L, -2, kv.first.c_str());
+    }
+    lua_setfield(L, -2, child.first.c_str());
+  }
   lua_setfield(L, -2, "params");
   lua_newtable(L);
   const std::pair<const char*, double> arena[] = {{"size_x", model.arena.size.x()}, {"size_y", model.arena.size.y()},
@@ -374,11 +428,10 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
     lua_setfield(L, -2, k);
   }
   lua_setfield(L, -2, "arena");
+  OpenEntityApi(L, -1);
   lua_createtable(L, static_cast<int>(robots->size()), 0);
   for (size_t i = 0; i < robots->size(); ++i) {
-    *static_cast<int*>(lua_newuserdatauv(L, sizeof(int), 0)) = static_cast<int>(i);
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
-    lua_setmetatable(L, -2);
+    PushEntityHandle(L, {EntityKind::FootBot, static_cast<uint32_t>(i)}, model.robots[i].id.c_str());
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
   }
   lua_setfield(L, -2, "robots");

@@ -1,12 +1,16 @@
 // Lua loop functions (docs/loop-functions.md): experiment logic in a script of its own
 // state, reading and steering every robot through handles.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/json_fwd.h"
+#include "devices/entity_store.h"
 #include "devices/robot_state.h"
+#include "lua/lua_copy.h"
 #include "lua/lua_guard.h"
+#include "lua/lua_state.h"
 #include "model/model.h"
 #include "physics/physics_world.h"
 
@@ -26,9 +30,11 @@ class LoopFunctions {
   LoopFunctions(const LoopFunctions&) = delete;
   LoopFunctions& operator=(const LoopFunctions&) = delete;
 
-  /// Loads the script and runs its top-level chunk. `robots` and `physics` must outlive it.
-  bool Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
-            const std::string& output_dir, std::string* error);
+  /// Loads the script and runs its top-level chunk. Everything passed must outlive it;
+  /// `controllers` may still be empty (filled before init()).
+  bool Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics, EntityStore* entities,
+            std::vector<std::unique_ptr<LuaController>>* controllers, const std::string& output_dir,
+            std::string* error);
   bool Loaded() const { return L_ != nullptr; }
   /// The watchdog's limits and the sandbox, as for controllers; set before Load.
   void SetLimits(const LuaOptions& options) { limits_ = options; }
@@ -62,7 +68,15 @@ class LoopFunctions {
   const Model* model_ = nullptr;
   std::vector<RobotState>* robots_ = nullptr;
   PhysicsWorld* physics_ = nullptr;
+  EntityStore* entities_ = nullptr;
+  std::vector<std::unique_ptr<LuaController>>* controllers_ = nullptr;
+  // Scratch that Lua errors may unwind past without leaking: add_entity's spec, lua_global's
+  // copy (C++ locals with destructors must not live across a Lua error).
+  ObstacleDef obstacle_spec_;
+  LightDef light_spec_;
+  LuaTape tape_;
   friend struct LoopFunctionsAccess;
+  friend struct LoopEntities;
 };
 
 }  // namespace essaim

@@ -143,7 +143,9 @@ struct LedMediumDef {
 
 struct LoopFunctionsDef {
   std::string script;        // resolved path; empty = none
-  AttrMap params;
+  AttrMap params;            // attributes of <loop_functions>
+  /// Its child elements (<params reset_all="true"/>...): name → attributes, first of a name.
+  std::map<std::string, AttrMap> children;
   SourceLoc loc;
 };
 

@@ -118,6 +118,7 @@ class Loader {
   Rng sim_rng_;
   AttributeLedger ledger_;
   std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
+  bool legacy_led_warned_ = false;  // one warning per file for <led position=...>
 };
 
 // Upper bounds on .argos numbers that size threads, loops or casts (docs/compatibility.md).
@@ -468,6 +469,14 @@ void Loader::LoadLoopFunctions(const XMLElement* e) {
   lf.loc = Loc(e);
   ledger_.ReadAll(e);  // free-form: every attribute is a parameter for the script
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
+  // ARGoS hands the whole element to Init(TConfigurationNode&); scripts read its children
+  // as experiment.params.<child>.<attribute>.
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    if (lf.children.count(c->Name())) continue;
+    AttrMap& attrs = lf.children[c->Name()];
+    ledger_.ReadAll(c);  // free-form too: the script reads experiment.params.<child>
+    for (auto* a = c->FirstAttribute(); a; a = a->Next()) attrs[a->Name()] = a->Value();
+  }
   std::string script = Str(e, "script");
   if (script.empty()) {
     Error(e, "missing attribute 'script' (a Lua file, docs/loop-functions.md)");
@@ -576,7 +585,16 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) 
         continue;
       }
       LedDef led;
-      led.offset = Vector3(l, "offset", Vec3::Zero(), true);
+      if (Has(l, "position") && !Has(l, "offset")) {
+        // ARGoS 3 before offset/anchor: position is the offset from the body's origin.
+        led.offset = Vector3(l, "position", Vec3::Zero(), true);
+        if (!legacy_led_warned_)
+          Warn(l, "legacy <led position=...>: read as offset from the body origin, anchor \"origin\" "
+                  "(current ARGoS: offset=\"x,y,z\" anchor=\"origin\")");
+        legacy_led_warned_ = true;
+      } else {
+        led.offset = Vector3(l, "offset", Vec3::Zero(), true);
+      }
       auto c = ParseColor(Str(l, "color", "black"));
       if (!c) Error(l, "bad colour '" + Str(l, "color") + "'");
       else led.color = *c;

@@ -10,6 +10,7 @@
 
 #include "core/paths.h"
 #include "core/strings.h"
+#include "output/atomic_file.h"
 #include "sim/world.h"
 
 namespace essaim {
@@ -138,6 +139,12 @@ Color RepresentativeColor(const Color* leds, int n) {
   return Color{0, 0, 0, 255};
 }
 
+Color ObstacleLed(const ObstacleDef& o) {
+  for (const LedDef& l : o.leds)
+    if (!l.color.IsBlack()) return l.color;
+  return Color{0, 0, 0, 255};
+}
+
 // ---- floor ------------------------------------------------------------------------
 
 /// The raster downsampled (nearest pixel) to at most kRecordingFloorMaxSide per side, as a
@@ -210,6 +217,7 @@ std::string SerializeScene(const RecordingScene& s, uint32_t frame_bytes) {
     b.F32(o.size_y);
     b.F32(o.radius);
     b.F32(o.height);
+    b.U16(PackRgb565(o.led));
     b.Str(o.id);
   }
   for (int k : s.movable) b.U32(static_cast<uint32_t>(k));
@@ -248,6 +256,38 @@ Color UnpackRgb565(uint16_t v) {
   return c;
 }
 
+namespace {
+RecordedObstacle RecordedOf(const ObstacleDef& o) {
+  RecordedObstacle ro;
+  ro.id = o.id;
+  ro.cylinder = o.kind == ShapeKind::Cylinder;
+  ro.movable = o.movable;
+  ro.pose = o.pose;
+  ro.size_x = o.size_x;
+  ro.size_y = o.size_y;
+  ro.radius = o.radius;
+  ro.height = o.height;
+  ro.led = ObstacleLed(o);
+  return ro;
+}
+
+void PutMovable(uint8_t* p, const World& w, const EntityRef& ref, const Vec2& center, double unit) {
+  const int k = w.entities.IndexOf(ref);
+  if (k < 0) {  // removed by the loop functions (or not added yet)
+    Put16(p + 0, static_cast<uint16_t>(kRecGone));
+    Put16(p + 2, 0);
+    Put16(p + 4, 0);
+    Put16(p + 6, 0);
+    return;
+  }
+  Pose2 pose = w.physics.ObstaclePose(k);
+  Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
+  Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
+  Put16(p + 4, QuantiseYaw(pose.yaw));
+  Put16(p + 6, PackRgb565(ObstacleLed(w.model.obstacles[k])));  // loop functions may recolour it
+}
+}  // namespace
+
 RecordingScene SceneOf(const World& w, uint32_t every) {
   const Model& m = w.model;
   RecordingScene s;
@@ -263,18 +303,8 @@ RecordingScene SceneOf(const World& w, uint32_t every) {
   s.robot_radius = footbot::kRadius;
   for (const RobotDef& r : m.robots) s.robot_ids.push_back(r.id);
   for (size_t i = 0; i < m.obstacles.size(); ++i) {
-    const ObstacleDef& o = m.obstacles[i];
-    RecordedObstacle ro;
-    ro.id = o.id;
-    ro.cylinder = o.kind == ShapeKind::Cylinder;
-    ro.movable = o.movable;
-    ro.pose = o.pose;
-    ro.size_x = o.size_x;
-    ro.size_y = o.size_y;
-    ro.radius = o.radius;
-    ro.height = o.height;
-    s.obstacles.push_back(ro);
-    if (o.movable) s.movable.push_back(static_cast<int>(i));
+    s.obstacles.push_back(RecordedOf(m.obstacles[i]));
+    if (m.obstacles[i].movable) s.movable.push_back(static_cast<int>(i));
   }
   for (const LightDef& l : m.lights) s.lights.push_back({l.id, l.position, l.color, l.intensity});
   EncodeFloor(w.floor, &s.floor_png, &s.floor_width, &s.floor_height);
@@ -305,6 +335,10 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   path_ = path;
   tmp_ = path + ".tmp." + std::to_string(::getpid());
   scene_ = SceneOf(world, every);
+  movable_refs_.clear();
+  for (int k : scene_.movable) movable_refs_.push_back(world.entities.ObstacleRef(k));
+  added_seen_ = world.entities.Added().size();  // those added in init() are in the scene
+  late_refs_.clear(), late_obstacles_.clear(), late_lights_.clear(), late_bytes_.clear(), late_frame_end_.clear();
   uint32_t frame_bytes = kFrameTickBytes + kRecordedRobotBytes * static_cast<uint32_t>(scene_.robot_ids.size()) +
                          kRecordedMovableBytes * static_cast<uint32_t>(scene_.movable.size());
   frame_.assign(frame_bytes, 0);
@@ -319,7 +353,7 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   std::string header = SerializeScene(scene_, frame_bytes);
   errno = 0;
   if (std::fwrite(header.data(), 1, header.size(), file_) != header.size()) Fail(errno);
-  bytes_ = header.size();
+  bytes_ = header_bytes_ = header.size();
   if (file_) WriteFrame(world);
   if (!failure_.empty()) {
     *error = failure_;
@@ -352,13 +386,11 @@ void RecordingWriter::WriteFrame(const World& w) {
     p[8] = static_cast<uint8_t>(std::lround(std::clamp(frac, 0.0, 1.0) * 255));
     p[9] = static_cast<uint8_t>((r.alive ? kRecAlive : 0) | (r.controller_ok ? kRecControllerOk : 0));
   }
-  for (int k : scene_.movable) {
-    Pose2 pose = w.physics.ObstaclePose(k);
-    Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
-    Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
-    Put16(p + 4, QuantiseYaw(pose.yaw));
+  for (const EntityRef& ref : movable_refs_) {
+    PutMovable(p, w, ref, center, unit);
     p += kRecordedMovableBytes;
   }
+  RecordLate(w, center, unit);
   errno = 0;
   if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) return Fail(errno);
   bytes_ += frame_.size();
@@ -378,11 +410,82 @@ bool RecordingWriter::Finish(const World& world, std::string* error) {
   if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) err = errno ? errno : EIO;
   if (std::fclose(file_) != 0 && !err) err = errno ? errno : EIO;
   file_ = nullptr;
+  if (!err && (!late_obstacles_.empty() || !late_lights_.empty())) {
+    std::string rewrite_error;
+    if (!RewriteWithLate(&rewrite_error)) {
+      failure_ = rewrite_error;
+      *error = failure_;
+      std::remove(tmp_.c_str());
+      return false;
+    }
+  }
   if (!err && std::rename(tmp_.c_str(), path_.c_str()) != 0) err = errno;
   if (err) {
     failure_ = "cannot write " + path_ + ": " + std::strerror(err);
     *error = failure_;
     std::remove(tmp_.c_str());
+    return false;
+  }
+  return true;
+}
+
+void RecordingWriter::RecordLate(const World& w, const Vec2& center, double unit) {
+  const std::vector<EntityRef>& added = w.entities.Added();
+  for (; added_seen_ < added.size(); ++added_seen_) {
+    const EntityRef& ref = added[added_seen_];
+    const int k = w.entities.IndexOf(ref);
+    if (k < 0) continue;  // added and removed between two frames: never seen
+    if (ref.kind == EntityKind::Light) {
+      const LightDef& l = w.model.lights[k];
+      late_lights_.push_back({l.id, l.position, l.color, l.intensity});
+    } else {
+      if (late_refs_.empty()) late_first_frame_ = frames_;
+      late_refs_.push_back(ref);
+      late_obstacles_.push_back(RecordedOf(w.model.obstacles[k]));
+    }
+  }
+  if (late_refs_.empty()) return;  // the usual case: nothing kept, nothing allocated
+  const size_t at = late_bytes_.size();
+  late_bytes_.resize(at + kRecordedMovableBytes * late_refs_.size());
+  for (size_t j = 0; j < late_refs_.size(); ++j)
+    PutMovable(&late_bytes_[at + kRecordedMovableBytes * j], w, late_refs_[j], center, unit);
+  late_frame_end_.push_back(late_bytes_.size());
+}
+
+bool RecordingWriter::RewriteWithLate(std::string* error) {
+  // Entities added after the first frame widen every frame by their slots: the whole file
+  // is rewritten once, at the end, with them marked gone in the frames before their arrival.
+  std::string old;
+  if (!ReadFile(tmp_, &old) || old.size() < header_bytes_ + frames_ * frame_.size()) {
+    *error = "cannot read back " + tmp_;
+    return false;
+  }
+  RecordingScene s = scene_;
+  for (const RecordedObstacle& o : late_obstacles_) {
+    s.movable.push_back(static_cast<int>(s.obstacles.size()));
+    s.obstacles.push_back(o);
+  }
+  s.lights.insert(s.lights.end(), late_lights_.begin(), late_lights_.end());
+  const size_t late = late_refs_.size(), width = frame_.size();
+  std::string out = SerializeScene(s, static_cast<uint32_t>(width + kRecordedMovableBytes * late));
+  out.reserve(out.size() + frames_ * (width + kRecordedMovableBytes * late));
+  uint8_t gone[kRecordedMovableBytes] = {};
+  Put16(gone, static_cast<uint16_t>(kRecGone));
+  size_t start = 0;
+  for (uint64_t f = 0; f < frames_; ++f) {
+    out.append(old, header_bytes_ + f * width, width);
+    size_t have = 0;
+    if (late_first_frame_ <= f && f - late_first_frame_ < late_frame_end_.size()) {
+      const size_t end = late_frame_end_[f - late_first_frame_];
+      out.append(reinterpret_cast<const char*>(late_bytes_.data()) + start, end - start);
+      have = (end - start) / kRecordedMovableBytes;
+      start = end;
+    }
+    for (size_t j = have; j < late; ++j) out.append(reinterpret_cast<const char*>(gone), kRecordedMovableBytes);
+  }
+  std::string err;
+  if (!WriteFileAtomic(tmp_, out, &err)) {
+    *error = "cannot write " + path_ + ": " + err;
     return false;
   }
   return true;
@@ -495,6 +598,7 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
     o.size_y = in.F32();
     o.radius = in.F32();
     o.height = in.F32();
+    o.led = UnpackRgb565(in.U16());
     o.id = in.Str();
     s.obstacles.push_back(o);
   }
@@ -565,6 +669,18 @@ Pose2 Recording::Movable(size_t frame, size_t k) const {
   pose.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
   pose.yaw = YawOf(Get16(p + 4));
   return pose;
+}
+
+Color Recording::MovableLed(size_t frame, size_t k) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + RobotCount() * kRecordedRobotBytes + k * kRecordedMovableBytes;
+  return UnpackRgb565(Get16(p + 6));
+}
+
+bool Recording::MovablePresent(size_t frame, size_t k) const {
+  const uint8_t* p = reinterpret_cast<const uint8_t*>(bytes_.data()) + header_bytes_ + frame * frame_bytes_ +
+                     kFrameTickBytes + RobotCount() * kRecordedRobotBytes + k * kRecordedMovableBytes;
+  return static_cast<int16_t>(Get16(p)) != kRecGone;
 }
 
 size_t Recording::FrameAtOrBefore(uint64_t tick) const {

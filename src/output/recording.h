@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "devices/entity_store.h"
 
 namespace essaim {
 
@@ -16,16 +17,19 @@ class World;
 
 /// File name of a run's recording inside its output folder.
 constexpr const char* kRecordingFile = "recording.bin";
-constexpr uint32_t kRecordingVersion = 1;
+constexpr uint32_t kRecordingVersion = 2;  // 2: LED colour of obstacles
 
 /// Bytes of one recorded robot and one movable obstacle in a frame.
 constexpr uint32_t kRecordedRobotBytes = 10;    // i16 x, i16 y, u16 yaw, u16 rgb565, u8 battery, u8 flags
-constexpr uint32_t kRecordedMovableBytes = 6;   // i16 x, i16 y, u16 yaw
+constexpr uint32_t kRecordedMovableBytes = 8;   // i16 x, i16 y, u16 yaw, u16 rgb565
 constexpr uint32_t kFrameTickBytes = 4;         // u32 tick
 
 /// Flags of a recorded robot.
 constexpr uint8_t kRecAlive = 1;         // not killed by the loop functions / battery
 constexpr uint8_t kRecControllerOk = 2;  // no controller error so far
+
+/// Quantised x of a movable obstacle removed during the run (never a quantised position).
+constexpr int16_t kRecGone = INT16_MIN;
 
 /// The floor raster is downsampled to at most this many pixels per side.
 constexpr int kRecordingFloorMaxSide = 512;
@@ -38,6 +42,7 @@ struct RecordedObstacle {
   double size_x = 0, size_y = 0;  // box (m)
   double radius = 0;              // cylinder (m)
   double height = 0;              // m
+  Color led;                      // its first lit LED at the start (RGB565 precision); black: none
 };
 
 struct RecordedLight {
@@ -78,7 +83,8 @@ struct RecordedRobot {
 
 /// Streams a run into `path` (via path.tmp.PID). Record() after every Step; Finish() at
 /// the end. The frame buffer and the stdio buffer are allocated by Open(): Record() does
-/// not allocate.
+/// not allocate, unless loop functions added boxes or cylinders during the run (their slots
+/// are kept aside, and Finish() rewrites the file with them).
 class RecordingWriter {
  public:
   RecordingWriter() = default;
@@ -103,6 +109,9 @@ class RecordingWriter {
 
  private:
   void WriteFrame(const World& world);
+  /// Slots of obstacles added after Open (and lights added then), for RewriteWithLate.
+  void RecordLate(const World& world, const Vec2& center, double unit);
+  bool RewriteWithLate(std::string* error);
   void Close();
   void Fail(int err);
   std::string path_, tmp_, failure_;
@@ -110,6 +119,15 @@ class RecordingWriter {
   std::vector<char> io_buffer_;
   std::vector<uint8_t> frame_;
   RecordingScene scene_;
+  std::vector<EntityRef> movable_refs_;  // the recorded movable obstacles, found by ref as indices shift
+  size_t header_bytes_ = 0;
+  size_t added_seen_ = 0;                 // entries of EntityStore::Added() already looked at
+  std::vector<EntityRef> late_refs_;      // obstacles added after Open: extra slots
+  std::vector<RecordedObstacle> late_obstacles_;
+  std::vector<RecordedLight> late_lights_;
+  std::vector<uint8_t> late_bytes_;       // their slots, frame after frame from late_first_frame_
+  std::vector<size_t> late_frame_end_;    // end of each such frame's slots in late_bytes_
+  uint64_t late_first_frame_ = 0;
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0, bytes_ = 0;
 };
@@ -129,6 +147,10 @@ class Recording {
   uint64_t Tick(size_t frame) const;
   RecordedRobot Robot(size_t frame, size_t robot) const;
   Pose2 Movable(size_t frame, size_t k) const;  // pose of obstacles[scene.movable[k]]
+  /// First lit LED of that movable obstacle in this frame (black: none).
+  Color MovableLed(size_t frame, size_t k) const;
+  /// False once the loop functions removed that movable obstacle (x written as kRecGone).
+  bool MovablePresent(size_t frame, size_t k) const;
   /// The last frame whose tick is <= `tick` (0 if none is).
   size_t FrameAtOrBefore(uint64_t tick) const;
 

@@ -40,6 +40,7 @@ struct PhysicsWorld::Impl {
   };
   std::vector<Grip> grips;
   float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
+  PhysicsDef phys;                  // friction of obstacles added later
 };
 
 PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
@@ -50,72 +51,11 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   b2BodyDef gd;
   impl_->ground = w.CreateBody(&gd);
 
+  impl_->phys = model.physics;
   const PhysicsDef& phys = model.physics;
   impl_->grips.resize(model.robots.size());
   impl_->gripping_rigidity = static_cast<float>(phys.gripping_rigidity);
-  for (size_t i = 0; i < model.obstacles.size(); ++i) {
-    const ObstacleDef& o = model.obstacles[i];
-    b2BodyDef bd;
-    bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
-    bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
-    bd.angle = static_cast<float>(o.pose.yaw);
-    b2Body* body = w.CreateBody(&bd);
-    b2FixtureDef fd;
-    b2PolygonShape poly;
-    b2CircleShape circle;
-    double area;
-    if (o.kind == ShapeKind::Box) {
-      poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
-      fd.shape = &poly;
-      area = o.size_x * o.size_y;
-    } else {
-      circle.m_radius = static_cast<float>(o.radius);
-      fd.shape = &circle;
-      area = kPi * o.radius * o.radius;
-    }
-    // ARGoS: static friction 0.1, movable 0.7, no bounce.
-    fd.friction = o.movable ? 0.7f : 0.1f;
-    fd.restitution = 0;
-    fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
-    fd.userData.pointer = PackTag(BodyKind::Obstacle, static_cast<int>(i));
-    if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece) {
-      // A long wall's bounding box overlaps most of the tree and makes every ray cast visit
-      // it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tile it into
-      // pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances.
-      int nx = static_cast<int>(std::ceil(o.size_x / kMaxStaticPiece));
-      int ny = static_cast<int>(std::ceil(o.size_y / kMaxStaticPiece));
-      float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
-      for (int ix = 0; ix < nx; ++ix)
-        for (int iy = 0; iy < ny; ++iy) {
-          b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
-                   static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
-          poly.SetAsBox(hx, hy, c, 0);
-          body->CreateFixture(&fd);
-        }
-    } else {
-      body->CreateFixture(&fd);
-    }
-    if (o.movable) {
-      if (o.kind == ShapeKind::Cylinder) {
-        // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
-        b2MassData md;
-        md.mass = static_cast<float>(o.mass);
-        md.center.SetZero();
-        md.I = static_cast<float>(o.mass * (2 * o.radius) * (2 * o.radius) / 2);
-        body->SetMassData(&md);
-      }
-      // Floor friction: drag towards zero velocity with capped force and torque.
-      b2FrictionJointDef jd;
-      jd.Initialize(impl_->ground, body, body->GetPosition());
-      bool box = o.kind == ShapeKind::Box;
-      jd.maxForce = static_cast<float>(box ? phys.box_linear_friction : phys.cylinder_linear_friction);
-      jd.maxTorque = static_cast<float>(box ? phys.box_angular_friction : phys.cylinder_angular_friction);
-      w.CreateJoint(&jd);
-    }
-    obstacles_.push_back(body);
-    impl_->obstacle_bottom.push_back(o.z);
-    impl_->obstacle_top.push_back(o.z + o.height);
-  }
+  for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) {
     const RobotDef& r = model.robots[i];
@@ -160,6 +100,98 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
     robots_.push_back(body);
     impl_->controls.push_back(control);
   }
+}
+
+int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
+  const PhysicsDef& phys = impl_->phys;
+  const int index = static_cast<int>(obstacles_.size());
+  b2BodyDef bd;
+  bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
+  bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
+  bd.angle = static_cast<float>(o.pose.yaw);
+  b2Body* body = impl_->world.CreateBody(&bd);
+  b2FixtureDef fd;
+  b2PolygonShape poly;
+  b2CircleShape circle;
+  double area;
+  if (o.kind == ShapeKind::Box) {
+    poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
+    fd.shape = &poly;
+    area = o.size_x * o.size_y;
+  } else {
+    circle.m_radius = static_cast<float>(o.radius);
+    fd.shape = &circle;
+    area = kPi * o.radius * o.radius;
+  }
+  // ARGoS: static friction 0.1, movable 0.7, no bounce.
+  fd.friction = o.movable ? 0.7f : 0.1f;
+  fd.restitution = 0;
+  fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
+  fd.userData.pointer = PackTag(BodyKind::Obstacle, index);
+  if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece) {
+    // A long wall's bounding box overlaps most of the tree and makes every ray cast visit
+    // it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tile it into
+    // pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances.
+    int nx = static_cast<int>(std::ceil(o.size_x / kMaxStaticPiece));
+    int ny = static_cast<int>(std::ceil(o.size_y / kMaxStaticPiece));
+    float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+    for (int ix = 0; ix < nx; ++ix)
+      for (int iy = 0; iy < ny; ++iy) {
+        b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
+                 static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
+        poly.SetAsBox(hx, hy, c, 0);
+        body->CreateFixture(&fd);
+      }
+  } else {
+    body->CreateFixture(&fd);
+  }
+  if (o.movable) {
+    if (o.kind == ShapeKind::Cylinder) {
+      // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
+      b2MassData md;
+      md.mass = static_cast<float>(o.mass);
+      md.center.SetZero();
+      md.I = static_cast<float>(o.mass * (2 * o.radius) * (2 * o.radius) / 2);
+      body->SetMassData(&md);
+    }
+    // Floor friction: drag towards zero velocity with capped force and torque.
+    b2FrictionJointDef jd;
+    jd.Initialize(impl_->ground, body, body->GetPosition());
+    bool box = o.kind == ShapeKind::Box;
+    jd.maxForce = static_cast<float>(box ? phys.box_linear_friction : phys.cylinder_linear_friction);
+    jd.maxTorque = static_cast<float>(box ? phys.box_angular_friction : phys.cylinder_angular_friction);
+    impl_->world.CreateJoint(&jd);
+  }
+  obstacles_.push_back(body);
+  impl_->obstacle_bottom.push_back(o.z);
+  impl_->obstacle_top.push_back(o.z + o.height);
+  return index;
+}
+
+void PhysicsWorld::RemoveObstacle(int index) {
+  b2Body* body = AsBody(obstacles_[index]);
+  for (size_t r = 0; r < impl_->grips.size(); ++r) {
+    GripTarget& t = impl_->grips[r].target;
+    if (t.kind != BodyKind::Obstacle) continue;
+    if (t.index == index) Release(static_cast<int>(r));  // before the body takes the joint with it
+    else if (t.index > index) --t.index;
+  }
+  impl_->world.DestroyBody(body);  // its fixtures and friction joint too
+  obstacles_.erase(obstacles_.begin() + index);
+  impl_->obstacle_top.erase(impl_->obstacle_top.begin() + index);
+  impl_->obstacle_bottom.erase(impl_->obstacle_bottom.begin() + index);
+  // Fixture tags carry the index: those after the removed one move down by one.
+  for (size_t k = index; k < obstacles_.size(); ++k)
+    for (b2Fixture* f = AsBody(obstacles_[k])->GetFixtureList(); f; f = f->GetNext())
+      f->GetUserData().pointer = PackTag(BodyKind::Obstacle, static_cast<int>(k));
+}
+
+void PhysicsWorld::SetObstaclePose(int index, const Pose2& pose) {
+  b2Body* b = AsBody(obstacles_[index]);
+  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  b->SetLinearVelocity(b2Vec2(0, 0));
+  b->SetAngularVelocity(0);
+  b->SetAwake(true);
 }
 
 PhysicsWorld::~PhysicsWorld() = default;

@@ -57,6 +57,12 @@ class PhysicsWorld {
   double RobotAngularVelocity(int robot) const;
   void SetRobotPose(int robot, const Pose2& pose);
   Pose2 ObstaclePose(int obstacle) const;
+  /// A box or cylinder as the model describes it; returns its index (the next one).
+  int AddObstacle(const ObstacleDef& obstacle);
+  /// Destroys obstacle `index` (grips on it released); later obstacles move down one index.
+  void RemoveObstacle(int index);
+  /// Teleports an obstacle (velocity zeroed), static ones included.
+  void SetObstaclePose(int index, const Pose2& pose);
   /// The body of a dead robot stays (an obstacle others bump into) but is braked.
   void FreezeRobot(int robot);
 

@@ -12,6 +12,16 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
+// The "scene changed" notification: loop functions added, removed, moved or recoloured
+// entities, so the media (occluder grids, lit LEDs) are rebuilt before anything senses.
+// Layout changes resize the media's buffers; that allocates, but only on such a tick.
+void RefreshMediaIfSceneChanged(World& w) {
+  if (!w.entities.changed()) return;
+  if (w.entities.layout_changed()) w.media.ready = false;
+  UpdateMedia(w.model, w.physics, w.robots, &w.media);
+  w.entities.ClearChanged();
+}
+
 bool LoopCall(World& w, const char* hook) {
   std::string err;
   if (!w.loop_functions.Call(hook, &err)) {
@@ -39,9 +49,12 @@ StepStatus Step(World& w) {
   w.physics.Step(dt, m.physics.iterations);
   for (int i = 0; i < n; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
   auto t2 = Clock::now();
+  if (w.entities.layout_changed()) w.media.ready = false;  // changed by post_step or init
+  w.entities.ClearChanged();
   UpdateMedia(m, w.physics, w.robots, &w.media);
   auto t3 = Clock::now();
   bool ok = LoopCall(w, "pre_step");
+  RefreshMediaIfSceneChanged(w);
   FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
   auto t4 = Clock::now();
   w.times.act += Seconds(t0, t1);

@@ -7,7 +7,9 @@
 
 namespace essaim {
 
-World::World(const Model& m, const SimOptions& o) : model(m), options(o), physics(m) {}
+World::World(const Model& m, const SimOptions& o) : scene(m), model(scene), options(o), physics(scene) {
+  entities.Init(&scene, &physics);
+}
 World::~World() = default;
 
 namespace {
@@ -41,8 +43,9 @@ bool BuildFloor(World& w, std::string* error) {
 }
 }  // namespace
 
-std::unique_ptr<World> World::Create(const Model& model, const SimOptions& options, std::string* error) {
-  std::unique_ptr<World> w(new World(model, options));
+std::unique_ptr<World> World::Create(const Model& source, const SimOptions& options, std::string* error) {
+  std::unique_ptr<World> w(new World(source, options));
+  const Model& model = w->model;  // the World's own copy, which loop functions may edit
   const uint64_t seed = model.experiment.seed;
   const size_t n = model.robots.size();
   w->robots.resize(n);
@@ -63,7 +66,8 @@ std::unique_ptr<World> World::Create(const Model& model, const SimOptions& optio
 
   // Loop functions load first so the floor exists before anything senses it.
   w->loop_functions.SetLimits(options.lua);
-  if (!w->loop_functions.Load(model, &w->robots, &w->physics, options.output_dir, error)) return nullptr;
+  if (!w->loop_functions.Load(w->model, &w->robots, &w->physics, &w->entities, &w->controllers, options.output_dir, error))
+    return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
 
   w->controllers.reserve(n);

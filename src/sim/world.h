@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "devices/entity_store.h"
 #include "devices/floor.h"
 #include "devices/media.h"
 #include "devices/robot_state.h"
@@ -59,10 +60,15 @@ class World {
   static std::unique_ptr<World> Create(const Model& model, const SimOptions& options, std::string* error);
   ~World();
 
+  /// The model as this run has it now: a copy that loop functions edit through `entities`
+  /// (boxes, cylinders and lights added, removed, moved, recoloured).
+  Model scene;
+  /// What every stage reads: the scene, const.
   const Model& model;
   SimOptions options;
   uint64_t tick = 0;
   PhysicsWorld physics;
+  EntityStore entities;
   std::vector<RobotState> robots;
   std::vector<std::unique_ptr<LuaController>> controllers;
   LoopFunctions loop_functions;

@@ -302,7 +302,7 @@ TEST(LoopFunctions, SetPoseRefusesNonFiniteValues) {
 
 TEST(LoopFunctions, HandleMisuseIsALuaError) {
   std::string f = LoopFailure("function pre_step() experiment.robots[1].position(42) end");
-  EXPECT_NE(f.find("robot handle expected"), std::string::npos) << f;
+  EXPECT_NE(f.find("position: entity handle expected"), std::string::npos) << f;
   f = LoopFailure("function pre_step() experiment.robots[1]:set_battery(2) end");
   EXPECT_NE(f.find("set_battery: charge must be in [0, 1]"), std::string::npos) << f;
   f = LoopFailure("function pre_step() experiment.robots[1]:led(14) end");

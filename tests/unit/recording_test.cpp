@@ -227,7 +227,7 @@ TEST(Recording, SceneMovableObstaclesAndFloor) {
   EXPECT_EQ(sc.floor_height, 512);
   ASSERT_GT(sc.floor_png.size(), 8u);
   EXPECT_EQ(sc.floor_png.substr(1, 3), "PNG");
-  EXPECT_EQ(rec.FrameBytes(), 4u + 10u + 6u);
+  EXPECT_EQ(rec.FrameBytes(), 4u + 10u + 8u);
 }
 
 TEST(Recording, TheFileAppearsOnlyWhenFinished) {
