@@ -49,6 +49,7 @@ std::string Fails(const std::string& loop, const std::string& arena = "") {
   d.Write("loop.lua", loop);
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c") + arena, SensingController("c.lua")));
   if (!s.ok()) return s.error;
+  if (!s.world->failure.empty()) return s.world->failure;  // init() failed: never stepped
   for (int i = 0; i < 3; ++i)
     if (Step(*s.world) == StepStatus::Failed) return s.world->failure;
   return "";
