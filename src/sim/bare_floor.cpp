@@ -1,5 +1,7 @@
 #include "sim/bare_floor.h"
 
+#include <time.h>
+
 #include <chrono>
 #include <memory>
 #include <vector>
@@ -8,6 +10,14 @@
 #include "sim/step.h"
 
 namespace essaim {
+
+namespace {
+double ThreadCpuSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+}  // namespace
 
 bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error) {
   SimOptions options;
@@ -35,6 +45,7 @@ bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error) {
     // applied data, unchanged until the next act): exactly what each step() saw.
     for (size_t i = 0; i < n; ++i)
       if (w.robots[i].alive && w.robots[i].controller_ok) bare[i]->PushReadings(w.robots[i]);
+    const double cpu_start = ThreadCpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     for (size_t i = 0; i < n; ++i) {
       if (!w.robots[i].alive || !w.robots[i].controller_ok) continue;
@@ -42,6 +53,7 @@ bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error) {
       ++out->robot_steps;
     }
     out->step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out->step_cpu_seconds += ThreadCpuSeconds() - cpu_start;
     ++out->ticks;
     if (status == StepStatus::Finished) return true;
   }

@@ -9,7 +9,8 @@
 namespace essaim {
 
 struct BareFloor {
-  double step_seconds = 0;  // sum of the bare step() calls
+  double step_seconds = 0;  // sum of the bare step() calls, wall clock
+  double step_cpu_seconds = 0;  // the same, this thread's CPU time (robust on a busy machine)
   long long robot_steps = 0;
   long long ticks = 0;
 };

@@ -11,7 +11,8 @@ def test_floor_prints_wall_floor_ratio_and_stage_shares():
     assert r.returncode == 0, r.stderr
     lines = r.stdout.strip().splitlines()
     header = lines[0].split()
-    assert header[:7] == ["scenario", "robots", "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor"]
+    assert header[:10] == ["scenario", "robots", "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor", "cpu-us/rs",
+                           "floor-cpu", "cpu/floor"]
     assert len(lines) == 3  # one row per thread count
     for line, threads in zip(lines[1:], (1, 2)):
         row = dict(zip(header, line.split()))
@@ -20,6 +21,9 @@ def test_floor_prints_wall_floor_ratio_and_stage_shares():
         wall, floor, ratio = float(row["wall-us/rs"]), float(row["floor-us/rs"]), float(row["wall/floor"])
         assert wall > 0 and floor > 0
         assert abs(ratio - wall / floor) <= 0.01 * ratio + 0.01
+        cpu, floor_cpu, cpu_ratio = float(row["cpu-us/rs"]), float(row["floor-cpu"]), float(row["cpu/floor"])
+        assert cpu > 0 and 0 < floor_cpu <= floor * 1.05  # CPU time never exceeds wall time (one thread)
+        assert abs(cpu_ratio - cpu / floor_cpu) <= 0.01 * cpu_ratio + 0.01
         shares = [float(row[k]) for k in ("act%", "phys%", "media%", "loop%", "sense%", "lua%")]
         assert all(0 <= s <= 100 for s in shares)
         if threads == 1:  # summed over threads otherwise
