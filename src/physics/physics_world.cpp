@@ -423,13 +423,13 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   in.maxFraction = 1;
   if (candidates.items.empty() || b2DistanceSquared(in.p1, in.p2) <= 0) return {};
   const Vec2 d = to - from;
-  const double len2 = d.squaredNorm();
+  const double inv_len2 = 1 / d.squaredNorm();  // a multiply per candidate, not a divide
   float best = 2;
   const b2Fixture* closest = nullptr;
   for (const RayCandidate& c : candidates.items) {
     // Segment to bounding-circle distance, in double: rejects most candidates cheaply.
     const double mx = c.cx - from.x(), my = c.cy - from.y();
-    const double t = std::clamp((mx * d.x() + my * d.y()) / len2, 0.0, 1.0);
+    const double t = std::clamp((mx * d.x() + my * d.y()) * inv_len2, 0.0, 1.0);
     const double ex = mx - t * d.x(), ey = my - t * d.y();
     if (ex * ex + ey * ey > c.r * c.r) continue;
     // Box2D's own shape test. The tree's walk passes a clipped maxFraction instead of 1;
