@@ -34,12 +34,13 @@ void Insert(ScanReading* readings, int* count, double angle, double distance) {
   ++*count;
 }
 
-double Cast(const PhysicsWorld& physics, const Pose2& p, int self, double angle, double length, double min) {
+double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const Pose2& p, double angle,
+            double length, double min) {
   const double a = p.yaw + angle;
   const double c = std::cos(a), s = std::sin(a);
   const Vec2 from(p.x + footbot::kRadius * c, p.y + footbot::kRadius * s);
   const Vec2 to(from.x() + length * c, from.y() + length * s);
-  const RayHit hit = physics.CastRay(from, to, footbot::kScannerElevation, self);
+  const RayHit hit = physics.CastRay(near_shapes, from, to);
   if (!hit.Hit()) return -2;
   return hit.distance > min ? hit.distance * 100 : -1;
 }
@@ -51,7 +52,7 @@ void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, dou
   for (int k = 0; k < 4; ++k) {
     const double angle = WrapSigned(angles[k]);
     const bool shortRange = (k % 2) == 0;
-    const double d = Cast(physics, p, robot.index, angle, shortRange ? kShortLength : kLongLength,
+    const double d = Cast(physics, robot.scanner_candidates, p, angle, shortRange ? kShortLength : kLongLength,
                           shortRange ? kShortMin : kLongMin);
     if (shortRange) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
     else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
@@ -87,6 +88,9 @@ void SenseScanner(RobotState& robot, const PhysicsWorld& physics) {
   rd.scanner_short_count = 0;
   rd.scanner_long_count = 0;
   const Pose2 p = physics.RobotPose(robot.index);
+  if (s.mode != ScannerMode::Off)  // one tree query for all of this tick's rays
+    physics.GatherRayCandidates({p.x, p.y}, footbot::kRadius + kLongLength, footbot::kScannerElevation, robot.index,
+                                &robot.scanner_candidates);
   if (s.mode == ScannerMode::Position) {
     CastAll(physics, p, robot, s.rotation);
   } else if (s.mode == ScannerMode::Speed) {

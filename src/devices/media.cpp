@@ -98,20 +98,6 @@ Vec3 FootBotLedPosition(const Pose2& pose, double z, double turret, int i) {
   return Vec3(pose.x + kRingRadius * std::cos(a), pose.y + kRingRadius * std::sin(a), z + kRingElevation);
 }
 
-double CircleEntry(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
-  // b2CircleShape::RayCast: the smaller root of |a + t(b - a) - c| = r, if in [0, 1].
-  const Vec2 s = c - a;
-  const double cc = s.squaredNorm() - r * r;
-  if (cc < 0) return 2;
-  const Vec2 d = b - a;
-  const double dd = d.squaredNorm();
-  const double bq = s.dot(d);
-  const double disc = bq * bq - dd * cc;
-  if (disc < 0 || dd <= 0) return 2;
-  const double t = (bq - std::sqrt(disc)) / dd;
-  return t >= 0 && t <= 1 ? t : 2;
-}
-
 double BoxEntry(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& cs, double hx, double hy) {
   // b2PolygonShape::RayCast in the box frame: clip [0, 1] by the four edges; a hit needs
   // an entering edge (a segment starting inside reports nothing).

@@ -1,6 +1,7 @@
 // Media state rebuilt after physics each tick: who hears whom (range and bearing), where
 // lit LEDs are (cameras). Read-only during sensing.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "devices/robot_state.h"
@@ -88,8 +89,21 @@ void InitMedia(const Model& model, Media* media);
 void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media);
 
 /// Segment fraction at which from -> to enters a circle (Box2D's circle ray cast); 2 when
-/// it misses, also when it starts inside.
-double CircleEntry(const Vec2& from, const Vec2& to, const Vec2& center, double radius);
+/// it misses, also when it starts inside. Inline: the media stage calls it for every
+/// (pair, body) in range, ~11% of a 300-robot foraging run as a call (issue 12).
+inline double CircleEntry(const Vec2& a, const Vec2& b, const Vec2& c, double r) {
+  // b2CircleShape::RayCast: the smaller root of |a + t(b - a) - c| = r, if in [0, 1].
+  const Vec2 s = c - a;
+  const double cc = s.squaredNorm() - r * r;
+  if (cc < 0) return 2;
+  const Vec2 d = b - a;
+  const double dd = d.squaredNorm();
+  const double bq = s.dot(d);
+  const double disc = bq * bq - dd * cc;
+  if (disc < 0 || dd <= 0) return 2;
+  const double t = (bq - std::sqrt(disc)) / dd;
+  return t >= 0 && t <= 1 ? t : 2;
+}
 /// Same for a box of half sizes (hx, hy), yaw (cos, sin) = cs (Box2D's polygon ray cast).
 double BoxEntry(const Vec2& from, const Vec2& to, const Vec2& center, const Vec2& cs, double hx, double hy);
 /// Whether a ray from -> to at height z meets a robot body (not `exclude_robot`) or an

@@ -1,7 +1,8 @@
 // Foot-bot proximity sensor (spec §2): 24 rays of 0.1 m from the body surface at
 // 7.5° + 15°·k, 6 cm above the floor; value 0.0100527 / (d + 0.000163144), 1 when closer
 // than 0.009889556 m, 0 without a hit; uniform noise added to every sensor (hit or not),
-// then clamped to [0, 1]. Rays go through Box2D's tree (PhysicsWorld::CastRay).
+// then clamped to [0, 1]. The shapes within reach are gathered once per tick, then each
+// ray is tested against that short list with Box2D's shape ray casts (issue 12).
 #include <algorithm>
 #include <cmath>
 
@@ -44,9 +45,11 @@ void SenseProximity(const DeviceConfig& cfg, RobotState& robot, const PhysicsWor
   const double cy = std::cos(p.yaw), sy = std::sin(p.yaw);
   const double noise = cfg.params.noise_level;
   double* out = robot.rd.proximity;
-  // Most robots have nothing within reach: one box query instead of 24 rays.
-  const bool near = physics.AnyShapeNear({p.x, p.y}, footbot::kRadius + kRange, footbot::kProximityElevation,
-                                         robot.index);
+  // One tree query for the 24 rays; most robots have nothing within reach.
+  RayCandidates& near_shapes = robot.proximity_candidates;
+  physics.GatherRayCandidates({p.x, p.y}, footbot::kRadius + kRange, footbot::kProximityElevation, robot.index,
+                              &near_shapes);
+  const bool near = !near_shapes.items.empty();
   for (int k = 0; k < kRingSensorCount; ++k) {
     if (!near) {
       double v = noise > 0 ? robot.sensor_rng.Uniform(-noise, noise) : 0.0;
@@ -58,7 +61,7 @@ void SenseProximity(const DeviceConfig& cfg, RobotState& robot, const PhysicsWor
     const double s = sy * kRing.cos[k] + cy * kRing.sin[k];
     const Vec2 from(p.x + footbot::kRadius * c, p.y + footbot::kRadius * s);
     const Vec2 to(from.x() + kRange * c, from.y() + kRange * s);
-    const RayHit hit = physics.CastRay(from, to, footbot::kProximityElevation, robot.index);
+    const RayHit hit = physics.CastRay(near_shapes, from, to);
     double v = hit.Hit() ? ProximityValue(hit.distance) : 0.0;
     if (noise > 0) v += robot.sensor_rng.Uniform(-noise, noise);
     out[k] = std::clamp(v, 0.0, 1.0);

@@ -9,6 +9,7 @@
 #include "core/math.h"
 #include "core/rng.h"
 #include "model/model.h"
+#include "physics/physics_world.h"
 
 namespace essaim {
 
@@ -105,6 +106,10 @@ struct RobotState {
   double turret_previous_error = 0;  // rad, position mode's last error (the PD's D term)
   BatteryState battery;
   ScannerState scanner;
+  // Shapes near the robot, gathered once per tick for all rays of one sensor (scratch,
+  // capacity kept: no allocation once the densest neighbourhood has been seen).
+  RayCandidates proximity_candidates;
+  RayCandidates scanner_candidates;
 };
 
 }  // namespace essaim

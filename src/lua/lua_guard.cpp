@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -31,7 +32,8 @@ void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
   auto* g = static_cast<LuaGuard*>(ud);
   const size_t old = ptr ? osize : 0;
   if (nsize == 0) {
-    std::free(ptr);
+    if (SmallBlockPool::IsSmall(old)) g->pool.Free(ptr, old);
+    else std::free(ptr);
     g->bytes -= old;
     return nullptr;
   }
@@ -39,7 +41,20 @@ void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
     g->memory_exceeded = true;
     return nullptr;  // Lua raises "not enough memory"; the owner reports the limit
   }
-  void* p = std::realloc(ptr, nsize);
+  void* p = nullptr;
+  if (SmallBlockPool::IsSmall(old) && SmallBlockPool::IsSmall(nsize) && SmallBlockPool::SameClass(old, nsize)) {
+    p = ptr;  // fits where it is
+  } else if (!SmallBlockPool::IsSmall(old) && !SmallBlockPool::IsSmall(nsize)) {
+    p = std::realloc(ptr, nsize);  // large to large (or new large): malloc's realloc
+  } else {
+    // Moving between the pool and malloc, or between classes.
+    p = SmallBlockPool::IsSmall(nsize) ? g->pool.Allocate(nsize) : std::malloc(nsize);
+    if (p && ptr) {
+      std::memcpy(p, ptr, std::min(old, nsize));
+      if (SmallBlockPool::IsSmall(old)) g->pool.Free(ptr, old);
+      else std::free(ptr);
+    }
+  }
   if (p) {
     g->bytes = g->bytes - old + nsize;
     g->peak = std::max(g->peak, g->bytes);
@@ -246,6 +261,7 @@ void CloseGuardedState(LuaGuard* guard) {
   m.guards.erase(std::remove(m.guards.begin(), m.guards.end(), guard), m.guards.end());
   lua_close(guard->state);
   guard->state = nullptr;
+  guard->pool.Release();  // every block was freed by lua_close
 }
 
 void OpenGuardedLibraries(lua_State* L, bool sandbox) {

@@ -13,6 +13,8 @@
 #include <mutex>
 #include <string>
 
+#include "lua/small_block_pool.h"
+
 struct lua_State;
 
 namespace essaim {
@@ -35,6 +37,7 @@ struct LuaGuard {
   size_t peak = 0;
   size_t limit = 0;
   size_t allocations = 0;  // number of (re)allocations, for the no-churn test
+  SmallBlockPool pool;     // where the state's small blocks live
   bool memory_exceeded = false;
   // Instructions, counted per call.
   long long budget = 0;

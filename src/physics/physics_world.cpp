@@ -398,6 +398,92 @@ RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exc
   return cb.hit;
 }
 
+namespace {
+// Shapes reaching the height whose tight box overlaps the query box; bounding circles kept
+// only when they can reach the query disc.
+class CandidateQuery : public b2QueryCallback {
+ public:
+  CandidateQuery(const Vec2& c, double r, const std::vector<double>& tops, const std::vector<double>& bottoms,
+                 double z, int exclude, std::vector<RayCandidate>* out)
+      : c_(c), r_(r), tops_(tops), bottoms_(bottoms), z_(z), exclude_(exclude), out_(out) {}
+  bool ReportFixture(b2Fixture* f) override {
+    uintptr_t tag = f->GetUserData().pointer;
+    if (!ReachesHeight(TagKind(tag), TagIndex(tag), z_, exclude_, tops_, bottoms_)) return true;
+    // The proxy box bounds the shape at its current transform (dynamic bodies: the union
+    // of the last sub-step's start and end), so the circle round it bounds the shape.
+    const b2AABB& box = f->GetAABB(0);
+    const double cx = 0.5 * (static_cast<double>(box.lowerBound.x) + box.upperBound.x);
+    const double cy = 0.5 * (static_cast<double>(box.lowerBound.y) + box.upperBound.y);
+    const double hx = 0.5 * (static_cast<double>(box.upperBound.x) - box.lowerBound.x);
+    const double hy = 0.5 * (static_cast<double>(box.upperBound.y) - box.lowerBound.y);
+    const double r = std::sqrt(hx * hx + hy * hy) + kSlack;
+    const double dx = cx - c_.x(), dy = cy - c_.y();
+    if (dx * dx + dy * dy > (r + r_) * (r + r_)) return true;
+    out_->push_back({f, cx, cy, r});
+    return true;
+  }
+  // m: far above float rounding at arena scale, so no shape a ray touches is ever dropped.
+  static constexpr double kSlack = 1e-3;
+
+ private:
+  Vec2 c_;
+  double r_;
+  const std::vector<double>& tops_;
+  const std::vector<double>& bottoms_;
+  double z_;
+  int exclude_;
+  std::vector<RayCandidate>* out_;
+};
+}  // namespace
+
+void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
+                                       RayCandidates* out) const {
+  out->items.clear();
+  const double r = radius + CandidateQuery::kSlack;
+  CandidateQuery q(center, r, impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot, &out->items);
+  b2AABB box;
+  box.lowerBound.Set(static_cast<float>(center.x() - r), static_cast<float>(center.y() - r));
+  box.upperBound.Set(static_cast<float>(center.x() + r), static_cast<float>(center.y() + r));
+  impl_->world.QueryAABB(&q, box);
+}
+
+RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const {
+  // The same float input as CastRay gives b2World::RayCast.
+  b2RayCastInput in;
+  in.p1.Set(static_cast<float>(from.x()), static_cast<float>(from.y()));
+  in.p2.Set(static_cast<float>(to.x()), static_cast<float>(to.y()));
+  in.maxFraction = 1;
+  if (candidates.items.empty() || b2DistanceSquared(in.p1, in.p2) <= 0) return {};
+  const Vec2 d = to - from;
+  const double inv_len2 = 1 / d.squaredNorm();  // a multiply per candidate, not a divide
+  float best = 2;
+  const b2Fixture* closest = nullptr;
+  for (const RayCandidate& c : candidates.items) {
+    // Segment to bounding-circle distance, in double: rejects most candidates cheaply.
+    const double mx = c.cx - from.x(), my = c.cy - from.y();
+    const double t = std::clamp((mx * d.x() + my * d.y()) * inv_len2, 0.0, 1.0);
+    const double ex = mx - t * d.x(), ey = my - t * d.y();
+    if (ex * ex + ey * ey > c.r * c.r) continue;
+    // Box2D's own shape test. The tree's walk passes a clipped maxFraction instead of 1;
+    // that only rejects hits no closer than the best so far, so the minimum is the same.
+    const auto* f = static_cast<const b2Fixture*>(c.fixture);
+    b2RayCastOutput out;
+    if (!f->RayCast(&out, in, 0)) continue;
+    if (out.fraction < best) {
+      best = out.fraction;
+      closest = f;
+    }
+  }
+  if (!closest) return {};
+  RayHit hit;
+  const uintptr_t tag = const_cast<b2Fixture*>(closest)->GetUserData().pointer;  // 2.4.1: no const getter
+  hit.kind = TagKind(tag);
+  hit.index = TagIndex(tag);
+  hit.point = {(1.0f - best) * in.p1.x + best * in.p2.x, (1.0f - best) * in.p1.y + best * in.p2.y};
+  hit.distance = (to - from).norm() * best;
+  return hit;
+}
+
 void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const {
   out->clear();
   RobotQuery q(center, radius, out);

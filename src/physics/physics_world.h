@@ -32,6 +32,19 @@ struct RayHit {
   bool Hit() const { return kind != BodyKind::None; }
 };
 
+/// One shape a bundle of rays may hit (PhysicsWorld::GatherRayCandidates): the Box2D
+/// fixture (opaque here) and a circle that bounds it, for a cheap per-ray reject.
+struct RayCandidate {
+  const void* fixture = nullptr;  // b2Fixture*
+  double cx = 0, cy = 0, r = 0;   // m, bounding circle (slightly inflated)
+};
+
+/// The shapes near one robot, gathered once per tick for all its rays at one height. The
+/// vector is reused: after the densest neighbourhood it never allocates again.
+struct RayCandidates {
+  std::vector<RayCandidate> items;
+};
+
 struct PhysicsProfile {
   double step_seconds = 0;
 };
@@ -69,6 +82,15 @@ class PhysicsWorld {
   /// Closest hit along from→to among shapes whose height reaches `z` (m above the floor),
   /// ignoring robot `exclude_robot` (-1: none). Thread-safe (read-only).
   RayHit CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const;
+  /// Rays cast from within `radius` of `center`, at height `z`, ignoring robot
+  /// `exclude_robot`: gathers once (one tree query) every shape such a ray can hit.
+  void GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
+                           RayCandidates* out) const;
+  /// CastRay's distance for a ray inside the gathered disc, tested against the candidates
+  /// only, with Box2D's own shape ray casts: the same closest fraction, bit for bit (the
+  /// closest of several hits does not depend on the order they are tested in). Only
+  /// `distance` is filled besides Hit(): kind and index are those of the first closest.
+  RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
   /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
   /// bounding box within the square of half-side `radius` around `center`. A cheap,
   /// conservative pre-test: false means no ray of that length from there can hit anything.
