@@ -19,6 +19,7 @@
 #include "lua/lua_guard.h"
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
+#include "output/memory_log.h"
 #include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
@@ -48,6 +49,7 @@ struct RunArgs {
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
+  long long memory_log_every = 0;  // --memory-log N: memory.csv every N ticks (0: none)
   long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
   double lua_seconds = -1;                          // wall clock per Lua call; -1: default
 };
@@ -209,6 +211,11 @@ static int Run(RunArgs& r) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
+  MemoryLog memory_log;
+  if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error)) {
+    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+    return kExitRunFailed;
+  }
   g_run.out = out;
   g_run.world = world.get();
   g_run.info.version = ESSAIM_VERSION;
@@ -234,6 +241,7 @@ static int Run(RunArgs& r) {
     }
     status = Step(*world);
     if (recorder.IsOpen()) recorder.Record(*world);
+    memory_log.Sample(*world);
     progress.Update(world->tick);
   }
   progress.Finish();
@@ -256,6 +264,7 @@ static int Run(RunArgs& r) {
     }
     info.outputs.push_back(kRecordingFile);
   }
+  if (memory_log.IsOpen()) info.outputs.push_back(kMemoryLogFile);
   if (!WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
@@ -311,6 +320,10 @@ CommandMain AddRunCommand(CLI::App& app) {
       ->type_name("[every=N]")
       ->expected(0, 1)
       ->check(RecordEvery());
+  sub->add_option("--memory-log", r->memory_log_every,
+                  "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
+      ->type_name("N")
+      ->check(IntegerIn(1, kMaxTicks));
   sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 3000 --seed 7 --set controllers.ctrl.params.EPSILONGREED=0.3");
   return [r, sub, budget] {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
