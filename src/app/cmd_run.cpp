@@ -119,7 +119,7 @@ CLI::Validator RecordEvery() {
       "");
 }
 
-std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
+std::unique_ptr<Model> LoadOrReport(const RunArgs& r, std::string* message = nullptr) {
   ErrorList errors, warnings;
   auto model = LoadExperimentFile(r.file, r.load, &errors, &warnings);
   if (!r.quiet)
@@ -129,6 +129,10 @@ std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
       std::fputs(one.Format().c_str(), stderr);
     }
   if (!model) std::fputs(errors.Format().c_str(), stderr);
+  if (!model && message) {
+    *message = errors.Format();
+    while (!message->empty() && message->back() == '\n') message->pop_back();
+  }
   return model;
 }
 
@@ -155,6 +159,31 @@ std::string DefaultOutDir(const Model& m) {
   return "runs/" + name.string() + "-" + std::to_string(m.experiment.seed);
 }
 }  // namespace
+
+/// A run that fails before its world exists still leaves summary.json (status "failed",
+/// the message) where the output goes, when that is known; returns `code`.
+int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
+                    int code) {
+  std::string error;
+  if (!out.empty() &&
+      !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, message, &error))
+    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+  return code;
+}
+
+/// A run whose world exists but that cannot go on (an output that cannot be opened):
+/// summary.json with status "failed" and the message, exit 1.
+int FailedRun(World& world, const std::string& out, const std::string& message) {
+  std::fprintf(stderr, "essaim run: %s\n", message.c_str());
+  RunInfo info;
+  info.version = ESSAIM_VERSION;
+  info.status = "failed";
+  info.finished_by = "error";
+  world.failure = message;
+  std::string error;
+  if (!WriteRunOutputs(out, world, info, nullptr, &error)) std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+  return kExitRunFailed;
+}
 
 static int Check(RunArgs& r) {
   std::string error;
@@ -183,10 +212,10 @@ static int Run(RunArgs& r) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitBadInput;
+    return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   }
-  auto model = LoadOrReport(r);
-  if (!model) return kExitBadInput;
+  auto model = LoadOrReport(r, &error);
+  if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
   if (!MakeDirs(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
@@ -204,18 +233,14 @@ static int Run(RunArgs& r) {
   auto world = World::Create(*model, opt, &error);
   if (!world) {
     std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitBadInput;
+    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput);
   }
   RecordingWriter recorder;
-  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error)) {
-    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitRunFailed;
-  }
+  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error))
+    return FailedRun(*world, out, error);
   MemoryLog memory_log;
-  if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error)) {
-    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitRunFailed;
-  }
+  if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error))
+    return FailedRun(*world, out, error);
   g_run.out = out;
   g_run.world = world.get();
   g_run.info.version = ESSAIM_VERSION;
@@ -258,11 +283,13 @@ static int Run(RunArgs& r) {
   info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The recording ends with the run, however it ended (interrupted and failed runs too).
   if (recorder.IsOpen()) {
-    if (!recorder.Finish(*world, &error)) {
-      std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-      return kExitRunFailed;
+    if (recorder.Finish(*world, &error)) {
+      info.outputs.push_back(kRecordingFile);
+    } else {  // the run went through but lost an output: failed, and summary.json says why
+      info.status = "failed";
+      info.finished_by = "error";
+      world->failure = world->failure.empty() ? error : world->failure + "; " + error;
     }
-    info.outputs.push_back(kRecordingFile);
   }
   if (memory_log.IsOpen()) info.outputs.push_back(kMemoryLogFile);
   if (!WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error)) {
