@@ -8,6 +8,7 @@ did not stay flat. Not a test: the full run takes about an hour on one core.
 """
 import argparse
 import csv
+import json
 import os
 import pathlib
 import platform
@@ -72,6 +73,7 @@ def main():
     ap.add_argument("--out", default=str(ROOT / "runs/soak"))
     ap.add_argument("--bench-dir", default=str(ROOT / "bench"))
     ap.add_argument("--set", action="append", default=[], metavar="PATH=VALUE", help="passed to essaim run")
+    ap.add_argument("--no-run", action="store_true", help="only tabulate and plot the run already in --out")
     ap.add_argument("--name", default="soak", help="bench files: NAME.md and NAME-memory.png")
     a = ap.parse_args()
     every = a.every or max(1, a.ticks // 200)
@@ -80,13 +82,14 @@ def main():
            "--record", f"every={a.record_every}", "--memory-log", str(every), "--quiet", "--out", str(out)]
     for override in a.set:
         cmd += ["--set", override]
-    t0 = time.time()
-    rc = subprocess.call(cmd)
-    wall = time.time() - t0
+    # Interrupted (Ctrl-C, SIGTERM: exit 130/143) still counts: the samples up to then are there.
+    rc = 0 if a.no_run else subprocess.call(cmd)
     memory_csv = out / "memory.csv"
     rows = list(csv.DictReader(open(memory_csv))) if memory_csv.exists() else []
-    if rc != 0 or len(rows) < 2:
+    if rc not in (0, 130, 143) or len(rows) < 2:
         sys.exit(f"soak: essaim exited {rc} with {len(rows)} memory samples ({' '.join(cmd)})")
+    summary = json.loads((out / "summary.json").read_text())
+    wall = summary["wall_seconds"]
 
     mib = 2.0 ** 20
     ticks = [int(r["tick"]) for r in rows]
@@ -108,12 +111,14 @@ def main():
         return f"{v[0]:.2f} | {max(v):.2f} | {v[-1]:.2f}"
 
     lines = [
-        f"# Soak run: {name}, {ticks[-1]:,} ticks",
+        f"# Soak run: {name}, {summary['ticks']:,} ticks",
         "",
         f"`scripts/soak.py {' '.join(shown(x) for x in sys.argv[1:])}` ran `{' '.join(['essaim'] + [shown(c) for c in cmd[1:]])}`",
         f"on {platform.node() or 'this machine'} ({os.cpu_count()} cores, shared), "
         f"{time.strftime('%Y-%m-%d', time.gmtime())}: {wall:.0f} s wall, "
-        f"{ticks[-1] * 1.0 / wall:.0f} ticks/s, recording.bin {recording:.1f} MiB.",
+        f"{summary['ticks'] / wall:.0f} ticks/s, recording.bin {recording:.1f} MiB, "
+        f"{summary['robots_alive']} of {summary['robots']} robots alive at the end, status {summary['status']}"
+        + (f" (stopped at tick {summary['ticks']:,} of {a.ticks:,})." if summary["ticks"] < a.ticks else "."),
         f"Memory sampled every {every} ticks ({len(rows)} samples), shown in {a.name}-memory.png.",
         "",
         "| memory (MiB) | first sample | max | last | growth after warm-up |",
