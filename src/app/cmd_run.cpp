@@ -162,7 +162,7 @@ std::string DefaultOutDir(const Model& m) {
 
 /// A run that fails before its world exists still leaves summary.json (status "failed",
 /// the message) where the output goes, when that is known; returns `code`.
-int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
+static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
                     int code) {
   std::string error;
   if (!out.empty() &&
@@ -173,7 +173,7 @@ int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model
 
 /// A run whose world exists but that cannot go on (an output that cannot be opened):
 /// summary.json with status "failed" and the message, exit 1.
-int FailedRun(World& world, const std::string& out, const std::string& message) {
+static int FailedRun(World& world, const std::string& out, const std::string& message) {
   std::fprintf(stderr, "essaim run: %s\n", message.c_str());
   RunInfo info;
   info.version = ESSAIM_VERSION;
