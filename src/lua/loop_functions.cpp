@@ -117,7 +117,9 @@ struct LoopFunctionsAccess {
     bool first = lf->series_.columns.empty() && lf->series_.rows.empty();
     if (!first && static_cast<size_t>(n) != lf->series_.columns.size())
       return luaL_error(L, "timeseries: row has %d columns, the first row had %d", (int)n, (int)lf->series_.columns.size());
-    std::vector<double> row;
+    // Checked whole before anything is kept: luaL_error jumps over C++ destructors, so no
+    // C++ object may be alive when it raises (a half-built row leaked), and a bad row must
+    // not leave half its columns behind.
     for (lua_Integer k = 1; k <= n; ++k) {
       lua_rawgeti(L, 1, k);
       if (!lua_istable(L, -1)) return luaL_error(L, "timeseries: each item must be {name, value}");
@@ -125,9 +127,17 @@ struct LoopFunctionsAccess {
       lua_rawgeti(L, -2, 2);
       const char* name = lua_tostring(L, -2);
       if (!name || !lua_isnumber(L, -1)) return luaL_error(L, "timeseries: item %d must be {name, number}", (int)k);
-      if (first) lf->series_.columns.push_back(name);
-      else if (lf->series_.columns[k - 1] != name)
+      if (!first && lf->series_.columns[k - 1].compare(name) != 0)
         return luaL_error(L, "timeseries: column %d is '%s', expected '%s'", (int)k, name, lf->series_.columns[k - 1].c_str());
+      lua_pop(L, 3);
+    }
+    std::vector<double> row;
+    row.reserve(static_cast<size_t>(n));
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_rawgeti(L, 1, k);
+      lua_rawgeti(L, -1, 1);
+      lua_rawgeti(L, -2, 2);
+      if (first) lf->series_.columns.push_back(lua_tostring(L, -2));
       row.push_back(lua_tonumber(L, -1));
       lua_pop(L, 3);
     }
