@@ -20,13 +20,13 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-python=python3
-[ -x .venv/bin/python3 ] && python="$PWD/.venv/bin/python3"
+python=()  # the project's venv when there is one (else CMake's own choice, or the cached one)
+[ -x .venv/bin/python3 ] && python=(-DESSAIM_PYTHON="$PWD/.venv/bin/python3")
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 start=$SECONDS
 CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DESSAIM_SANITIZE=ON -DESSAIM_FUZZ=ON -DESSAIM_PYTHON="$python" "${launcher[@]}" > /dev/null
+  -DESSAIM_SANITIZE=ON -DESSAIM_FUZZ=ON "${python[@]}" "${launcher[@]}" > /dev/null
 cmake --build build-asan -j2
 echo "sanitize: built in $((SECONDS - start)) s"
 start=$SECONDS
