@@ -113,7 +113,7 @@ def main():
     lines = [
         f"# Soak run: {name}, {summary['ticks']:,} ticks",
         "",
-        f"`scripts/soak.py {' '.join(shown(x) for x in sys.argv[1:])}` ran `{' '.join(['essaim'] + [shown(c) for c in cmd[1:]])}`",
+        f"`{' '.join(['essaim'] + [shown(c) for c in cmd[1:]])}` (from scripts/soak.py)",
         f"on {platform.node() or 'this machine'} ({os.cpu_count()} cores, shared), "
         f"{time.strftime('%Y-%m-%d', time.gmtime())}: {wall:.0f} s wall, "
         f"{summary['ticks'] / wall:.0f} ticks/s, recording.bin {recording:.1f} MiB, "
