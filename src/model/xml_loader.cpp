@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 
 #include "core/color.h"
@@ -37,6 +38,19 @@ class Loader {
     if (warnings_) warnings_->Add(path_, e ? e->GetLineNum() : 0, e ? e->Name() : "", msg);
   }
   SourceLoc Loc(const XMLElement* e) const { return {path_, e->GetLineNum(), e->Name()}; }
+  // Box2D holds positions and angles as floats and asserts they are finite: a coordinate
+  // of 1e39 m, or a yaw of 1e300 degrees, used to abort the process (found by fuzz_argos).
+  bool Placeable(const XMLElement* e, const Vec3& position) {
+    if (position.cwiseAbs().maxCoeff() <= kMaxCoordinate) return true;
+    Error(e, "position beyond 1e6 m from the origin on an axis: Box2D cannot hold it");
+    return false;
+  }
+  /// Any finite angle is an angle: beyond a turn it is reduced (exactly, by fmod), so that
+  /// its radians stay a float; angles within ±360 degrees are used as written.
+  static double YawFromDegrees(double degrees) {
+    return DegToRad(std::abs(degrees) > 360 ? std::fmod(degrees, 360.0) : degrees);
+  }
+  static constexpr double kMaxCoordinate = 1e6;
 
   // ---- typed attribute access: report and return a default on bad text
   bool Has(const XMLElement* e, const char* name) { return e->Attribute(name) != nullptr; }
@@ -460,8 +474,9 @@ void Loader::LoadBody(const XMLElement* body, Pose2* pose, double* z) {
   pose->x = p.x();
   pose->y = p.y();
   *z = p.z();
-  pose->yaw = DegToRad(o.x());
+  pose->yaw = YawFromDegrees(o.x());
   if (o.y() != 0 || o.z() != 0) Warn(body, "pitch and roll ignored: essaim is planar");
+  Placeable(body, p);
 }
 
 bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
@@ -718,7 +733,8 @@ void Loader::LoadDistribute(const XMLElement* e) {
       }
       ++draw;
       for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
-      Pose2 pose{p.x(), p.y(), DegToRad(o.x())};
+      if (!Placeable(pos, p)) return;
+      Pose2 pose{p.x(), p.y(), YawFromDegrees(o.x())};
       if (kind == "light") {
         LightDef l;
         if (!LoadLight(proto, &l)) return;
