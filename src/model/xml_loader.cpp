@@ -51,6 +51,7 @@ class Loader {
     return DegToRad(std::abs(degrees) > 360 ? std::fmod(degrees, 360.0) : degrees);
   }
   static constexpr double kMaxCoordinate = 1e6;
+  static constexpr int kMaxFloorSide = 8192;  // pixels of a loop-function floor
 
   // ---- typed attribute access: report and return a default on bad text
   bool Has(const XMLElement* e, const char* name) { return e->Attribute(name) != nullptr; }
@@ -607,6 +608,13 @@ void Loader::LoadFloor(const XMLElement* e) {
     f.source = FloorSource::LoopFunctions;
     f.pixels_per_meter = Double(e, "pixels_per_meter", 100);
     if (f.pixels_per_meter <= 0 || f.pixels_per_meter > 1000) Error(e, "pixels_per_meter must be in (0, 1000]");
+    // The raster is sampled from Lua pixel by pixel and held whole: a 10 km arena at 100
+    // pixels/m would ask for 10^12 pixels (std::bad_alloc, found by fuzzing).
+    const double w = model_->arena.size.x() * f.pixels_per_meter, h = model_->arena.size.y() * f.pixels_per_meter;
+    if (!(w <= kMaxFloorSide && h <= kMaxFloorSide))
+      Error(e, "the floor would be " + FormatDouble(std::floor(w)) + " x " + FormatDouble(std::floor(h)) +
+                   " pixels (arena size x pixels_per_meter), more than " + std::to_string(kMaxFloorSide) +
+                   " per side: lower pixels_per_meter");
   } else if (!source.empty()) {
     Error(e, "source must be image or loop_functions");
   }

@@ -260,6 +260,22 @@ TEST(Loader, MissingFloorImageAndExhaustedGridAreErrors) {
   EXPECT_NE(all.find("grid exhausted"), std::string::npos) << all;
 }
 
+// A loop-function floor is rasterised whole: a 10^6 m arena at 50 pixels/m used to end in
+// std::bad_alloc (abort) when the world was built.
+TEST(Loader, LoopFunctionFloorTooLargeToRasteriseIsAnError) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  d.Write("loop.lua", "function floor_color(x, y) return 0, 0, 0 end");
+  std::string xml = Experiment("<floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"50\"/>", kCtrl, 10, 1,
+                               "<loop_functions script=\"loop.lua\"/>");
+  const std::string size = "size=\"";
+  size_t a = xml.find(size, xml.find("<arena")) + size.size();
+  xml.replace(a, xml.find('"', a) - a, "1000000, 100, 1");
+  ErrorList e;
+  EXPECT_FALSE(LoadText(d, xml, &e));
+  EXPECT_NE(e.Format().find("<floor>: the floor would be 50000000 x 5000 pixels"), std::string::npos) << e.Format();
+}
+
 // Found by fuzz_argos: Box2D keeps floats and asserts they are finite, so a position of
 // 1e39 m or an orientation of 1e300 degrees aborted the process when the world was built.
 TEST(Loader, FarPositionsAreErrorsAndHugeAnglesAreReduced) {
