@@ -684,8 +684,10 @@ bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
       Error(e, "layout must be three integers nx,ny,nz");
     } else {
       for (int i = 0; i < 3; ++i) {
-        g->layout[i] = static_cast<int>((*layout)[i]);
-        if (g->layout[i] <= 0) Error(e, "layout components must be > 0");
+        // Range-checked before the int cast (layout="1e80,1,1" overflowed it: UBSan, fuzz_argos).
+        const double v = (*layout)[i];
+        g->layout[i] = v >= 1 && v <= 1e6 ? static_cast<int>(v) : 0;
+        if (g->layout[i] <= 0) Error(e, "layout components must be > 0 (and at most 1000000)");
       }
     }
   } else if (!method.empty()) {

@@ -276,6 +276,21 @@ TEST(Loader, LoopFunctionFloorTooLargeToRasteriseIsAnError) {
   EXPECT_NE(e.Format().find("<floor>: the floor would be 50000000 x 5000 pixels"), std::string::npos) << e.Format();
 }
 
+// Found by the CI fuzz pass (UBSan): layout="1e80,1,1" overflowed the double-to-int cast.
+TEST(Loader, GridLayoutOutOfIntRangeIsAnError) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  for (const char* layout : {"1e80,1,1", "-1e80,1,1", "1,0,1"}) {
+    std::string arena = std::string("<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"") +
+                        layout + "\"/><orientation method=\"constant\" values=\"0,0,0\"/>"
+                        "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+    ErrorList e;
+    EXPECT_FALSE(LoadText(d, Experiment(arena, kCtrl), &e)) << layout;
+    EXPECT_NE(e.Format().find("<position>: layout components must be > 0 (and at most 1000000)"), std::string::npos)
+        << e.Format();
+  }
+}
+
 // Found by fuzz_argos: Box2D keeps floats and asserts they are finite, so a position of
 // 1e39 m or an orientation of 1e300 degrees aborted the process when the world was built.
 TEST(Loader, FarPositionsAreErrorsAndHugeAnglesAreReduced) {
