@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (tests/fuzz, clang, ASan + UBSan) and runs each for a fixed
 # time (docs/robustness.md).
 #   scripts/fuzz.sh [SECONDS_PER_TARGET=60] [TARGET...]     targets: argos recording png lua_bindings
-# FUZZ_BUILD=DIR picks the build folder (default build-fuzz; CI reuses its sanitizer build).
+# FUZZ_BUILD=DIR picks the build folder (default build-fuzz; CI reuses its sanitizer build),
+# FUZZ_SEED=N the random seed.
 # Findings (crash-*, timeout-*, oom-*, leak-*) land in DIR/findings/<target>/; inputs that
 # raised coverage are kept in DIR/corpus/<target>/ (the committed seeds in tests/fuzz/corpus/
 # stay untouched). Exits 1 when any target found something.
@@ -13,6 +14,9 @@ shift || true
 targets=("$@")
 ((${#targets[@]})) || targets=(argos recording png lua_bindings)
 build=${FUZZ_BUILD:-build-fuzz}
+# FUZZ_SEED=N repeats the same mutations (CI: a pass that is green here stays green there,
+# it only runs further or less far); 0, the default, lets libFuzzer pick.
+seed=${FUZZ_SEED:-0}
 
 if [ ! -f "$build/build.ninja" ]; then
   launcher=()
@@ -30,7 +34,7 @@ for t in "${targets[@]}"; do
   log="$build/fuzz_$t.log"
   # -timeout: an input running over 10 s is a hang; -rss_limit_mb: over 2 GiB a blow-up.
   if ! "$build/fuzz_$t" "$build/corpus/$t" "tests/fuzz/corpus/$t" -max_total_time="$seconds" \
-      -timeout=10 -rss_limit_mb=2048 -max_len=16384 -artifact_prefix="$build/findings/$t/" \
+      -seed="$seed" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -artifact_prefix="$build/findings/$t/" \
       -print_final_stats=1 > "$log" 2>&1; then
     status=1
     echo "fuzz_$t: FOUND A PROBLEM ($log, $build/findings/$t/):"
