@@ -22,6 +22,7 @@
 #include "model/xml_loader.h"
 #include "output/atomic_file.h"
 #include "output/out_folder.h"
+#include "output/memory_log.h"
 #include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
@@ -53,6 +54,7 @@ struct RunArgs {
   bool log_prefix = false;  // --log-prefix: "[t=120 fb7] " before each log line
   std::string log_dir;      // --log-dir: one file per robot
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
+  long long memory_log_every = 0;  // --memory-log N: memory.csv every N ticks (0: none)
   long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
   double lua_seconds = -1;                          // wall clock per Lua call; -1: default
 };
@@ -123,7 +125,7 @@ CLI::Validator RecordEvery() {
       "");
 }
 
-std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
+std::unique_ptr<Model> LoadOrReport(const RunArgs& r, std::string* message = nullptr) {
   ErrorList errors, warnings;
   auto model = LoadExperimentFile(r.file, r.load, &errors, &warnings);
   if (!r.quiet)
@@ -133,6 +135,10 @@ std::unique_ptr<Model> LoadOrReport(const RunArgs& r) {
       std::fputs(one.Format().c_str(), stderr);
     }
   if (!model) std::fputs(errors.Format().c_str(), stderr);
+  if (!model && message) {
+    *message = errors.Format();
+    while (!message->empty() && message->back() == '\n') message->pop_back();
+  }
   return model;
 }
 
@@ -159,6 +165,47 @@ std::string DefaultOutDir(const Model& m) {
   return "runs/" + name.string() + "-" + std::to_string(m.experiment.seed);
 }
 }  // namespace
+
+/// The folder will hold this run's outputs only: an earlier run's go into previous/, and
+/// stderr says which.
+static bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* error) {
+  std::vector<std::string> moved;
+  if (!SetAsideEarlierOutputs(out, &moved, error)) return false;
+  if (!moved.empty()) {
+    std::string names;
+    for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
+    std::fprintf(stderr, "essaim run: %s held an earlier run's outputs; moved them into %s: %s\n", out.c_str(),
+                 JoinPath(out, kPreviousRunFolder).c_str(), names.c_str());
+  }
+  return true;
+}
+
+/// A run that fails before its world exists still leaves summary.json (status "failed",
+/// the message) where the output goes, when that is known and usable, with an earlier
+/// run's outputs set aside so the summary is not read beside them; returns `code`.
+static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
+                    int code) {
+  std::string error;
+  if (out.empty()) return code;
+  if (!PrepareOutFolder(out, &error) || !SetAsideEarlierOutputsAndSay(out, &error) ||
+      !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, message, &error))
+    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+  return code;
+}
+
+/// A run whose world exists but that cannot go on (an output that cannot be opened):
+/// summary.json with status "failed" and the message, exit 1.
+static int FailedRun(World& world, const std::string& out, const std::string& message) {
+  std::fprintf(stderr, "essaim run: %s\n", message.c_str());
+  RunInfo info;
+  info.version = ESSAIM_VERSION;
+  info.status = "failed";
+  info.finished_by = "error";
+  world.failure = message;
+  std::string error;
+  if (!WriteRunOutputs(out, world, info, nullptr, &error)) std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+  return kExitRunFailed;
+}
 
 static int Check(RunArgs& r) {
   std::string error;
@@ -191,10 +238,10 @@ static int Run(RunArgs& r) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitBadInput;
+    return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   }
-  auto model = LoadOrReport(r);
-  if (!model) return kExitBadInput;
+  auto model = LoadOrReport(r, &error);
+  if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
   if (!PrepareOutFolder(out, &error)) {  // before any script runs: a wrong --out is bad input
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
@@ -215,19 +262,11 @@ static int Run(RunArgs& r) {
   auto world = World::Create(*model, opt, &error);
   if (!world) {
     std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitBadInput;
+    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput);
   }
-  // The folder will hold this run's outputs only: an earlier run's go into previous/.
-  std::vector<std::string> moved;
-  if (!SetAsideEarlierOutputs(out, &moved, &error)) {
+  if (!SetAsideEarlierOutputsAndSay(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
-  }
-  if (!moved.empty()) {
-    std::string names;
-    for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
-    std::fprintf(stderr, "essaim run: %s held an earlier run's outputs; moved them into %s: %s\n", out.c_str(),
-                 JoinPath(out, kPreviousRunFolder).c_str(), names.c_str());
   }
   RunInfo info;
   info.version = ESSAIM_VERSION;
@@ -236,6 +275,9 @@ static int Run(RunArgs& r) {
   RecordingWriter recorder;
   if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error))
     std::fprintf(stderr, "essaim run: %s; the run goes on without a recording\n", error.c_str());
+  MemoryLog memory_log;
+  if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error))
+    return FailedRun(*world, out, error);
   g_run.out = out;
   g_run.world = world.get();
   g_run.info.version = ESSAIM_VERSION;
@@ -268,6 +310,7 @@ static int Run(RunArgs& r) {
                      recorder.Failure().c_str(), static_cast<unsigned long long>(world->tick));
       }
     }
+    memory_log.Sample(*world);
     progress.Update(world->tick);
   }
   progress.Finish();
@@ -289,6 +332,7 @@ static int Run(RunArgs& r) {
     if (recorder.Finish(*world, &error)) info.outputs.push_back(kRecordingFile);
     else info.output_errors.push_back(error);
   }
+  if (memory_log.IsOpen()) info.outputs.push_back(kMemoryLogFile);
   std::vector<std::string> unwritten = info.output_errors;
   bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
   if (!all_written) unwritten.push_back(error);  // metrics, time series or summary
@@ -354,6 +398,10 @@ CommandMain AddRunCommand(CLI::App& app) {
       ->type_name("[every=N]")
       ->expected(0, 1)
       ->check(RecordEvery());
+  sub->add_option("--memory-log", r->memory_log_every,
+                  "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
+      ->type_name("N")
+      ->check(IntegerIn(1, kMaxTicks));
   sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 3000 --seed 7 --set controllers.ctrl.params.EPSILONGREED=0.3");
   return [r, sub, budget] {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);

@@ -20,11 +20,17 @@ struct FloorRaster {
   /// run instead; docs/compatibility.md).
   Color At(double x, double y) const {
     if (pixels.empty()) return Color{255, 255, 255, 255};
-    int px = static_cast<int>((x - min.x()) * width / size.x());
-    int py = static_cast<int>((y - min.y()) * height / size.y());
-    px = std::clamp(px, 0, width - 1);
-    py = std::clamp(py, 0, height - 1);
+    int px = Cell((x - min.x()) * width / size.x(), width);
+    int py = Cell((y - min.y()) * height / size.y(), height);
     return pixels[static_cast<size_t>(py) * width + px];
+  }
+  /// The cell holding raster coordinate `v` of `n` cells; clamped before the int cast, so
+  /// that a robot 1e48 m away (or NaN) reads an edge cell instead of overflowing the cast
+  /// (UBSan, found by fuzz_argos).
+  static int Cell(double v, int n) {
+    if (!(v >= 0)) return 0;
+    if (v >= n - 1) return n - 1;
+    return static_cast<int>(v);
   }
   /// Grey level in [0, 1]: (0.299 R + 0.587 G + 0.114 B) / 255.
   double Grey(double x, double y) const {

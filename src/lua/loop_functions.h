@@ -49,6 +49,7 @@ class LoopFunctions {
   bool PostExperiment(Json* metrics, bool* has_metrics, std::string* error);
 
   const Timeseries& Series() const { return series_; }
+  const LuaGuard& Memory() const { return guard_; }
   std::string& LogBuffer() { return log_; }
 
  private:

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 
 #include "core/color.h"
@@ -38,6 +39,20 @@ class Loader {
     if (warnings_) warnings_->Add(path_, e ? e->GetLineNum() : 0, e ? e->Name() : "", msg);
   }
   SourceLoc Loc(const XMLElement* e) const { return {path_, e->GetLineNum(), e->Name()}; }
+  // Box2D holds positions and angles as floats and asserts they are finite: a coordinate
+  // of 1e39 m, or a yaw of 1e300 degrees, used to abort the process (found by fuzz_argos).
+  bool Placeable(const XMLElement* e, const Vec3& position) {
+    if (position.cwiseAbs().maxCoeff() <= kMaxCoordinate) return true;
+    Error(e, "position beyond 1e6 m from the origin on an axis: Box2D cannot hold it");
+    return false;
+  }
+  /// Any finite angle is an angle: beyond a turn it is reduced (exactly, by fmod), so that
+  /// its radians stay a float; angles within ±360 degrees are used as written.
+  static double YawFromDegrees(double degrees) {
+    return DegToRad(std::abs(degrees) > 360 ? std::fmod(degrees, 360.0) : degrees);
+  }
+  static constexpr double kMaxCoordinate = 1e6;
+  static constexpr int kMaxFloorSide = 8192;  // pixels of a loop-function floor
 
   // ---- typed attribute access: report and return a default on bad text. Every read goes
   // through Get, which records it: what nobody read is reported (ReportUnknownAttributes).
@@ -492,8 +507,9 @@ void Loader::LoadBody(const XMLElement* body, Pose2* pose, double* z) {
   pose->x = p.x();
   pose->y = p.y();
   *z = p.z();
-  pose->yaw = DegToRad(o.x());
+  pose->yaw = YawFromDegrees(o.x());
   if (o.y() != 0 || o.z() != 0) Warn(body, "pitch and roll ignored: essaim is planar");
+  Placeable(body, p);
 }
 
 bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
@@ -635,6 +651,13 @@ void Loader::LoadFloor(const XMLElement* e) {
     f.source = FloorSource::LoopFunctions;
     f.pixels_per_meter = Double(e, "pixels_per_meter", 100);
     if (f.pixels_per_meter <= 0 || f.pixels_per_meter > 1000) Error(e, "pixels_per_meter must be in (0, 1000]");
+    // The raster is sampled from Lua pixel by pixel and held whole: a 10 km arena at 100
+    // pixels/m would ask for 10^12 pixels (std::bad_alloc, found by fuzzing).
+    const double w = model_->arena.size.x() * f.pixels_per_meter, h = model_->arena.size.y() * f.pixels_per_meter;
+    if (!(w <= kMaxFloorSide && h <= kMaxFloorSide))
+      Error(e, "the floor would be " + FormatDouble(std::floor(w)) + " x " + FormatDouble(std::floor(h)) +
+                   " pixels (arena size x pixels_per_meter), more than " + std::to_string(kMaxFloorSide) +
+                   " per side: lower pixels_per_meter");
   } else if (!source.empty()) {
     Error(e, "source must be image or loop_functions");
   }
@@ -734,8 +757,10 @@ bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
       Error(e, "layout must be three integers nx,ny,nz");
     } else {
       for (int i = 0; i < 3; ++i) {
-        g->layout[i] = static_cast<int>((*layout)[i]);
-        if (g->layout[i] <= 0) Error(e, "layout components must be > 0");
+        // Range-checked before the int cast (layout="1e80,1,1" overflowed it: UBSan, fuzz_argos).
+        const double v = (*layout)[i];
+        g->layout[i] = v >= 1 && v <= 1e6 ? static_cast<int>(v) : 0;
+        if (g->layout[i] <= 0) Error(e, "layout components must be > 0 (and at most 1000000)");
       }
     }
   } else if (!method.empty()) {
@@ -801,7 +826,8 @@ void Loader::LoadDistribute(const XMLElement* e) {
       }
       ++draw;
       for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
-      Pose2 pose{p.x(), p.y(), DegToRad(o.x())};
+      if (!Placeable(pos, p)) return;
+      Pose2 pose{p.x(), p.y(), YawFromDegrees(o.x())};
       if (kind == "light") {
         LightDef l = light_proto;
         l.id = id;

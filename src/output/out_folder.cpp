@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "output/memory_log.h"
 #include "output/recording.h"
 
 namespace essaim {
@@ -20,7 +21,7 @@ bool EndsWith(const std::string& s, const std::string& tail) {
 }
 
 bool IsFinalOutputName(const std::string& name) {
-  static const char* const kNames[] = {"summary.json", "metrics.json", "timeseries.csv", kRecordingFile, "replay.html"};
+  static const char* const kNames[] = {"summary.json", "metrics.json", "timeseries.csv", kRecordingFile, kMemoryLogFile, "replay.html"};
   for (const char* n : kNames)
     if (name == n) return true;
   return name.rfind("snapshot-", 0) == 0 && EndsWith(name, ".png");

@@ -602,9 +602,15 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
     o.id = in.Str();
     s.obstacles.push_back(o);
   }
+  // The movable list names, in increasing order, exactly the obstacles flagged movable: the
+  // drawing walks the flags, and each flagged one reads the next movable pose of a frame.
+  size_t flagged = 0;
+  for (const RecordedObstacle& o : s.obstacles) flagged += o.movable ? 1 : 0;
+  if (flagged != movable) in.ok = false;
   for (uint32_t i = 0; i < movable && in.ok; ++i) {
     uint32_t k = in.U32();
-    if (k >= obstacles) in.ok = false;
+    if (k >= obstacles || !s.obstacles[k].movable || (i > 0 && k <= static_cast<uint32_t>(s.movable.back())))
+      in.ok = false;
     s.movable.push_back(static_cast<int>(k));
   }
   for (uint32_t i = 0; i < lights && in.ok; ++i) {

@@ -78,6 +78,29 @@ std::string TimeseriesCsv(const Timeseries& series) {
   return out;
 }
 
+bool WriteFailureSummary(const std::string& dir, const std::string& version, const std::string& experiment,
+                         const std::vector<std::string>& overrides, const Model* model, const std::string& message,
+                         std::string* error) {
+  Json s = Json::object();
+  s["essaim_version"] = version;
+  s["experiment"] = model ? model->file : experiment;
+  if (model) s["experiment_hash"] = "fnv1a64:" + model->file_hash;
+  s["overrides"] = overrides;
+  if (model) {
+    s["seed"] = static_cast<uint64_t>(model->experiment.seed);
+    s["ticks_per_second"] = model->experiment.ticks_per_second;
+    s["robots"] = model->robots.size();
+  }
+  s["ticks"] = 0;
+  s["status"] = "failed";
+  s["finished_by"] = "error";
+  s["controller_errors"] = Json::array();
+  s["failure"] = message;
+  s["outputs"] = Json::array({"summary.json"});
+  if (!MakeDirs(dir, error)) return false;
+  return WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(s), error);
+}
+
 bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Json* metrics, std::string* error) {
   std::vector<std::string> failed;  // this function's own failures, for `error`
   auto write = [&](const char* name, const std::string& content) {

@@ -37,9 +37,15 @@ def summary(tmp_path):
     return json.loads((tmp_path / "out" / "summary.json").read_text())
 
 
+# ASan's shadow memory reserves terabytes of address space: under the sanitizer build
+# (ESSAIM_SANITIZED=1) the run is checked without the 4 GiB limit; the Lua memory cap is
+# what keeps the hungry robot small either way.
+SANITIZED = os.environ.get("ESSAIM_SANITIZED") == "1"
+
+
 def test_misbehaving_robots_stop_and_the_run_goes_on(tmp_path):
     start = time.monotonic()
-    p = run([str(HERE / "misbehaving.argos")], tmp_path, preexec_fn=limit_address_space)
+    p = run([str(HERE / "misbehaving.argos")], tmp_path, preexec_fn=None if SANITIZED else limit_address_space)
     assert time.monotonic() - start < 60
     assert p.returncode == 0, p.stderr
     s = summary(tmp_path)

@@ -81,6 +81,23 @@ TEST(Ground, ImageOrientationBottomLeftIsArenaMinCorner) {
   }
 }
 
+// Found by fuzz_argos (UBSan): a robot 1e48 m from a far-off arena overflowed the
+// double-to-int cast of its floor cell. Anything outside reads the nearest edge.
+TEST(Ground, FarOrNonFinitePointsReadAnEdgePixel) {
+  FloorRaster f;
+  f.width = 2;
+  f.height = 1;
+  f.pixels = {Color{0, 0, 0, 255}, Color{255, 0, 0, 255}};
+  f.min = Vec2(-1, -1);
+  f.size = Vec2(2, 2);
+  EXPECT_EQ(f.At(-0.5, 0).r, 0);
+  EXPECT_EQ(f.At(0.5, 0).r, 255);
+  EXPECT_EQ(f.At(-8.9e48, 0).r, 0);
+  EXPECT_EQ(f.At(8.9e48, -8.9e48).r, 255);
+  EXPECT_EQ(f.At(std::nan(""), std::nan("")).r, 0);
+  EXPECT_EQ(f.At(1e300, 1e300).r, 255);
+}
+
 TEST(Ground, OffsetsTurnWithTheRobot) {
   // Straddling the black|grey border at x = −1: 5 cm into the grey pixel.
   TempDir d2;

@@ -260,5 +260,63 @@ TEST(Loader, MissingFloorImageAndExhaustedGridAreErrors) {
   EXPECT_NE(all.find("grid exhausted"), std::string::npos) << all;
 }
 
+// A loop-function floor is rasterised whole: a 10^6 m arena at 50 pixels/m used to end in
+// std::bad_alloc (abort) when the world was built.
+TEST(Loader, LoopFunctionFloorTooLargeToRasteriseIsAnError) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  d.Write("loop.lua", "function floor_color(x, y) return 0, 0, 0 end");
+  std::string xml = Experiment("<floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"50\"/>", kCtrl, 10, 1,
+                               "<loop_functions script=\"loop.lua\"/>");
+  const std::string size = "size=\"";
+  size_t a = xml.find(size, xml.find("<arena")) + size.size();
+  xml.replace(a, xml.find('"', a) - a, "1000000, 100, 1");
+  ErrorList e;
+  EXPECT_FALSE(LoadText(d, xml, &e));
+  EXPECT_NE(e.Format().find("<floor>: the floor would be 50000000 x 5000 pixels"), std::string::npos) << e.Format();
+}
+
+// Found by the CI fuzz pass (UBSan): layout="1e80,1,1" overflowed the double-to-int cast.
+TEST(Loader, GridLayoutOutOfIntRangeIsAnError) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  for (const char* layout : {"1e80,1,1", "-1e80,1,1", "1,0,1"}) {
+    std::string arena = std::string("<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"") +
+                        layout + "\"/><orientation method=\"constant\" values=\"0,0,0\"/>"
+                        "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+    ErrorList e;
+    EXPECT_FALSE(LoadText(d, Experiment(arena, kCtrl), &e)) << layout;
+    EXPECT_NE(e.Format().find("<position>: layout components must be > 0 (and at most 1000000)"), std::string::npos)
+        << e.Format();
+  }
+}
+
+// Found by fuzz_argos: Box2D keeps floats and asserts they are finite, so a position of
+// 1e39 m or an orientation of 1e300 degrees aborted the process when the world was built.
+TEST(Loader, FarPositionsAreErrorsAndHugeAnglesAreReduced) {
+  TempDir d;
+  d.Write("c.lua", "function step() end");
+  ErrorList e;
+  std::string arena = FootBot("far", 1e39, 0, 0, "c") +
+                      "<distribute><position method=\"uniform\" min=\"0,0,0\" max=\"1e300,1,0\"/>"
+                      "<orientation method=\"constant\" values=\"0,0,0\"/>"
+                      "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  EXPECT_FALSE(LoadText(d, Experiment(arena, kCtrl), &e));
+  std::string all = e.Format();
+  EXPECT_NE(all.find("<body>: position beyond 1e6 m from the origin"), std::string::npos) << all;
+  EXPECT_NE(all.find("<position>: position beyond 1e6 m from the origin"), std::string::npos) << all;
+
+  ErrorList e2;
+  auto m = LoadText(d, Experiment(FootBot("a", 0, 0, 1e300, "c") + FootBot("b", 1, 0, 450, "c") +
+                                  FootBot("c", -1, 0, 90, "c"), kCtrl), &e2);
+  ASSERT_TRUE(m) << e2.Format();
+  EXPECT_DOUBLE_EQ(m->robots[0].pose.yaw, DegToRad(std::fmod(1e300, 360.0)));
+  EXPECT_DOUBLE_EQ(m->robots[1].pose.yaw, DegToRad(90));
+  EXPECT_DOUBLE_EQ(m->robots[2].pose.yaw, DegToRad(90));
+  SimOptions opt;
+  std::string error;
+  EXPECT_TRUE(World::Create(*m, opt, &error)) << error;  // used to abort in b2Body's constructor
+}
+
 }  // namespace
 }  // namespace essaim

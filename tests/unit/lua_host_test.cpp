@@ -318,6 +318,18 @@ TEST(LoopFunctions, TimeseriesColumnsMustStayTheSame) {
   EXPECT_NE(f.find("timeseries: column 2 is 'b', expected 'a'"), std::string::npos) << f;
 }
 
+// The sanitizer build found the half-built row of a refused timeseries() call leaking
+// (luaL_error jumps over C++ destructors); a refused first row also left its first
+// columns behind, so every later good row was refused too.
+TEST(LoopFunctions, ARefusedTimeseriesRowLeavesNothingBehind) {
+  std::string f = LoopFailure(
+      "function post_step()\n"
+      "  if experiment.tick == 1 then assert(not pcall(experiment.timeseries, {{'tick', 1}, {'a'}})) end\n"
+      "  experiment.timeseries({{'tick', experiment.tick}, {'b', 2}})\n"
+      "end\n");
+  EXPECT_EQ(f, "");
+}
+
 TEST(LoopFunctions, FloorColorMustReturnAColour) {
   const std::string floor = "<floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"2\"/>";
   std::string f = LoopFailure("function floor_color(x, y) return 'plaid' end", floor);

@@ -81,6 +81,17 @@ TEST(RecordingDamage, NonFiniteOrHugeObstacleGeometryIsRefused) {
     }
 }
 
+// Found by fuzz_recording: an obstacle flagged movable that the movable list does not name
+// made the snapshot read a pose past the end of the frame (heap overflow).
+TEST(RecordingDamage, MovableFlagsMustMatchTheMovableList) {
+  TempDir d;
+  std::string b = RecordedBytes(d), error;
+  ASSERT_FALSE(b.empty());
+  b[FirstObstacleOffset(b) + 1] = 1;  // the fixed cylinder claims to be movable
+  EXPECT_FALSE(Parses(b, &error));
+  EXPECT_NE(error.find("corrupt"), std::string::npos) << error;
+}
+
 TEST(RecordingDamage, ArenaAndScaleMustBeFinite) {
   TempDir d;
   const std::string good = RecordedBytes(d);
