@@ -332,7 +332,10 @@ static int Run(RunArgs& r) {
     if (recorder.Finish(*world, &error)) info.outputs.push_back(kRecordingFile);
     else info.output_errors.push_back(error);
   }
-  if (memory_log.IsOpen()) info.outputs.push_back(kMemoryLogFile);
+  if (memory_log.IsOpen()) {
+    if (memory_log.Close(&error)) info.outputs.push_back(kMemoryLogFile);
+    else info.output_errors.push_back(error);
+  }
   std::vector<std::string> unwritten = info.output_errors;
   bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
   if (!all_written) unwritten.push_back(error);  // metrics, time series or summary

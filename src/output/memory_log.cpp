@@ -27,9 +27,12 @@ bool MemoryLog::Open(const std::string& path, uint64_t every, std::string* error
     *error = "cannot write " + path + ": " + std::strerror(errno);
     return false;
   }
+  path_ = path;
   every_ = every;
-  std::fputs("tick,rss_bytes,lua_bytes,lua_peak_bytes,loop_lua_bytes\n", file_);
-  std::fflush(file_);
+  write_errno_ = 0;
+  errno = 0;
+  if (std::fputs("tick,rss_bytes,lua_bytes,lua_peak_bytes,loop_lua_bytes\n", file_) < 0 || std::fflush(file_) != 0)
+    write_errno_ = errno ? errno : EIO;
   return true;
 }
 
@@ -44,7 +47,16 @@ void MemoryLog::Sample(const World& world) {
                static_cast<unsigned long long>(ResidentBytes()), static_cast<unsigned long long>(lua),
                static_cast<unsigned long long>(peak),
                static_cast<unsigned long long>(world.loop_functions.Memory().bytes));
-  std::fflush(file_);
+  if (std::fflush(file_) != 0 && write_errno_ == 0) write_errno_ = errno ? errno : EIO;
+}
+
+bool MemoryLog::Close(std::string* error) {
+  if (!file_) return true;
+  if (std::fclose(file_) != 0 && write_errno_ == 0) write_errno_ = errno ? errno : EIO;
+  file_ = nullptr;
+  if (write_errno_ == 0) return true;
+  *error = "cannot write " + path_ + ": " + std::strerror(write_errno_);
+  return false;
 }
 
 }  // namespace essaim

@@ -24,10 +24,15 @@ class MemoryLog {
   /// Appends a line when the world's tick is a multiple of `every` (no heap allocation).
   void Sample(const World& world);
   bool IsOpen() const { return file_ != nullptr; }
+  /// Closes the file; false, with the first write failure's reason (a full disk), when a
+  /// line could not be written.
+  bool Close(std::string* error);
 
  private:
   FILE* file_ = nullptr;
+  std::string path_;
   uint64_t every_ = 0;
+  int write_errno_ = 0;  // the first failed write's errno; 0 while all went through
 };
 
 /// Resident set size of this process in bytes (0 when /proc is not there).

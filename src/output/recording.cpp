@@ -602,17 +602,20 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
     o.id = in.Str();
     s.obstacles.push_back(o);
   }
-  // The movable list names, in increasing order, exactly the obstacles flagged movable: the
-  // drawing walks the flags, and each flagged one reads the next movable pose of a frame.
-  size_t flagged = 0;
+  // The movable list names obstacles in increasing order: every one flagged movable, and
+  // those added during the run (static or not), whose poses the frames hold too.
+  size_t flagged = 0, flagged_listed = 0;
   for (const RecordedObstacle& o : s.obstacles) flagged += o.movable ? 1 : 0;
-  if (flagged != movable) in.ok = false;
   for (uint32_t i = 0; i < movable && in.ok; ++i) {
     uint32_t k = in.U32();
-    if (k >= obstacles || !s.obstacles[k].movable || (i > 0 && k <= static_cast<uint32_t>(s.movable.back())))
+    if (k >= obstacles || (i > 0 && k <= static_cast<uint32_t>(s.movable.back()))) {
       in.ok = false;
+      break;
+    }
+    flagged_listed += s.obstacles[k].movable ? 1 : 0;
     s.movable.push_back(static_cast<int>(k));
   }
+  if (flagged_listed != flagged) in.ok = false;
   for (uint32_t i = 0; i < lights && in.ok; ++i) {
     RecordedLight l;
     double x = in.F32(), y = in.F32(), z = in.F32();

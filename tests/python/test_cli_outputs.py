@@ -221,10 +221,10 @@ def test_an_error_in_loop_function_init_is_a_failed_run_exit_1_with_a_summary(tm
     assert s["status"] == "failed" and s["ticks"] == 0 and "no food here" in s["failure"]
     c = run("check", exp, cwd=tmp_path)
     assert c.returncode == 1 and "no food here" in c.stderr
-    # A syntax error is still bad input: nothing ran, nothing written.
+    # A syntax error is still bad input (exit 2): nothing ran, and the summary says why.
     exp = loop_experiment(tmp_path, "function init(\n")
     r = run("run", exp, "--ticks", 5, "--quiet", "--out", tmp_path / "p", cwd=tmp_path)
-    assert r.returncode == 2 and not (tmp_path / "p" / "summary.json").exists()
+    assert r.returncode == 2 and summary(tmp_path / "p")["status"] == "failed"
 
 
 def test_timeseries_csv_quotes_names_and_warns_once_about_nan(tmp_path):

@@ -4,6 +4,8 @@ controller that does not load, a missing script or a bad floor image; 1 when the
 write an output (the recording, memory.csv)."""
 import json
 import os
+import resource
+import signal
 import shutil
 import subprocess
 from pathlib import Path
@@ -76,19 +78,23 @@ def test_bad_set_path(folder):
     assert s["overrides"] == ["arena.nothing.here=1"]
 
 
-def test_recording_that_cannot_be_written(folder):
-    (folder / "out" / "recording.bin").mkdir(parents=True)   # the final rename fails
-    r, s = run(folder, "tiny.argos", "--record")
-    assert r.returncode == 1, r.stderr
-    assert s["status"] == "failed" and "recording.bin" in s["failure"]
-    assert "recording.bin" not in s["outputs"] and s["ticks"] == 50
-    assert not [p for p in (folder / "out").iterdir() if ".tmp." in p.name]
-
-
-def test_memory_log_that_cannot_be_opened(folder):
-    (folder / "out" / "memory.csv").mkdir(parents=True)
+@pytest.mark.parametrize("name", ["recording.bin", "memory.csv"])
+def test_an_output_name_taken_by_a_folder_is_refused_before_the_run(folder, name):
+    (folder / "out" / name).mkdir(parents=True)   # it could never be written
     r, s = run(folder, "tiny.argos", "--record", "--memory-log", "5")
+    assert r.returncode == 2, r.stderr
+    assert name in r.stderr and "--out" in r.stderr
+    assert s is None and (folder / "out" / name).is_dir()
+
+
+def test_memory_log_that_cannot_be_written_fails_the_run_with_a_summary(folder):
+    def file_size_limit():  # writes past 4 KiB fail with EFBIG, as on a full disk
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
+    r = subprocess.run([ESSAIM, "run", "tiny.argos", "--ticks", "500", "--memory-log", "1", "-q", "--out", "out"],
+                       cwd=folder, capture_output=True, text=True, timeout=60, preexec_fn=file_size_limit)
     assert r.returncode == 1, r.stderr
-    assert_failed(s, "cannot write out/memory.csv")
-    assert s["ticks"] == 0
-    assert not [p for p in (folder / "out").iterdir() if ".tmp." in p.name]
+    assert "memory.csv: File too large" in r.stderr
+    s = json.loads((folder / "out" / "summary.json").read_text())
+    assert s["status"] == "failed" and "memory.csv" in s["failure"]
+    assert "memory.csv" not in s["outputs"] and s["ticks"] == 500
