@@ -29,7 +29,7 @@ const char* kXml = R"(<argos-configuration>
       <footbot_proximity implementation="default"/><footbot_distance_scanner implementation="rot_z_only"/>
       <range_and_bearing implementation="medium" medium="rab"/><footbot_turret_encoder implementation="default"/>
       <colored_blob_omnidirectional_camera implementation="rot_z_only" medium="leds"/></sensors>
-    <params/></lua_controller></controllers>
+    <params script="idle.lua"/></lua_controller></controllers>
   <arena size="4,4,1" center="0,0,0.5">
     <box id="w" size="0.1,4,0.5" movable="false"><body position="1.5,0,0" orientation="0,0,0"/></box>
     <cylinder id="o" radius="0.1" height="0.2" movable="true" mass="0.1"><body position="0.4,0,0" orientation="0,0,0"/></cylinder>
@@ -101,6 +101,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static std::unique_ptr<Model> model = [] {
     ErrorList errors;
     LoadOptions options;
+    options.working_dir = ESSAIM_FUZZ_DATA;  // idle.lua
     auto m = LoadExperimentText(kXml, "/nonexistent/fuzz.argos", options, &errors);
     if (!m) {
       std::fputs(errors.Format().c_str(), stderr);
