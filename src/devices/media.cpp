@@ -237,6 +237,26 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
         }
     }
     const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
+    const int k_near = static_cast<int>(m->rab_near.size());
+    if (occlusions && bodies_occlude) {
+      // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
+      // occluder only, so they are computed once per device here (same operations, so the
+      // same bits: the build has -ffp-contract=off).
+      m->rab_near_sx.resize(k_near);  // within the capacity InitMedia reserved
+      m->rab_near_sy.resize(k_near);
+      m->rab_near_cc.resize(k_near);
+      const double r2 = footbot::kRadius * footbot::kRadius;
+      for (int q = 0; q < k_near; ++q) {
+        const Vec2& xc = m->body_xy[m->rab_near[q]];
+        const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
+        m->rab_near_sx[q] = sx;
+        m->rab_near_sy[q] = sy;
+        m->rab_near_cc[q] = (sx * sx + sy * sy) - r2;
+      }
+    }
+    const double* near_sx = m->rab_near_sx.data();
+    const double* near_sy = m->rab_near_sy.data();
+    const double* near_cc = m->rab_near_cc.data();
     for (int b : m->rab_near) {
       if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
       const RobotDef& db = model.robots[b];
@@ -253,12 +273,25 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
         const double len = (xb - xa).norm();
         const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
         bool hidden = false;
-        if (bodies_occlude)
-          for (int c : m->rab_near)
-            if (c != b && CircleEntry(xa, xb, m->body_xy[c], footbot::kRadius) < t_b) {
-              hidden = true;
-              break;
+        if (bodies_occlude) {
+          // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
+          // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
+          const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
+          const double dd = dx * dx + dy * dy;
+          if (dd > 0)
+            for (int q = 0; q < k_near; ++q) {
+              const double cc = near_cc[q];
+              if (cc < 0) continue;  // a starts inside c: Box2D reports no hit
+              const double bq = near_sx[q] * dx + near_sy[q] * dy;
+              const double disc = bq * bq - dd * cc;
+              if (disc < 0) continue;
+              const double t = (bq - std::sqrt(disc)) / dd;
+              if (t >= 0 && t < t_b && m->rab_near[q] != b) {
+                hidden = true;
+                break;
+              }
             }
+        }
         if (!hidden)
           for (int k : m->rab_near_obstacles)
             if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
@@ -344,6 +377,9 @@ void InitMedia(const Model& model, Media* m) {
   m->rab_yaw.assign(n, 0);
   m->rab_near.clear();
   m->rab_near.reserve(n);
+  m->rab_near_sx.reserve(n);
+  m->rab_near_sy.reserve(n);
+  m->rab_near_cc.reserve(n);
   m->led_medium.assign(n, -1);
   m->camera_medium.assign(n, -1);
   m->rab_max_range = 0;
