@@ -237,26 +237,22 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
         }
     }
     const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
-    const int k_near = static_cast<int>(m->rab_near.size());
+    m->rab_occluders.clear();  // within the capacity InitMedia reserved
     if (occlusions && bodies_occlude) {
       // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
-      // occluder only, so they are computed once per device here (same operations, so the
-      // same bits: the build has -ffp-contract=off).
-      m->rab_near_sx.resize(k_near);  // within the capacity InitMedia reserved
-      m->rab_near_sy.resize(k_near);
-      m->rab_near_cc.resize(k_near);
+      // occluder only (same operations, so the same bits: the build has -ffp-contract=off).
+      // A body around the device (cc < 0) never hides anything: Box2D reports no hit for a
+      // ray starting inside. Sorted nearest first: see the cut-off in the pair loop.
       const double r2 = footbot::kRadius * footbot::kRadius;
-      for (int q = 0; q < k_near; ++q) {
-        const Vec2& xc = m->body_xy[m->rab_near[q]];
+      for (int c : m->rab_near) {
+        const Vec2& xc = m->body_xy[c];
         const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
-        m->rab_near_sx[q] = sx;
-        m->rab_near_sy[q] = sy;
-        m->rab_near_cc[q] = (sx * sx + sy * sy) - r2;
+        const double cc = (sx * sx + sy * sy) - r2;
+        if (cc >= 0) m->rab_occluders.push_back({cc, sx, sy, c});
       }
+      std::sort(m->rab_occluders.begin(), m->rab_occluders.end(),
+                [](const Media::NearBody& p, const Media::NearBody& q) { return p.cc < q.cc; });
     }
-    const double* near_sx = m->rab_near_sx.data();
-    const double* near_sy = m->rab_near_sy.data();
-    const double* near_cc = m->rab_near_cc.data();
     for (int b : m->rab_near) {
       if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
       const RobotDef& db = model.robots[b];
@@ -278,15 +274,18 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
           // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
           const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
           const double dd = dx * dx + dy * dy;
+          // A body entered before t_b has its centre closer to a than b's: |s| < len, so
+          // cc < dd - r². Occluders are nearest first, so the scan stops past that bound
+          // (with a relative margin far above rounding: the test itself stays exact).
+          const double cc_max = (dd - footbot::kRadius * footbot::kRadius) * (1 + 1e-9) + 1e-12;
           if (dd > 0)
-            for (int q = 0; q < k_near; ++q) {
-              const double cc = near_cc[q];
-              if (cc < 0) continue;  // a starts inside c: Box2D reports no hit
-              const double bq = near_sx[q] * dx + near_sy[q] * dy;
-              const double disc = bq * bq - dd * cc;
+            for (const Media::NearBody& o : m->rab_occluders) {
+              if (o.cc > cc_max) break;
+              const double bq = o.sx * dx + o.sy * dy;
+              const double disc = bq * bq - dd * o.cc;
               if (disc < 0) continue;
               const double t = (bq - std::sqrt(disc)) / dd;
-              if (t >= 0 && t < t_b && m->rab_near[q] != b) {
+              if (t >= 0 && t < t_b && o.body != b) {
                 hidden = true;
                 break;
               }
@@ -377,9 +376,8 @@ void InitMedia(const Model& model, Media* m) {
   m->rab_yaw.assign(n, 0);
   m->rab_near.clear();
   m->rab_near.reserve(n);
-  m->rab_near_sx.reserve(n);
-  m->rab_near_sy.reserve(n);
-  m->rab_near_cc.reserve(n);
+  m->rab_occluders.clear();
+  m->rab_occluders.reserve(n);
   m->led_medium.assign(n, -1);
   m->camera_medium.assign(n, -1);
   m->rab_max_range = 0;
