@@ -105,12 +105,15 @@ bool TimeRun(const Model& model, double* wall, double* cpu, StageTimes* times) {
 // readings (sim/bare_floor.h), with each stage's share of the wall time; and the same ratio
 // in CPU time, which a busy machine disturbs far less (at several threads the run's CPU
 // time is summed over them). With --repeat N, each number is the minimum of N runs (the
-// machine's noise only ever adds time).
+// machine's noise only ever adds time). Two floors: "floor" on Lua's stock allocator (bare
+// Lua 5.4: the ratio, wall/floor and cpu/floor), and "same" on the run's own
+// small-block pool (same Lua runtime as the run: what the simulator alone adds).
 const char* const kFloorDefaults[] = {"foraging-30", "foraging-100", "foraging-300", "avoidance-1000"};
 
 int BenchFloor(const BenchArgs& a) {
-  std::printf("%-16s %6s %3s %6s %10s %11s %10s %9s %9s %9s  %5s %5s %6s %5s %6s %5s %6s\n", "scenario", "robots",
-              "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor", "cpu-us/rs", "floor-cpu", "cpu/floor", "act%", "phys%", "media%", "loop%", "sense%", "lua%",
+  std::printf("%-16s %6s %3s %6s %10s %11s %10s %9s %9s %9s %9s %9s  %5s %5s %6s %5s %6s %5s %6s\n", "scenario",
+              "robots", "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor", "cpu-us/rs", "floor-cpu", "cpu/floor",
+              "same-cpu", "cpu/same", "act%", "phys%", "media%", "loop%", "sense%", "lua%",
               "other%");
   for (const Scenario& s : kScenarios) {
     const bool wanted = a.only.empty() ? std::find(std::begin(kFloorDefaults), std::end(kFloorDefaults),
@@ -119,7 +122,7 @@ int BenchFloor(const BenchArgs& a) {
     if (!wanted) continue;
     auto one = LoadScenario(a.dir, s, a.ticks, 1, a.strict);
     if (!one) return kExitBadInput;
-    double floor = 0, floor_cpu = 0;
+    double floor = 0, floor_cpu = 0, same_cpu = 0;
     long long steps = 0;
     for (int k = 0; k < a.repeat; ++k) {
       BareFloor f;
@@ -130,6 +133,7 @@ int BenchFloor(const BenchArgs& a) {
       }
       floor = k == 0 ? f.step_seconds : std::min(floor, f.step_seconds);
       floor_cpu = k == 0 ? f.step_cpu_seconds : std::min(floor_cpu, f.step_cpu_seconds);
+      same_cpu = k == 0 ? f.pool_step_cpu_seconds : std::min(same_cpu, f.pool_step_cpu_seconds);
       steps = f.robot_steps;
     }
     for (int threads : a.thread_counts) {
@@ -149,10 +153,10 @@ int BenchFloor(const BenchArgs& a) {
       }
       const double per = 1e6 / std::max<long long>(1, steps);
       const double pct = 100 / std::max(1e-12, wall);
-      std::printf("%-16s %6zu %3d %6lld %10.2f %11.2f %10.2f %9.2f %9.2f %9.2f  %5.1f %5.1f %6.1f %5.1f %6.1f %5.1f %6.1f\n",
+      std::printf("%-16s %6zu %3d %6lld %10.2f %11.2f %10.2f %9.2f %9.2f %9.2f %9.2f %9.2f  %5.1f %5.1f %6.1f %5.1f %6.1f %5.1f %6.1f\n",
                   s.name, model->robots.size(), threads, static_cast<long long>(model->experiment.length_ticks),
                   wall * per, floor * per, wall / std::max(1e-12, floor), cpu * per, floor_cpu * per,
-                  cpu / std::max(1e-12, floor_cpu), best.act * pct, best.physics * pct, best.media * pct,
+                  cpu / std::max(1e-12, floor_cpu), same_cpu * per, cpu / std::max(1e-12, same_cpu), best.act * pct, best.physics * pct, best.media * pct,
                   best.loop_functions * pct, best.sense * pct, best.control * pct, (wall - best.Total()) * pct);
       std::fflush(stdout);
     }

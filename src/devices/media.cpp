@@ -237,6 +237,22 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
         }
     }
     const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
+    m->rab_occluders.clear();  // within the capacity InitMedia reserved
+    if (occlusions && bodies_occlude) {
+      // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
+      // occluder only (same operations, so the same bits: the build has -ffp-contract=off).
+      // A body around the device (cc < 0) never hides anything: Box2D reports no hit for a
+      // ray starting inside. Sorted nearest first: see the cut-off in the pair loop.
+      const double r2 = footbot::kRadius * footbot::kRadius;
+      for (int c : m->rab_near) {
+        const Vec2& xc = m->body_xy[c];
+        const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
+        const double cc = (sx * sx + sy * sy) - r2;
+        if (cc >= 0) m->rab_occluders.push_back({cc, sx, sy, c});
+      }
+      std::sort(m->rab_occluders.begin(), m->rab_occluders.end(),
+                [](const Media::NearBody& p, const Media::NearBody& q) { return p.cc < q.cc; });
+    }
     for (int b : m->rab_near) {
       if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
       const RobotDef& db = model.robots[b];
@@ -253,12 +269,28 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
         const double len = (xb - xa).norm();
         const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
         bool hidden = false;
-        if (bodies_occlude)
-          for (int c : m->rab_near)
-            if (c != b && CircleEntry(xa, xb, m->body_xy[c], footbot::kRadius) < t_b) {
-              hidden = true;
-              break;
+        if (bodies_occlude) {
+          // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
+          // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
+          const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
+          const double dd = dx * dx + dy * dy;
+          // A body entered before t_b has its centre closer to a than b's: |s| < len, so
+          // cc < dd - r². Occluders are nearest first, so the scan stops past that bound
+          // (with a relative margin far above rounding: the test itself stays exact).
+          const double cc_max = (dd - footbot::kRadius * footbot::kRadius) * (1 + 1e-9) + 1e-12;
+          if (dd > 0)
+            for (const Media::NearBody& o : m->rab_occluders) {
+              if (o.cc > cc_max) break;
+              const double bq = o.sx * dx + o.sy * dy;
+              const double disc = bq * bq - dd * o.cc;
+              if (disc < 0) continue;
+              const double t = (bq - std::sqrt(disc)) / dd;
+              if (t >= 0 && t < t_b && o.body != b) {
+                hidden = true;
+                break;
+              }
             }
+        }
         if (!hidden)
           for (int k : m->rab_near_obstacles)
             if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
@@ -344,6 +376,8 @@ void InitMedia(const Model& model, Media* m) {
   m->rab_yaw.assign(n, 0);
   m->rab_near.clear();
   m->rab_near.reserve(n);
+  m->rab_occluders.clear();
+  m->rab_occluders.reserve(n);
   m->led_medium.assign(n, -1);
   m->camera_medium.assign(n, -1);
   m->rab_max_range = 0;

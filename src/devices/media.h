@@ -69,6 +69,13 @@ struct Media {
   std::vector<int> obstacle_stamp; // scratch: dedup of rab_near_obstacles
   int stamp = 0;
   std::vector<int> rab_near;       // scratch: bodies within reach of one device, ascending
+  /// A body that may hide a partner from one device: the parts of CircleEntry that do not
+  /// depend on the partner (offset s from the device, |s|² - r²), computed once per device.
+  struct NearBody {
+    double cc, sx, sy;
+    int body;
+  };
+  std::vector<NearBody> rab_occluders;  // scratch: nearest first (ascending cc)
   std::vector<int> rab_near_obstacles;  // scratch
   // ---- LEDs and cameras (spec §7.1, §7.2)
   std::vector<int> led_medium;     // per robot: its leds actuator's medium, -1 none

@@ -5,6 +5,7 @@
 #include "core/paths.h"
 #include "core/rng.h"
 #include "lua/lua_devices.h"
+#include "lua/lua_guard.h"
 #include "lua/lua_math_types.h"
 #include "lua/lua_random.h"
 
@@ -41,17 +42,27 @@ void SilenceActuators(lua_State* L, int robot) {
 }  // namespace
 
 BareController::~BareController() {
-  if (L_) lua_close(L_);
+  if (guard_) CloseGuardedState(guard_.get());
+  else if (L_) lua_close(L_);
 }
 
 bool BareController::Load(const Model& model, const RobotDef& def, int index, uint64_t experiment_seed,
-                          std::string* error) {
+                          std::string* error, BareAllocator allocator) {
   def_ = &def;
   controller_ = &model.controllers[def.controller];
   scratch_.index = index;
   scratch_.controller_rng.Seed(DeriveSeed(experiment_seed, StreamKind::Controller, static_cast<uint64_t>(index)));
   scratch_.cmd.rab_data.assign(def.rab_data_size, 0);
-  L_ = luaL_newstate();
+  if (allocator == BareAllocator::Pool) {
+    guard_ = std::make_unique<LuaGuard>();
+    LuaOptions unlimited;  // the allocator alone: no memory cap, budget or wall clock
+    unlimited.memory_limit = 0;
+    unlimited.instruction_limit = 0;
+    unlimited.wall_seconds = 0;
+    L_ = NewGuardedState(guard_.get(), unlimited);
+  } else {
+    L_ = luaL_newstate();
+  }
   lua_State* L = L_;
   if (!L) {
     *error = "robot " + def.id + ": cannot create a Lua state";

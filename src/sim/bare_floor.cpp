@@ -30,15 +30,24 @@ bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error) {
   }
   World& w = *world;
   const size_t n = model.robots.size();
-  std::vector<std::unique_ptr<BareController>> bare(n);
-  for (size_t i = 0; i < n; ++i) {
-    bare[i] = std::make_unique<BareController>();
-    if (!bare[i]->Load(model, model.robots[i], static_cast<int>(i), model.experiment.seed, error)) return false;
-    // init() sees what the real init() saw: the initial readings.
-    bare[i]->PushReadings(w.robots[i]);
-    if (!bare[i]->CallInit(error)) return false;
+  // Index 0: stock allocator, 1: the run's pool. Both replay the same readings.
+  std::vector<std::unique_ptr<BareController>> bare[2];
+  const BareAllocator allocators[2] = {BareAllocator::Stock, BareAllocator::Pool};
+  for (int a = 0; a < 2; ++a) {
+    bare[a].resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      auto& b = bare[a][i];
+      b = std::make_unique<BareController>();
+      if (!b->Load(model, model.robots[i], static_cast<int>(i), model.experiment.seed, error, allocators[a]))
+        return false;
+      // init() sees what the real init() saw: the initial readings.
+      b->PushReadings(w.robots[i]);
+      if (!b->CallInit(error)) return false;
+    }
   }
   *out = BareFloor();
+  double* wall[2] = {&out->step_seconds, &out->pool_step_seconds};
+  double* cpu[2] = {&out->step_cpu_seconds, &out->pool_step_cpu_seconds};
   for (;;) {
     const StepStatus status = Step(w);
     if (status == StepStatus::Failed) {
@@ -47,17 +56,21 @@ bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error) {
     }
     // Readings stay in RobotState after the step (the RAB payloads point at the senders'
     // applied data, unchanged until the next act): exactly what each step() saw.
-    for (size_t i = 0; i < n; ++i)
-      if (w.robots[i].alive && w.robots[i].controller_ok) bare[i]->PushReadings(w.robots[i]);
-    const double cpu_start = ThreadCpuSeconds();
-    const auto start = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < n; ++i) {
-      if (!w.robots[i].alive || !w.robots[i].controller_ok) continue;
-      if (!bare[i]->CallStep(error)) return false;
-      ++out->robot_steps;
+    // The two allocators alternate which goes first, so neither always gets the warm cache.
+    for (int k = 0; k < 2; ++k) {
+      const int a = (k + static_cast<int>(out->ticks)) % 2;
+      for (size_t i = 0; i < n; ++i)
+        if (w.robots[i].alive && w.robots[i].controller_ok) bare[a][i]->PushReadings(w.robots[i]);
+      const double cpu_start = ThreadCpuSeconds();
+      const auto start = std::chrono::steady_clock::now();
+      for (size_t i = 0; i < n; ++i) {
+        if (!w.robots[i].alive || !w.robots[i].controller_ok) continue;
+        if (!bare[a][i]->CallStep(error)) return false;
+        if (a == 0) ++out->robot_steps;
+      }
+      *wall[a] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      *cpu[a] += ThreadCpuSeconds() - cpu_start;
     }
-    out->step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out->step_cpu_seconds += ThreadCpuSeconds() - cpu_start;
     ++out->ticks;
     if (status == StepStatus::Finished) return true;
   }

@@ -60,7 +60,7 @@ double Global(lua_State* L, const char* name) {
   return v;
 }
 
-TEST(BareFloor, ReplayComputesWhatTheRunComputed) {
+void ExpectReplayComputesWhatTheRunComputed(BareAllocator allocator) {
   TempDir d;
   d.Write("checksum.lua", kChecksum);
   Scene s = Load(d, Scenario());
@@ -71,7 +71,8 @@ TEST(BareFloor, ReplayComputesWhatTheRunComputed) {
   std::string error;
   for (size_t i = 0; i < n; ++i) {
     bare.push_back(std::make_unique<BareController>());
-    ASSERT_TRUE(bare[i]->Load(*s.model, s.model->robots[i], static_cast<int>(i), s.model->experiment.seed, &error))
+    ASSERT_TRUE(
+        bare[i]->Load(*s.model, s.model->robots[i], static_cast<int>(i), s.model->experiment.seed, &error, allocator))
         << error;
     bare[i]->PushReadings(w.robots[i]);
     ASSERT_TRUE(bare[i]->CallInit(&error)) << error;
@@ -89,6 +90,13 @@ TEST(BareFloor, ReplayComputesWhatTheRunComputed) {
     EXPECT_EQ(Global(bare[i]->State(), "messages"), Global(real, "messages")) << "robot " << i;
     EXPECT_EQ(Global(bare[i]->State(), "sum"), Global(real, "sum")) << "robot " << i;  // bit-identical
   }
+}
+
+TEST(BareFloor, ReplayComputesWhatTheRunComputed) { ExpectReplayComputesWhatTheRunComputed(BareAllocator::Stock); }
+
+// The second floor, on the run's own allocator, must replay exactly the same work.
+TEST(BareFloor, ReplayOnTheRunsAllocatorComputesWhatTheRunComputed) {
+  ExpectReplayComputesWhatTheRunComputed(BareAllocator::Pool);
 }
 
 TEST(BareFloor, ActuatorsAreNoOpsInTheBareState) {
@@ -118,6 +126,9 @@ TEST(BareFloor, MeasureTimesEveryRobotStep) {
   EXPECT_EQ(f.ticks, 30);
   EXPECT_EQ(f.robot_steps, 30 * 6);
   EXPECT_GT(f.step_seconds, 0);
+  EXPECT_GT(f.step_cpu_seconds, 0);
+  EXPECT_GT(f.pool_step_seconds, 0);  // both floors measured
+  EXPECT_GT(f.pool_step_cpu_seconds, 0);
 }
 
 TEST(BareFloor, RobotsStoppedByAnErrorAreNotReplayed) {

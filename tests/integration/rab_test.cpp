@@ -3,6 +3,7 @@
 // lights its LEDs and a camera robot that reads the colour.
 #include <gtest/gtest.h>
 
+#include "devices/media.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -116,6 +117,47 @@ end
   // (those facing the watcher; its body hides the rest) and its beacon: 8 blobs, the first
   // one LED 5 at atan2 = 0.9945 rad.
   EXPECT_EQ(run->lines, std::vector<std::string>({"magenta at step 6 angle 0.995 blobs 8"}));
+}
+
+// The media stage's occlusion shortcuts (per-device offsets, nearest-first scan with a
+// distance cut-off, issue 12) must decide exactly what one CircleEntry per (pair, body)
+// decides: compare every inbox of a dense, moving crowd with that brute force.
+TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
+  TempDir d;
+  d.Write("spin.lua", "function init() end function step() robot.wheels.set_velocity(8, 3) end");
+  std::string bots;
+  for (int i = 0; i < 60; ++i)  // a 10 x 6 lattice, 0.3 m apart, jittered: many occluders
+    bots += Bot("b" + std::to_string(i), -1.4 + 0.3 * (i % 10) + 0.01 * (i % 3), -0.8 + 0.3 * (i / 10.0) - 0.02 * (i % 4),
+                "spin", "rab_range=\"1.2\"");
+  auto run = Start(d, Media(Experiment(bots, Controller("spin", "spin.lua"), 100)));
+  ASSERT_TRUE(run->s.ok()) << run->s.error;
+  World& w = *run->s.world;
+  const auto& m = w.media;
+  const int n = static_cast<int>(w.robots.size());
+  size_t heard = 0, hidden = 0;
+  for (int tick = 0; tick < 5; ++tick) {
+    RunTicks(w, 1);
+    for (int a = 0; a < n; ++a) {
+      std::vector<int> expect;
+      for (int b = 0; b < n; ++b) {
+        if (b == a) continue;
+        const int lo = std::min(a, b), hi = std::max(a, b);  // rays go from the lower index
+        const Vec2 xl = m.body_xy[lo], xh = m.body_xy[hi];
+        if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= run->s.model->robots[b].rab_range) continue;
+        const double len = (xh - xl).norm();
+        const double t_b = std::max(0.0, len - footbot::kRadius) / len;
+        bool blocked = false;
+        for (int c = 0; c < n && !blocked; ++c)
+          blocked = c != lo && c != hi && CircleEntry(xl, xh, m.body_xy[c], footbot::kRadius) < t_b;
+        if (blocked) ++hidden;
+        else expect.push_back(b);
+      }
+      heard += expect.size();
+      EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
+    }
+  }
+  EXPECT_GT(heard, 500u);  // a real crowd: many partners and many hidden ones
+  EXPECT_GT(hidden, 500u);
 }
 
 }  // namespace
