@@ -49,13 +49,15 @@ EntityHandle* ToEntityHandle(lua_State* L, int idx) {
   return ok ? static_cast<EntityHandle*>(p) : nullptr;
 }
 
+LoopFunctions* LoopFunctionsOf(lua_State* L) {
+  lua_rawgetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
+  auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
+  lua_pop(L, 1);
+  return lf;
+}
+
 struct LoopEntities {
-  static LoopFunctions* Self(lua_State* L) {
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
-    auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
-    lua_pop(L, 1);
-    return lf;
-  }
+  static LoopFunctions* Self(lua_State* L) { return LoopFunctionsOf(L); }
 
   /// The live entity behind argument 1: its ref and current index; raises otherwise.
   static int Resolve(lua_State* L, const char* what, LoopFunctions** lf, EntityRef* ref) {

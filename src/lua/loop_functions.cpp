@@ -16,12 +16,7 @@
 namespace essaim {
 
 struct LoopFunctionsAccess {
-  static LoopFunctions* Self(lua_State* L) {
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
-    auto* lf = static_cast<LoopFunctions*>(lua_touserdata(L, -1));
-    lua_pop(L, 1);
-    return lf;
-  }
+  static LoopFunctions* Self(lua_State* L) { return LoopFunctionsOf(L); }
   static int RobotIndex(lua_State* L) {
     EntityHandle* h = ToEntityHandle(L, 1);
     if (!h || h->ref.kind != EntityKind::FootBot) luaL_typeerror(L, 1, "robot handle");

@@ -16,6 +16,10 @@ struct EntityHandle {
 /// Registry keys (by address).
 extern const char kLoopSelfKey, kHandleMetaKey, kHandleCacheKey;
 
+class LoopFunctions;
+/// The loop functions that own `L` (kept in its registry under kLoopSelfKey).
+LoopFunctions* LoopFunctionsOf(lua_State* L);
+
 /// Pushes the handle of `e`, creating it (with `id`) on first use.
 void PushEntityHandle(lua_State* L, const EntityRef& e, const char* id);
 /// The handle at `idx`, or nullptr when it is not one.
