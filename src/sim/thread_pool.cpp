@@ -1,5 +1,7 @@
 #include "sim/thread_pool.h"
 
+#include <algorithm>
+
 namespace essaim {
 
 ThreadPool::ThreadPool(int threads) {
@@ -23,7 +25,26 @@ void Chunk(int n, int parts, int k, int* begin, int* end) {
 }
 }  // namespace
 
-void ThreadPool::Run(int n, Job job, void* ctx) {
+void ThreadPool::Work(int thread, Job job, void* ctx, int n, bool balanced) {
+  if (!balanced) {
+    int b, e;
+    Chunk(n, Size(), thread, &b, &e);
+    job(ctx, b, e);
+    return;
+  }
+  const int divisor = 4 * Size();
+  int b = next_.load(std::memory_order_relaxed);
+  for (;;) {
+    if (b >= n) return;
+    const int size = std::max(1, (n - b) / divisor);
+    // On failure b is reloaded with the current value and the range recomputed.
+    if (!next_.compare_exchange_weak(b, b + size, std::memory_order_relaxed)) continue;
+    job(ctx, b, b + size);
+    b = next_.load(std::memory_order_relaxed);
+  }
+}
+
+void ThreadPool::Run(int n, bool balanced, Job job, void* ctx) {
   if (workers_.empty()) {
     job(ctx, 0, n);
     return;
@@ -33,13 +54,13 @@ void ThreadPool::Run(int n, Job job, void* ctx) {
     job_ = job;
     ctx_ = ctx;
     n_ = n;
+    balanced_ = balanced;
+    next_.store(0, std::memory_order_relaxed);  // published to the workers by the mutex
     pending_ = static_cast<int>(workers_.size());
     ++generation_;
   }
   start_cv_.notify_all();
-  int b, e;
-  Chunk(n, Size(), 0, &b, &e);
-  job(ctx, b, e);
+  Work(0, job, ctx, n, balanced);
   std::unique_lock<std::mutex> lock(mutex_);
   done_cv_.wait(lock, [this] { return pending_ == 0; });
   job_ = nullptr;
@@ -51,6 +72,7 @@ void ThreadPool::WorkerLoop(int worker) {
     Job job;
     void* ctx;
     int n;
+    bool balanced;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       start_cv_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -59,10 +81,9 @@ void ThreadPool::WorkerLoop(int worker) {
       job = job_;
       ctx = ctx_;
       n = n_;
+      balanced = balanced_;
     }
-    int b, e;
-    Chunk(n, Size(), worker, &b, &e);
-    job(ctx, b, e);
+    Work(worker, job, ctx, n, balanced);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (--pending_ == 0) done_cv_.notify_one();
