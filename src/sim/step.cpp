@@ -44,7 +44,12 @@ StepStatus Step(World& w) {
   w.loop_functions.SetTick(w.tick);
 
   auto t0 = Clock::now();
-  for (int i = 0; i < n; ++i) ActRobot(m, m.robots[i], w.robots[i], w.physics);
+  // Each robot's wheels, scanner, LEDs and RAB payload: its own state and servo only.
+  auto act = [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) ActRobotOwnState(m, m.robots[i], w.robots[i], w.physics);
+  };
+  w.pool->ParallelFor(n, act);
+  for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
   auto t1 = Clock::now();
   w.physics.Step(dt, m.physics.iterations);
   for (int i = 0; i < n; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
