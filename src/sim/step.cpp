@@ -97,8 +97,8 @@ StepStatus Step(World& w) {
     w.chunk_times[static_cast<size_t>(begin)] = local;
   };
   // Balanced: robots cost different amounts (crowds, dead ones) and a thread may lose its
-  // core for a while; measured at 2 threads, equal static chunks left 1.6-2.1% of the
-  // stage's CPU time idle at the barrier on a quiet machine.
+  // core for a while; measured at 2 threads, equal static chunks differed by 1.6-2.1% in
+  // thread CPU time per tick (the faster thread then idles at the barrier).
   w.pool->ParallelForBalanced(n, work);
   for (World::ChunkTimes& t : w.chunk_times) {
     w.times.sense += t.sense;
