@@ -49,8 +49,9 @@ StepStatus Step(World& w) {
     for (int i = begin; i < end; ++i) ActRobotOwnState(m, m.robots[i], w.robots[i], w.physics);
   };
   // ~0.1 µs a robot against ~5-10 µs to wake the pool: threads pay off from a few hundred.
+  // Balanced: the tick does not wait for a worker slow to wake (it finds nothing left).
   constexpr int kParallelActMin = 256;
-  if (n >= kParallelActMin) w.pool->ParallelFor(n, act);
+  if (n >= kParallelActMin) w.pool->ParallelForBalanced(n, act);
   else act(0, n);
   for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
   auto t1 = Clock::now();

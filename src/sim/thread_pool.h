@@ -27,7 +27,9 @@ class ThreadPool {
   /// is free (OpenMP's "guided" schedule: each range is the remainder over 4 × Size(), at
   /// least one item). Robots cost different amounts (a crowd, a dead robot) and a thread
   /// may lose its core to another process: the others take up the slack instead of
-  /// waiting. f may be called any number of times per thread, never for the same item twice.
+  /// waiting. Returns once every item is done, without waiting for workers that have not
+  /// woken up yet (they find nothing left). f may be called any number of times per
+  /// thread, never for the same item twice.
   template <class F>
   void ParallelForBalanced(int n, F& f) {
     Run(n, /*balanced=*/true, [](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f);
@@ -36,8 +38,8 @@ class ThreadPool {
  private:
   using Job = void (*)(void*, int, int);
   void Run(int n, bool balanced, Job job, void* ctx);
-  /// One thread's share of the current loop: its static chunk, or ranges until none is left.
-  void Work(int thread, Job job, void* ctx, int n, bool balanced);
+  /// One thread's share of loop `generation`: its static chunk, or ranges until none is left.
+  void Work(int thread, long generation, Job job, void* ctx, int n, bool balanced);
   void WorkerLoop(int worker);
   std::vector<std::thread> workers_;
   std::mutex mutex_;
@@ -46,9 +48,13 @@ class ThreadPool {
   void* ctx_ = nullptr;
   int n_ = 0;
   bool balanced_ = false;
-  std::atomic<int> next_{0};  // balanced: first item not yet handed out
+  // Balanced loops: the loop's generation (high 32 bits) and the first item not yet handed
+  // out (low 32), claimed together so that a worker waking after its loop has ended can
+  // never take items of the next one; and the count of items finished.
+  std::atomic<unsigned long long> claim_{0};
+  std::atomic<int> done_items_{0};
   long generation_ = 0;
-  int pending_ = 0;
+  int pending_ = 0;  // static loops: workers still running their chunk
   bool stop_ = false;
 };
 

@@ -47,6 +47,31 @@ TEST(ThreadPool, EveryItemOnceAtAnyThreadCountAndSize) {
     }
 }
 
+TEST(ThreadPool, StaticAndBalancedLoopsInterleaveManyTimes) {
+  // A balanced loop returns without waiting for workers still asleep; one that wakes late
+  // must neither run items of a loop that has ended nor take those of the next one.
+  for (int threads : {2, 4}) {
+    ThreadPool pool(threads);
+    std::vector<int> count(300, 0);
+    int expected = 0;
+    auto f = [&](int b, int e) {
+      for (int i = b; i < e; ++i) ++count[i];  // items are disjoint: no lock needed
+    };
+    for (int rep = 0; rep < 2000; ++rep) {
+      const int n = (rep * 37) % 300;
+      if (rep % 3 == 0) pool.ParallelFor(n, f);
+      else pool.ParallelForBalanced(n, f);
+      if (n > 0) ++expected;  // item 0 is in every non-empty loop
+    }
+    int total = 0;
+    for (int rep = 0; rep < 2000; ++rep) total += (rep * 37) % 300;
+    int sum = 0;
+    for (int c : count) sum += c;
+    EXPECT_EQ(count[0], expected);
+    EXPECT_EQ(sum, total);
+  }
+}
+
 TEST(ThreadPool, BalancedRangesShrinkAsTheLoopEnds) {
   ThreadPool pool(2);
   std::vector<std::pair<int, int>> ranges;
