@@ -21,17 +21,28 @@ void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot
   if (const DeviceConfig* p = c.Find(DeviceType::PositioningSensor)) SensePositioning(*p, robot, physics);
 }
 
-void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics) {
+void ActRobotOwnState(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics) {
   const ControllerDef& c = model.controllers[def.controller];
   if (!robot.alive) return;
   for (const DeviceConfig& d : c.actuators) {
     switch (d.type) {
       case DeviceType::WheelsActuator: ActWheels(&d, robot, physics); break;
       case DeviceType::ScannerActuator: ActScanner(robot); break;
-      case DeviceType::GripperActuator: ActGripper(robot, physics); break;
-      case DeviceType::TurretActuator: ActTurret(robot, physics, model.experiment.TickLength()); break;
       case DeviceType::LedsActuator: ActLeds(robot); break;
       case DeviceType::RabActuator: ActRab(robot); break;
+      default: break;
+    }
+  }
+}
+
+void ActRobotJoints(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics) {
+  const ControllerDef& c = model.controllers[def.controller];
+  if (!robot.alive) return;
+  for (const DeviceConfig& d : c.actuators) {
+    switch (d.type) {
+      // The gripper reads the turret angle before the turret turns, as in one ordered pass.
+      case DeviceType::GripperActuator: ActGripper(robot, physics); break;
+      case DeviceType::TurretActuator: ActTurret(robot, physics, model.experiment.TickLength()); break;
       default: break;
     }
   }

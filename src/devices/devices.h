@@ -23,8 +23,15 @@ struct SenseContext {
 
 /// Called once when the World is built (noise biases, buffers, initial readings).
 void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics);
-/// Act stage for one robot: every actuator of its controller, in alphabetical tag order.
-void ActRobot(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
+/// Act stage for one robot, part one: the actuators that write only the robot's own state
+/// and its own wheel servo (wheels, scanner, LEDs, range-and-bearing). Safe to run for
+/// distinct robots on several threads at once.
+void ActRobotOwnState(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
+/// Part two: the actuators that add, remove or move joints in the shared physics world
+/// (gripper, then turret, in tag order). One thread, robots in index order, so joints are
+/// made in the same order at any thread count. The two parts touch disjoint state, so
+/// running all of part one first gives what one ordered pass per robot gives.
+void ActRobotJoints(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
 /// After physics: per-robot component updates (battery discharge, scanner rotation).
 void UpdateRobotComponents(const Model& model, const RobotDef& def, RobotState& robot,
                            const PhysicsWorld& physics, uint64_t tick);

@@ -58,6 +58,7 @@ class PhysicsWorld {
 
   /// Wheel speeds in m/s. The heading used is the body's at this call (ARGoS freezes it
   /// per tick). Both zero: the robot brakes, resisting pushes up to its force caps.
+  /// Writes only this robot's servo body: calls for distinct robots may run concurrently.
   void SetWheelSpeeds(int robot, double left, double right);
   /// One tick: `substeps` Box2D steps of dt/substeps.
   void Step(double dt, int substeps);

@@ -1,5 +1,8 @@
 #include "sim/thread_pool.h"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace essaim {
 
 ThreadPool::ThreadPool(int threads) {
@@ -23,25 +26,62 @@ void Chunk(int n, int parts, int k, int* begin, int* end) {
 }
 }  // namespace
 
-void ThreadPool::Run(int n, Job job, void* ctx) {
+namespace {
+using Claim = unsigned long long;
+Claim Pack(long generation, int next) {
+  return (static_cast<Claim>(static_cast<uint32_t>(generation)) << 32) | static_cast<uint32_t>(next);
+}
+}  // namespace
+
+void ThreadPool::Work(int thread, long generation, Job job, void* ctx, int n, bool balanced) {
+  if (!balanced) {
+    int b, e;
+    Chunk(n, Size(), thread, &b, &e);
+    job(ctx, b, e);
+    return;
+  }
+  const int divisor = 4 * Size();
+  const Claim tag = Pack(generation, 0);
+  Claim c = claim_.load(std::memory_order_relaxed);
+  for (;;) {
+    if ((c & ~Claim{0xffffffffu}) != tag) return;  // a later loop: this one is over
+    const int b = static_cast<int>(c & 0xffffffffu);
+    if (b >= n) return;
+    const int size = std::max(1, (n - b) / divisor);
+    // On failure c is reloaded with the current value and the range recomputed.
+    if (!claim_.compare_exchange_weak(c, c + static_cast<Claim>(size), std::memory_order_relaxed)) continue;
+    job(ctx, b, b + size);
+    // Release: the range's writes are visible to the thread that sees the count complete.
+    if (done_items_.fetch_add(size, std::memory_order_acq_rel) + size == n) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_cv_.notify_one();
+    }
+    c = claim_.load(std::memory_order_relaxed);
+  }
+}
+
+void ThreadPool::Run(int n, bool balanced, Job job, void* ctx) {
   if (workers_.empty()) {
     job(ctx, 0, n);
     return;
   }
+  long generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = job;
     ctx_ = ctx;
     n_ = n;
-    pending_ = static_cast<int>(workers_.size());
-    ++generation_;
+    balanced_ = balanced;
+    generation = ++generation_;
+    claim_.store(Pack(generation, 0), std::memory_order_relaxed);  // published by the mutex
+    done_items_.store(0, std::memory_order_relaxed);
+    pending_ = balanced ? 0 : static_cast<int>(workers_.size());
   }
   start_cv_.notify_all();
-  int b, e;
-  Chunk(n, Size(), 0, &b, &e);
-  job(ctx, b, e);
+  Work(0, generation, job, ctx, n, balanced);
   std::unique_lock<std::mutex> lock(mutex_);
-  done_cv_.wait(lock, [this] { return pending_ == 0; });
+  if (balanced) done_cv_.wait(lock, [&] { return done_items_.load(std::memory_order_acquire) == n; });
+  else done_cv_.wait(lock, [this] { return pending_ == 0; });
   job_ = nullptr;
 }
 
@@ -51,6 +91,7 @@ void ThreadPool::WorkerLoop(int worker) {
     Job job;
     void* ctx;
     int n;
+    bool balanced;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       start_cv_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -59,10 +100,10 @@ void ThreadPool::WorkerLoop(int worker) {
       job = job_;
       ctx = ctx_;
       n = n_;
+      balanced = balanced_;
     }
-    int b, e;
-    Chunk(n, Size(), worker, &b, &e);
-    job(ctx, b, e);
+    Work(worker, seen, job, ctx, n, balanced);
+    if (balanced) continue;  // the caller counts finished items, not workers
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (--pending_ == 0) done_cv_.notify_one();

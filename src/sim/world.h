@@ -82,7 +82,7 @@ class World {
   std::unique_ptr<ThreadPool> pool;
   /// Per-robot error text of the current tick (written by the robot's own thread).
   std::vector<std::string> pending_errors;
-  /// Stage time of each parallel chunk, indexed by its first robot (no shared writes).
+  /// Stage time of each parallel range, indexed by its first robot (no shared writes).
   struct ChunkTimes {
     double sense = 0, control = 0;
   };
