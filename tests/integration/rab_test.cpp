@@ -160,5 +160,53 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
   EXPECT_GT(hidden, 500u);
 }
 
+// The media stage routes devices on several threads (issue 12): a dense crowd that steers
+// by what it hears must get the same inboxes, message by message and tick by tick, with
+// 1, 2 and 3 threads (and so the same poses).
+TEST(RabIntegration, CrowdInboxesDoNotDependOnThreads) {
+  TempDir d;
+  d.Write("chat.lua", R"(
+function init() end
+function step()
+  local n, sum = #robot.range_and_bearing, 0
+  for i = 1, n do sum = sum + robot.range_and_bearing[i].data[1] end
+  robot.range_and_bearing.set_data(1, (sum + n) % 256)
+  robot.wheels.set_velocity(4 + n % 7, 4 + sum % 5)
+end
+)");
+  std::string bots;
+  for (int i = 0; i < 240; ++i)  // a 20 x 12 lattice, 0.35 m apart, jittered
+    bots += Bot("c" + std::to_string(i), -3.3 + 0.35 * (i % 20) + 0.013 * (i % 7), -2 + 0.35 * (i / 20) - 0.011 * (i % 5),
+                "chat", "rab_range=\"2\"");
+  const std::string xml = Media(Experiment(bots, Controller("chat", "chat.lua"), 100));
+  std::vector<std::vector<std::vector<int>>> inboxes[3];  // [threads - 1][tick][robot]
+  std::vector<Vec2> poses[3];
+  for (int k = 0; k < 3; ++k) {
+    SimOptions sim;
+    sim.threads = k + 1;
+    Scene s = Load(d, xml, {}, sim);
+    ASSERT_TRUE(s.ok()) << s.error;
+    for (int tick = 0; tick < 8; ++tick) {
+      RunTicks(*s.world, 1);
+      inboxes[k].push_back(s.world->media.rab_inbox);
+    }
+    EXPECT_TRUE(s.world->controller_errors.empty());
+    poses[k] = s.world->media.body_xy;
+  }
+  size_t heard = 0;
+  for (const auto& tick : inboxes[0])
+    for (const auto& inbox : tick) heard += inbox.size();
+  EXPECT_GT(heard, 8u * 240 * 10);  // a real crowd: ten or more partners each on average
+  for (int k = 1; k < 3; ++k) {
+    for (size_t tick = 0; tick < inboxes[0].size(); ++tick)
+      for (size_t r = 0; r < inboxes[0][tick].size(); ++r)
+        ASSERT_EQ(inboxes[k][tick][r], inboxes[0][tick][r]) << (k + 1) << " threads, tick " << tick << ", robot " << r;
+    for (size_t r = 0; r < poses[0].size(); ++r) {  // bit for bit
+      EXPECT_EQ(poses[k][r].x(), poses[0][r].x()) << (k + 1) << " threads, robot " << r;
+      EXPECT_EQ(poses[k][r].y(), poses[0][r].y()) << (k + 1) << " threads, robot " << r;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace essaim
