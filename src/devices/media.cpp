@@ -265,18 +265,16 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
       const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
       const double cc = (sx * sx + sy * sy) - r2;
       if (cc < 0) continue;
-      sc.unsorted.push_back({cc, sx, sy, c});
       const double q = cc * per_bucket;
-      ++sc.bucket_end[q < kBuckets ? static_cast<int>(q) : kBuckets - 1];
+      const int bucket = q < kBuckets ? static_cast<int>(q) : kBuckets - 1;
+      sc.unsorted.push_back({cc, sx, sy, c, bucket});
+      ++sc.bucket_end[bucket];
     }
     for (int k = 1; k < kBuckets; ++k) sc.bucket_end[k] += sc.bucket_end[k - 1];
     n_occ = static_cast<int>(sc.unsorted.size());
     sc.bucket_end[kBuckets] = n_occ;
     // Fill backwards; bucket_end[k] ends as bucket k's start, so shift into ends after.
-    for (int i = n_occ - 1; i >= 0; --i) {
-      const double q = sc.unsorted[i].cc * per_bucket;
-      sc.occluders[--sc.bucket_end[q < kBuckets ? static_cast<int>(q) : kBuckets - 1]] = sc.unsorted[i];
-    }
+    for (int i = n_occ - 1; i >= 0; --i) sc.occluders[--sc.bucket_end[sc.unsorted[i].bucket]] = sc.unsorted[i];
     for (int k = 0; k < kBuckets; ++k) sc.bucket_end[k] = sc.bucket_end[k + 1];
   }
   for (int b : sc.near) {
@@ -319,12 +317,17 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
             }
           }
       }
-      if (!hidden)
-        for (int k : sc.near_obstacles)
+      if (!hidden && !sc.near_obstacles.empty()) {
+        const Vec2 lo = xa.cwiseMin(xb), hi = xa.cwiseMax(xb);
+        for (int k : sc.near_obstacles) {
+          const Vec2 &olo = m->obstacle_lo[k], &ohi = m->obstacle_hi[k];
+          if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
           if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
             hidden = true;
             break;
           }
+        }
+      }
       if (hidden) continue;
     }
     out.push_back(b << 2 | static_cast<int>(a_hears_b) | static_cast<int>(b_hears_a) << 1);
@@ -477,6 +480,8 @@ void InitMedia(const Model& model, Media* m) {
   m->obstacle_xy.assign(n_obs, Vec2::Zero());
   m->obstacle_cs.assign(n_obs, Vec2(1, 0));
   m->obstacle_radius.assign(n_obs, 0);
+  m->obstacle_lo.assign(n_obs, Vec2::Zero());
+  m->obstacle_hi.assign(n_obs, Vec2::Zero());
   m->obstacle_top.assign(n_obs, 0);
   m->obstacle_led_medium.assign(n_obs, -1);
   m->obstacle_max_radius = 0;
@@ -534,6 +539,16 @@ void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vec
       const Pose2 p = physics.ObstaclePose(static_cast<int>(k));
       m->obstacle_xy[k] = Vec2(p.x, p.y);
       m->obstacle_cs[k] = Vec2(std::cos(p.yaw), std::sin(p.yaw));
+      const ObstacleDef& o = model.obstacles[k];
+      const Vec2& cs = m->obstacle_cs[k];
+      const Vec2 half = o.kind == ShapeKind::Cylinder
+                            ? Vec2(o.radius, o.radius)
+                            : Vec2(std::abs(cs.x()) * o.size_x / 2 + std::abs(cs.y()) * o.size_y / 2,
+                                   std::abs(cs.y()) * o.size_x / 2 + std::abs(cs.x()) * o.size_y / 2);
+      // Rounding in BoxEntry/CircleEntry is ~1e-16 of the coordinates: 1e-9 is ample.
+      const Vec2 margin = (half + m->obstacle_xy[k].cwiseAbs()) * 1e-9 + Vec2(1e-9, 1e-9);
+      m->obstacle_lo[k] = m->obstacle_xy[k] - half - margin;
+      m->obstacle_hi[k] = m->obstacle_xy[k] + half + margin;
     }
   }
   if (rab && RabBegin(robots, m)) {

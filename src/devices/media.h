@@ -55,6 +55,9 @@ struct Media {
   std::vector<Vec2> obstacle_xy;   // every box/cylinder centre
   std::vector<Vec2> obstacle_cs;   // cos, sin of its yaw
   std::vector<double> obstacle_radius;  // bounding circle (m)
+  /// Bounding box of each footprint this tick, widened far beyond rounding: a segment whose
+  /// box misses it cannot enter the obstacle (skips the exact test, same answer).
+  std::vector<Vec2> obstacle_lo, obstacle_hi;
   std::vector<double> obstacle_top;     // m
   double obstacle_max_radius = 0;
   // ---- range and bearing (spec §5)
@@ -71,6 +74,7 @@ struct Media {
   struct NearBody {
     double cc, sx, sy;
     int body;
+    int bucket;  // of cc, see RabPartners
   };
   /// One thread's working buffers for the devices it routes (sized once, reused).
   struct RabScratch {
