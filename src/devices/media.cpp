@@ -552,7 +552,8 @@ void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vec
     }
   }
   if (rab && RabBegin(robots, m)) {
-    const int slots = runner.run ? std::max(1, runner.slots) : 1;
+    // A few devices are not worth waking the threads for (the result is the same).
+    const int slots = runner.run && m->rab_devices >= 64 ? std::max(1, runner.slots) : 1;
     if (static_cast<int>(m->rab_scratch.size()) < slots) {  // first tick: allocates once
       m->rab_scratch.resize(slots);
       for (Media::RabScratch& sc : m->rab_scratch) SizeRabScratch(model, &sc);
