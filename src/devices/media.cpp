@@ -1,9 +1,11 @@
-// Media stage (spec §12 step 4): after physics, single-threaded, before any robot senses.
+// Media stage (spec §12 step 4): after physics, before any robot senses.
 // Range and bearing: who hears whom. Candidates come from a uniform grid of all robot
 // bodies with cells of the largest rab_range (a device looks at the 3x3 cells around it:
 // never all pairs). Occlusion uses exact circle and box tests against the bodies and
 // obstacles near the device: what one Box2D ray per pair would find, without walking
-// Box2D's tree for every pair.
+// Box2D's tree for every pair. Devices are routed in parallel (each lists its partners
+// b > a with its thread's scratch), then one serial pass fills the inboxes in ascending a:
+// the same inboxes, in the same order, at any thread count.
 // LEDs: the lit LEDs of robots, boxes/cylinders and <light>s, bucketed in a grid that
 // the cameras query, plus grids of bodies and obstacles for their occlusion rays.
 // Every buffer is sized by InitMedia; a tick allocates nothing.
@@ -184,7 +186,8 @@ int MediumIndex(const std::vector<Def>& media, const std::string& id) {
 /// ARGoS compares colours with alpha: only (0,0,0,255) is "black", i.e. off (spec §7.1).
 bool LedOff(const Color& c) { return c == Color(); }
 
-void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media* m) {
+/// Serial part before the devices: members, grids. False when nobody can hear anybody.
+bool RabBegin(const std::vector<RobotState>& robots, Media* m) {
   const int n = static_cast<int>(robots.size());
   int count = 0;
   for (int i = 0; i < n; ++i) {
@@ -192,117 +195,183 @@ void UpdateRab(const Model& model, const std::vector<RobotState>& robots, Media*
     m->rab_member[i] = m->rab_medium[i] >= 0 && robots[i].alive;
     count += m->rab_member[i];
   }
-  if (count < 2) return;
-  PointGrid& g = m->rab_grid;
-  g.Build(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
+  if (count < 2) return false;
+  m->rab_grid.Build(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
   const int n_obs = static_cast<int>(m->obstacle_xy.size());
   if (n_obs > 0)
     m->rab_obstacle_grid.BuildDiscs(n_obs, [&](int k) { return m->obstacle_xy[k]; },
                                     [&](int k) { return m->obstacle_radius[k]; });
+  return true;
+}
+
+/// Device a's unhidden partners b > a into m->rab_partners[a]. Reads the shared media,
+/// writes only a's list and the scratch: devices run concurrently.
+void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
+  std::vector<int>& out = m->rab_partners[a];
+  out.clear();
+  if (!m->rab_member[a]) return;
+  const PointGrid& g = m->rab_grid;
+  const int n_obs = static_cast<int>(m->obstacle_xy.size());
+  const Vec3& pa = m->rab_pos[a];
+  const Vec2 xa = pa.head<2>();
+  const RobotDef& da = model.robots[a];
+  const bool occlusions = model.rab_media[m->rab_medium[a]].check_occlusions;
   const double reach = m->rab_max_range;
   const double near = reach + footbot::kRadius;  // a body touching a segment from a is this close
-  for (int a = 0; a < n; ++a) {
-    if (!m->rab_member[a]) continue;
-    const Vec3& pa = m->rab_pos[a];
-    const Vec2 xa = pa.head<2>();
-    const RobotDef& da = model.robots[a];
-    const bool occlusions = model.rab_media[m->rab_medium[a]].check_occlusions;
-    // Bodies near a, ascending: the candidate partners (members after a) and the possible
-    // occluders. Sorted, so every inbox ends up in sender order (spec §5.3).
-    m->rab_near.clear();
-    for (int cy = g.CellY(xa.y() - near), y1 = g.CellY(xa.y() + near); cy <= y1; ++cy)
-      for (int cx = g.CellX(xa.x() - near), x1 = g.CellX(xa.x() + near); cx <= x1; ++cx) {
-        const int c = cy * g.nx + cx;
-        for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
-          const int j = g.items[s];
-          if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) m->rab_near.push_back(j);
+  // Bodies near a: the candidate partners (members after a) and the possible occluders.
+  // Any order: the partners are sorted at the end (fewer of them).
+  sc.near.clear();
+  for (int cy = g.CellY(xa.y() - near), y1 = g.CellY(xa.y() + near); cy <= y1; ++cy)
+    for (int cx = g.CellX(xa.x() - near), x1 = g.CellX(xa.x() + near); cx <= x1; ++cx) {
+      const int c = cy * g.nx + cx;
+      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+        const int j = g.items[s];
+        if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) sc.near.push_back(j);
+      }
+    }
+  sc.near_obstacles.clear();
+  if (occlusions && n_obs > 0) {
+    const PointGrid& og = m->rab_obstacle_grid;  // obstacles sit in every cell they overlap
+    ++sc.stamp;
+    for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1; ++cy)
+      for (int cx = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach); cx <= x1; ++cx) {
+        const int c = cy * og.nx + cx;
+        for (int s = og.cell_start[c]; s < og.cell_start[c + 1]; ++s) {
+          const int k = og.items[s];
+          if (sc.obstacle_stamp[k] == sc.stamp) continue;
+          sc.obstacle_stamp[k] = sc.stamp;
+          const ObstacleDef& o = model.obstacles[k];
+          if (pa.z() >= o.z && pa.z() <= o.z + o.height && ObstacleDistance(o, *m, k, xa) <= reach)
+            sc.near_obstacles.push_back(k);
         }
       }
-    std::sort(m->rab_near.begin(), m->rab_near.end());
-    m->rab_near_obstacles.clear();
-    if (occlusions && n_obs > 0) {
-      const PointGrid& og = m->rab_obstacle_grid;  // obstacles sit in every cell they overlap
-      ++m->stamp;
-      for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1; ++cy)
-        for (int cx = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach); cx <= x1; ++cx) {
-          const int c = cy * og.nx + cx;
-          for (int s = og.cell_start[c]; s < og.cell_start[c + 1]; ++s) {
-            const int k = og.items[s];
-            if (m->obstacle_stamp[k] == m->stamp) continue;
-            m->obstacle_stamp[k] = m->stamp;
-            const ObstacleDef& o = model.obstacles[k];
-            if (pa.z() >= o.z && pa.z() <= o.z + o.height && ObstacleDistance(o, *m, k, xa) <= reach)
-              m->rab_near_obstacles.push_back(k);
-          }
-        }
+  }
+  const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
+  // Occluders bucketed by cc (a counting sort, not a comparison sort): a pair only scans
+  // the buckets up to its cut-off (see the pair loop), nearest first.
+  constexpr int kBuckets = Media::kOccluderBuckets;
+  const double per_bucket = kBuckets / (near * near);  // cc < near²
+  int n_occ = 0;
+  if (occlusions && bodies_occlude) {
+    // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
+    // occluder only (same operations, so the same bits: the build has -ffp-contract=off).
+    // A body around the device (cc < 0) never hides anything: Box2D reports no hit for a
+    // ray starting inside.
+    const double r2 = footbot::kRadius * footbot::kRadius;
+    std::fill(sc.bucket_end.begin(), sc.bucket_end.end(), 0);
+    sc.unsorted.clear();  // within the capacity reserved by UpdateMedia
+    for (int c : sc.near) {
+      const Vec2& xc = m->body_xy[c];
+      const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
+      const double cc = (sx * sx + sy * sy) - r2;
+      if (cc < 0) continue;
+      const double q = cc * per_bucket;
+      const int bucket = q < kBuckets ? static_cast<int>(q) : kBuckets - 1;
+      sc.unsorted.push_back({cc, sx, sy, c, bucket});
+      ++sc.bucket_end[bucket];
     }
-    const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
-    m->rab_occluders.clear();  // within the capacity InitMedia reserved
-    if (occlusions && bodies_occlude) {
-      // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
-      // occluder only (same operations, so the same bits: the build has -ffp-contract=off).
-      // A body around the device (cc < 0) never hides anything: Box2D reports no hit for a
-      // ray starting inside. Sorted nearest first: see the cut-off in the pair loop.
-      const double r2 = footbot::kRadius * footbot::kRadius;
-      for (int c : m->rab_near) {
-        const Vec2& xc = m->body_xy[c];
-        const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
-        const double cc = (sx * sx + sy * sy) - r2;
-        if (cc >= 0) m->rab_occluders.push_back({cc, sx, sy, c});
-      }
-      std::sort(m->rab_occluders.begin(), m->rab_occluders.end(),
-                [](const Media::NearBody& p, const Media::NearBody& q) { return p.cc < q.cc; });
-    }
-    for (int b : m->rab_near) {
-      if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
-      const RobotDef& db = model.robots[b];
-      if (m->rab_medium[b] != m->rab_medium[a] || db.rab_data_size != da.rab_data_size) continue;
-      const Vec3& pb = m->rab_pos[b];
-      const double d = (pb - pa).norm();
-      const bool a_hears_b = d < db.rab_range;  // the sender's range, strict (spec §5.2)
-      const bool b_hears_a = d < da.rab_range;
-      if (!a_hears_b && !b_hears_a) continue;
-      if (occlusions) {
-        // The first body along a -> b's centre must be b's (spec §5.2): anything entered
-        // before b's circle hides it.
-        const Vec2 xb = pb.head<2>();
-        const double len = (xb - xa).norm();
-        const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
-        bool hidden = false;
-        if (bodies_occlude) {
-          // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
-          // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
-          const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
-          const double dd = dx * dx + dy * dy;
-          // A body entered before t_b has its centre closer to a than b's: |s| < len, so
-          // cc < dd - r². Occluders are nearest first, so the scan stops past that bound
-          // (with a relative margin far above rounding: the test itself stays exact).
-          const double cc_max = (dd - footbot::kRadius * footbot::kRadius) * (1 + 1e-9) + 1e-12;
-          if (dd > 0)
-            for (const Media::NearBody& o : m->rab_occluders) {
-              if (o.cc > cc_max) break;
-              const double bq = o.sx * dx + o.sy * dy;
-              const double disc = bq * bq - dd * o.cc;
-              if (disc < 0) continue;
-              const double t = (bq - std::sqrt(disc)) / dd;
-              if (t >= 0 && t < t_b && o.body != b) {
-                hidden = true;
-                break;
-              }
-            }
-        }
-        if (!hidden)
-          for (int k : m->rab_near_obstacles)
-            if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
+    for (int k = 1; k < kBuckets; ++k) sc.bucket_end[k] += sc.bucket_end[k - 1];
+    n_occ = static_cast<int>(sc.unsorted.size());
+    sc.bucket_end[kBuckets] = n_occ;
+    // Fill backwards; bucket_end[k] ends as bucket k's start, so shift into ends after.
+    for (int i = n_occ - 1; i >= 0; --i) sc.occluders[--sc.bucket_end[sc.unsorted[i].bucket]] = sc.unsorted[i];
+    for (int k = 0; k < kBuckets; ++k) sc.bucket_end[k] = sc.bucket_end[k + 1];
+  }
+  for (int b : sc.near) {
+    if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
+    const RobotDef& db = model.robots[b];
+    if (m->rab_medium[b] != m->rab_medium[a] || db.rab_data_size != da.rab_data_size) continue;
+    const Vec3& pb = m->rab_pos[b];
+    const double d = (pb - pa).norm();
+    const bool a_hears_b = d < db.rab_range;  // the sender's range, strict (spec §5.2)
+    const bool b_hears_a = d < da.rab_range;
+    if (!a_hears_b && !b_hears_a) continue;
+    if (occlusions) {
+      // The first body along a -> b's centre must be b's (spec §5.2): anything entered
+      // before b's circle hides it.
+      const Vec2 xb = pb.head<2>();
+      const double len = (xb - xa).norm();
+      const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+      bool hidden = false;
+      if (bodies_occlude) {
+        // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
+        // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
+        const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
+        const double dd = dx * dx + dy * dy;
+        // A body entered before t_b has its centre closer to a than b's: |s| < len, so
+        // cc < dd - r². The scan stops after the bucket of that bound (with a relative
+        // margin far above rounding: the test itself stays exact; scanning more is safe).
+        const double cc_max = (dd - footbot::kRadius * footbot::kRadius) * (1 + 1e-9) + 1e-12;
+        const double q = cc_max * per_bucket;  // monotone in cc: its bucket bounds theirs
+        const int limit = !(q >= 0) ? 0 : q < kBuckets ? sc.bucket_end[static_cast<int>(q)] : n_occ;
+        if (dd > 0)
+          for (int i = 0; i < limit; ++i) {
+            const Media::NearBody& o = sc.occluders[i];
+            const double bq = o.sx * dx + o.sy * dy;
+            const double disc = bq * bq - dd * o.cc;
+            if (disc < 0) continue;
+            const double t = (bq - std::sqrt(disc)) / dd;
+            if (t >= 0 && t < t_b && o.body != b) {
               hidden = true;
               break;
             }
-        if (hidden) continue;
+          }
       }
-      if (a_hears_b) m->rab_inbox[a].push_back(b);
-      if (b_hears_a) m->rab_inbox[b].push_back(a);
+      if (!hidden && !sc.near_obstacles.empty()) {
+        const Vec2 lo = xa.cwiseMin(xb), hi = xa.cwiseMax(xb);
+        for (int k : sc.near_obstacles) {
+          const Vec2 &olo = m->obstacle_lo[k], &ohi = m->obstacle_hi[k];
+          if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
+          if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
+            hidden = true;
+            break;
+          }
+        }
+      }
+      if (hidden) continue;
     }
+    out.push_back(b << 2 | static_cast<int>(a_hears_b) | static_cast<int>(b_hears_a) << 1);
   }
+  std::sort(out.begin(), out.end());  // by b: every inbox ends up in sender order (spec §5.3)
+}
+
+/// Serial part after the devices: partners into inboxes in ascending a, so inbox r lists
+/// its senders a < r (appended as a rises) then its own partners b > r, ascending.
+void RabDeliver(Media* m) {
+  const int n = static_cast<int>(m->rab_partners.size());
+  for (int a = 0; a < n; ++a)
+    for (int e : m->rab_partners[a]) {
+      const int b = e >> 2;
+      if (e & 1) m->rab_inbox[a].push_back(b);
+      if (e & 2) m->rab_inbox[b].push_back(a);
+    }
+}
+
+/// Sizes a slot's scratch for the model (first tick, or after InitMedia).
+void SizeRabScratch(const Model& model, Media::RabScratch* sc) {
+  const size_t n = model.robots.size(), n_obs = model.obstacles.size();
+  sc->near.reserve(n);
+  sc->unsorted.reserve(n);
+  sc->occluders.resize(n);
+  sc->bucket_end.assign(Media::kOccluderBuckets + 1, 0);
+  sc->near_obstacles.reserve(n_obs);
+  sc->obstacle_stamp.assign(n_obs, 0);
+  sc->stamp = 0;
+}
+
+struct RabJob {
+  const Model* model;
+  Media* media;
+  int slots;
+};
+
+void RabSlot(void* ctx, int slot) {
+  const RabJob& job = *static_cast<const RabJob*>(ctx);
+  Media::RabScratch& sc = job.media->rab_scratch[slot];
+  const int n = static_cast<int>(job.media->rab_partners.size());
+  // Interleaved devices: low indices have more partners b > a, so contiguous ranges would
+  // not balance. Which slot routes a device does not change its list.
+  for (int a = slot; a < n; a += job.slots) RabPartners(*job.model, job.media, a, sc);
 }
 
 void UpdateLeds(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
@@ -374,10 +443,8 @@ void InitMedia(const Model& model, Media* m) {
   m->rab_member.assign(n, 0);
   m->rab_pos.assign(n, Vec3::Zero());
   m->rab_yaw.assign(n, 0);
-  m->rab_near.clear();
-  m->rab_near.reserve(n);
-  m->rab_occluders.clear();
-  m->rab_occluders.reserve(n);
+  m->rab_partners.resize(n);
+  m->rab_scratch.clear();  // sized by UpdateMedia for its runner's slots
   m->led_medium.assign(n, -1);
   m->camera_medium.assign(n, -1);
   m->rab_max_range = 0;
@@ -394,6 +461,7 @@ void InitMedia(const Model& model, Media* m) {
         ++rab_count;
         m->rab_max_range = std::max(m->rab_max_range, def.rab_range);
         if (m->rab_inbox[i].capacity() < 16) m->rab_inbox[i].reserve(std::min<size_t>(n, 64));
+        if (m->rab_partners[i].capacity() < 16) m->rab_partners[i].reserve(std::min<size_t>(n, 64));
       }
     }
     if (const DeviceConfig* d = c.Find(DeviceType::LedsActuator)) {
@@ -412,6 +480,8 @@ void InitMedia(const Model& model, Media* m) {
   m->obstacle_xy.assign(n_obs, Vec2::Zero());
   m->obstacle_cs.assign(n_obs, Vec2(1, 0));
   m->obstacle_radius.assign(n_obs, 0);
+  m->obstacle_lo.assign(n_obs, Vec2::Zero());
+  m->obstacle_hi.assign(n_obs, Vec2::Zero());
   m->obstacle_top.assign(n_obs, 0);
   m->obstacle_led_medium.assign(n_obs, -1);
   m->obstacle_max_radius = 0;
@@ -426,10 +496,6 @@ void InitMedia(const Model& model, Media* m) {
       led_capacity += def.leds.size();
     }
   }
-  m->rab_near_obstacles.clear();
-  m->rab_near_obstacles.reserve(n_obs);
-  m->obstacle_stamp.assign(n_obs, 0);
-  m->stamp = 0;
   m->light_medium.assign(model.lights.size(), -1);
   for (size_t k = 0; k < model.lights.size(); ++k) m->light_medium[k] = MediumIndex(model.led_media, model.lights[k].medium);
   led_capacity += model.lights.size();
@@ -457,7 +523,8 @@ void InitMedia(const Model& model, Media* m) {
   m->ready = true;
 }
 
-void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
+void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m,
+                 const SlotRunner& runner) {
   if (!m->ready) InitMedia(model, m);
   const int n = static_cast<int>(robots.size());
   const bool rab = m->rab_devices >= 2;
@@ -472,9 +539,30 @@ void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vec
       const Pose2 p = physics.ObstaclePose(static_cast<int>(k));
       m->obstacle_xy[k] = Vec2(p.x, p.y);
       m->obstacle_cs[k] = Vec2(std::cos(p.yaw), std::sin(p.yaw));
+      const ObstacleDef& o = model.obstacles[k];
+      const Vec2& cs = m->obstacle_cs[k];
+      const Vec2 half = o.kind == ShapeKind::Cylinder
+                            ? Vec2(o.radius, o.radius)
+                            : Vec2(std::abs(cs.x()) * o.size_x / 2 + std::abs(cs.y()) * o.size_y / 2,
+                                   std::abs(cs.y()) * o.size_x / 2 + std::abs(cs.x()) * o.size_y / 2);
+      // Rounding in BoxEntry/CircleEntry is ~1e-16 of the coordinates: 1e-9 is ample.
+      const Vec2 margin = (half + m->obstacle_xy[k].cwiseAbs()) * 1e-9 + Vec2(1e-9, 1e-9);
+      m->obstacle_lo[k] = m->obstacle_xy[k] - half - margin;
+      m->obstacle_hi[k] = m->obstacle_xy[k] + half + margin;
     }
   }
-  if (rab) UpdateRab(model, robots, m);
+  if (rab && RabBegin(robots, m)) {
+    // A few devices are not worth waking the threads for (the result is the same).
+    const int slots = runner.run && m->rab_devices >= 64 ? std::max(1, runner.slots) : 1;
+    if (static_cast<int>(m->rab_scratch.size()) < slots) {  // first tick: allocates once
+      m->rab_scratch.resize(slots);
+      for (Media::RabScratch& sc : m->rab_scratch) SizeRabScratch(model, &sc);
+    }
+    RabJob job{&model, m, slots};
+    if (slots > 1) runner.run(runner.pool, RabSlot, &job);
+    else RabSlot(&job, 0);
+    RabDeliver(m);
+  }
   UpdateLeds(model, physics, robots, m);
 }
 

@@ -55,6 +55,9 @@ struct Media {
   std::vector<Vec2> obstacle_xy;   // every box/cylinder centre
   std::vector<Vec2> obstacle_cs;   // cos, sin of its yaw
   std::vector<double> obstacle_radius;  // bounding circle (m)
+  /// Bounding box of each footprint this tick, widened far beyond rounding: a segment whose
+  /// box misses it cannot enter the obstacle (skips the exact test, same answer).
+  std::vector<Vec2> obstacle_lo, obstacle_hi;
   std::vector<double> obstacle_top;     // m
   double obstacle_max_radius = 0;
   // ---- range and bearing (spec §5)
@@ -66,17 +69,28 @@ struct Media {
   double rab_max_range = 0;        // m, largest rab_range of a member
   PointGrid rab_grid;              // bodies, cell = reach + body radius
   PointGrid rab_obstacle_grid;     // obstacles, in every cell they overlap
-  std::vector<int> obstacle_stamp; // scratch: dedup of rab_near_obstacles
-  int stamp = 0;
-  std::vector<int> rab_near;       // scratch: bodies within reach of one device, ascending
   /// A body that may hide a partner from one device: the parts of CircleEntry that do not
   /// depend on the partner (offset s from the device, |s|² - r²), computed once per device.
   struct NearBody {
     double cc, sx, sy;
     int body;
+    int bucket;  // of cc, see RabPartners
   };
-  std::vector<NearBody> rab_occluders;  // scratch: nearest first (ascending cc)
-  std::vector<int> rab_near_obstacles;  // scratch
+  /// One thread's working buffers for the devices it routes (sized once, reused).
+  struct RabScratch {
+    std::vector<int> near;             // bodies within reach of one device, any order
+    std::vector<NearBody> occluders;   // those that may hide a partner, bucketed by cc
+    std::vector<NearBody> unsorted;    // occluders before bucketing
+    std::vector<int> bucket_end;       // kOccluderBuckets + 1 offsets into occluders
+    std::vector<int> near_obstacles;
+    std::vector<int> obstacle_stamp;   // dedup of near_obstacles
+    int stamp = 0;
+  };
+  static constexpr int kOccluderBuckets = 64;
+  std::vector<RabScratch> rab_scratch;  // one per slot of the runner (UpdateMedia)
+  /// rab_partners[a] = the partners b > a that a reaches unhidden, ascending, each as
+  /// b << 2 | (a hears b) | (b hears a) << 1; merged into rab_inbox in ascending a.
+  std::vector<std::vector<int>> rab_partners;
   // ---- LEDs and cameras (spec §7.1, §7.2)
   std::vector<int> led_medium;     // per robot: its leds actuator's medium, -1 none
   std::vector<int> camera_medium;  // per robot: its camera's medium, -1 none
@@ -92,8 +106,19 @@ struct Media {
 
 /// Sizes every media buffer for the model (World creation). UpdateMedia calls it if needed.
 void InitMedia(const Model& model, Media* media);
-/// Media stage: rebuilds routing from the robots' positions after physics.
-void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media);
+/// Runs job(ctx, slot) once for each slot 0..slots-1, maybe concurrently: how the sim
+/// layer lends its thread pool to the media stage (devices know no threads). The default
+/// runs the one slot on the calling thread.
+struct SlotRunner {
+  using Job = void (*)(void* ctx, int slot);
+  int slots = 1;
+  void* pool = nullptr;
+  void (*run)(void* pool, Job job, void* ctx) = nullptr;
+};
+/// Media stage: rebuilds routing from the robots' positions after physics. The per-device
+/// RAB work is spread over the runner's slots; inboxes do not depend on their number.
+void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media,
+                 const SlotRunner& runner = SlotRunner());
 
 /// Segment fraction at which from -> to enters a circle (Box2D's circle ray cast); 2 when
 /// it misses, also when it starts inside. Inline: the media stage calls it for every

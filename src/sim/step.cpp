@@ -12,13 +12,29 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
+// The media stage's per-device RAB work on the pool, one slot per thread (results do not
+// depend on the slot count: devices/media.cpp).
+SlotRunner MediaRunner(World& w) {
+  SlotRunner r;
+  r.slots = w.pool->Size();
+  r.pool = w.pool.get();
+  r.run = [](void* pool, SlotRunner::Job job, void* ctx) {
+    ThreadPool& p = *static_cast<ThreadPool*>(pool);
+    auto each = [&](int begin, int end) {
+      for (int slot = begin; slot < end; ++slot) job(ctx, slot);
+    };
+    p.ParallelFor(p.Size(), each);
+  };
+  return r;
+}
+
 // The "scene changed" notification: loop functions added, removed, moved or recoloured
 // entities, so the media (occluder grids, lit LEDs) are rebuilt before anything senses.
 // Layout changes resize the media's buffers; that allocates, but only on such a tick.
 void RefreshMediaIfSceneChanged(World& w) {
   if (!w.entities.changed()) return;
   if (w.entities.layout_changed()) w.media.ready = false;
-  UpdateMedia(w.model, w.physics, w.robots, &w.media);
+  UpdateMedia(w.model, w.physics, w.robots, &w.media, MediaRunner(w));
   w.entities.ClearChanged();
 }
 
@@ -60,7 +76,7 @@ StepStatus Step(World& w) {
   auto t2 = Clock::now();
   if (w.entities.layout_changed()) w.media.ready = false;  // changed by post_step or init
   w.entities.ClearChanged();
-  UpdateMedia(m, w.physics, w.robots, &w.media);
+  UpdateMedia(m, w.physics, w.robots, &w.media, MediaRunner(w));
   auto t3 = Clock::now();
   bool ok = LoopCall(w, "pre_step");
   RefreshMediaIfSceneChanged(w);

@@ -160,5 +160,119 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
   EXPECT_GT(hidden, 500u);
 }
 
+// Obstacles among a crowd: rotated boxes and cylinders tall enough to hide senders. The
+// stage skips the exact obstacle test when a pair's segment box misses the obstacle's
+// bounding box (issue 12): the inboxes must equal one CircleEntry/BoxEntry per (pair,
+// body or obstacle).
+TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
+  TempDir d;
+  d.Write("spin.lua", "function init() end function step() robot.wheels.set_velocity(6, 2) end");
+  std::string scene;
+  for (int i = 0; i < 40; ++i)  // an 8 x 5 lattice, 0.5 m apart, jittered
+    scene += Bot("b" + std::to_string(i), -1.9 + 0.5 * (i % 8) + 0.02 * (i % 3), -1.1 + 0.5 * (i / 8) - 0.03 * (i % 4),
+                 "spin", "rab_range=\"2.5\"");
+  for (int k = 0; k < 6; ++k) {  // between the lattice points
+    char buf[320];
+    const double x = -1.65 + 0.5 * k, y = k % 2 ? -0.35 : 0.15;  // cell centres
+    if (k % 3 == 2)
+      std::snprintf(buf, sizeof buf, "<cylinder id=\"o%d\" radius=\"0.06\" height=\"0.5\" movable=\"false\">"
+                    "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>", k, x, y);
+    else
+      std::snprintf(buf, sizeof buf, "<box id=\"o%d\" size=\"0.3,0.05,0.5\" movable=\"false\">"
+                    "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>", k, x, y, 25 + 40 * k);
+    scene += buf;
+  }
+  // Two long, slightly turned walls between rows: segments that cross them away from
+  // their centres (the bounding-box shortcut's hard case).
+  scene += "<box id=\"w0\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"-0.6,-0.85,0\" orientation=\"3,0,0\"/></box>"
+           "<box id=\"w1\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"0.5,0.65,0\" orientation=\"-4,0,0\"/></box>";
+  auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
+  ASSERT_TRUE(run->s.ok()) << run->s.error;
+  World& w = *run->s.world;
+  const Model& model = *run->s.model;
+  const auto& m = w.media;
+  const int n = static_cast<int>(w.robots.size());
+  size_t heard = 0, hidden_by_obstacle = 0;
+  for (int tick = 0; tick < 5; ++tick) {
+    RunTicks(w, 1);
+    for (int a = 0; a < n; ++a) {
+      std::vector<int> expect;
+      for (int b = 0; b < n; ++b) {
+        if (b == a) continue;
+        const int lo = std::min(a, b), hi = std::max(a, b);  // rays go from the lower index
+        const Vec2 xl = m.body_xy[lo], xh = m.body_xy[hi];
+        if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
+        const double len = (xh - xl).norm();
+        const double t_b = std::max(0.0, len - footbot::kRadius) / len;
+        bool blocked = false;
+        for (int c = 0; c < n && !blocked; ++c)
+          blocked = c != lo && c != hi && CircleEntry(xl, xh, m.body_xy[c], footbot::kRadius) < t_b;
+        for (size_t k = 0; k < model.obstacles.size() && !blocked; ++k) {
+          const ObstacleDef& o = model.obstacles[k];
+          const double z = m.rab_pos[lo].z();
+          if (z < o.z || z > o.z + o.height) continue;
+          blocked = (o.kind == ShapeKind::Cylinder
+                         ? CircleEntry(xl, xh, m.obstacle_xy[k], o.radius)
+                         : BoxEntry(xl, xh, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) < t_b;
+          hidden_by_obstacle += blocked;
+        }
+        if (!blocked) expect.push_back(b);
+      }
+      heard += expect.size();
+      EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
+    }
+  }
+  EXPECT_GT(heard, 300u);
+  EXPECT_GT(hidden_by_obstacle, 50u);  // the obstacles do hide some pairs
+}
+
+// The media stage routes devices on several threads (issue 12): a dense crowd that steers
+// by what it hears must get the same inboxes, message by message and tick by tick, with
+// 1, 2 and 3 threads (and so the same poses).
+TEST(RabIntegration, CrowdInboxesDoNotDependOnThreads) {
+  TempDir d;
+  d.Write("chat.lua", R"(
+function init() end
+function step()
+  local n, sum = #robot.range_and_bearing, 0
+  for i = 1, n do sum = sum + robot.range_and_bearing[i].data[1] end
+  robot.range_and_bearing.set_data(1, (sum + n) % 256)
+  robot.wheels.set_velocity(4 + n % 7, 4 + sum % 5)
+end
+)");
+  std::string bots;
+  for (int i = 0; i < 240; ++i)  // a 20 x 12 lattice, 0.35 m apart, jittered
+    bots += Bot("c" + std::to_string(i), -3.3 + 0.35 * (i % 20) + 0.013 * (i % 7), -2 + 0.35 * (i / 20) - 0.011 * (i % 5),
+                "chat", "rab_range=\"2\"");
+  const std::string xml = Media(Experiment(bots, Controller("chat", "chat.lua"), 100));
+  std::vector<std::vector<std::vector<int>>> inboxes[3];  // [threads - 1][tick][robot]
+  std::vector<Vec2> poses[3];
+  for (int k = 0; k < 3; ++k) {
+    SimOptions sim;
+    sim.threads = k + 1;
+    Scene s = Load(d, xml, {}, sim);
+    ASSERT_TRUE(s.ok()) << s.error;
+    for (int tick = 0; tick < 8; ++tick) {
+      RunTicks(*s.world, 1);
+      inboxes[k].push_back(s.world->media.rab_inbox);
+    }
+    EXPECT_TRUE(s.world->controller_errors.empty());
+    poses[k] = s.world->media.body_xy;
+  }
+  size_t heard = 0;
+  for (const auto& tick : inboxes[0])
+    for (const auto& inbox : tick) heard += inbox.size();
+  EXPECT_GT(heard, 8u * 240 * 10);  // a real crowd: ten or more partners each on average
+  for (int k = 1; k < 3; ++k) {
+    for (size_t tick = 0; tick < inboxes[0].size(); ++tick)
+      for (size_t r = 0; r < inboxes[0][tick].size(); ++r)
+        ASSERT_EQ(inboxes[k][tick][r], inboxes[0][tick][r]) << (k + 1) << " threads, tick " << tick << ", robot " << r;
+    for (size_t r = 0; r < poses[0].size(); ++r) {  // bit for bit
+      EXPECT_EQ(poses[k][r].x(), poses[0][r].x()) << (k + 1) << " threads, robot " << r;
+      EXPECT_EQ(poses[k][r].y(), poses[0][r].y()) << (k + 1) << " threads, robot " << r;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace essaim
