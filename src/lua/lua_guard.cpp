@@ -32,7 +32,7 @@ long long NowNs() {
 // list, the memory limit. Out of line, so that the fast path saves no registers.
 [[gnu::noinline]] void* SlowAlloc(LuaGuard* g, void* ptr, size_t old, size_t nsize) {
   if (nsize == 0) {
-    if (ptr) std::free(ptr);  // a large block (Lua also "frees" null, empty arrays)
+    std::free(ptr);  // a large block
     g->bytes -= old;
     return nullptr;
   }
@@ -69,6 +69,7 @@ void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
   auto* g = static_cast<LuaGuard*>(ud);
   const size_t old = ptr ? osize : 0;  // with no block, Lua passes the object's type
   if (nsize == 0) {
+    if (!ptr) return nullptr;  // Lua "frees" the null array of every table without one
     if (!SmallBlockPool::IsSmall(old)) return SlowAlloc(g, ptr, old, nsize);
     g->pool.Free(ptr, old);
     g->bytes -= old;
