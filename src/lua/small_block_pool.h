@@ -22,13 +22,16 @@ class SmallBlockPool {
 
   /// A block of at least `size` (≤ kMaxSmall) bytes; null if memory is exhausted.
   void* Allocate(size_t size) {
-    void*& head = free_[Class(size)];
-    if (head) {
-      void* p = head;
-      head = *static_cast<void**>(p);
-      return p;
-    }
+    if (void* p = TakeFree(size)) return p;
     return Carve(Class(size));
+  }
+  /// A block from the free list of `size`'s class, or null if that list is empty (no call:
+  /// the allocator's fast path).
+  void* TakeFree(size_t size) {
+    void*& head = free_[Class(size)];
+    void* p = head;
+    if (p) head = *static_cast<void**>(p);
+    return p;
   }
   /// Returns a block obtained with Allocate(`size`) (the same size class).
   void Free(void* p, size_t size) {

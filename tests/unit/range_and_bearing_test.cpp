@@ -201,6 +201,40 @@ TEST(RangeAndBearing, ClearDataAndLuaTables) {
                                                  "1 10 integer 0,0,0,0,0,0,0,0,0,0 float"}));
 }
 
+TEST(RangeAndBearing, AKeptMessageStillHoldsItsOwnTick) {
+  // ARGoS builds every message and its data table anew each step: a controller that keeps
+  // last step's message (or only its data) still reads last step's values, the tables stay
+  // plain (no metatable), and the new message is another table. Guards any reuse of them.
+  TempDir d;
+  d.Write("send.lua",
+          "n = 0\nfunction init() robot.range_and_bearing.set_data(1, 100) end\n"
+          "function step() n = n + 1; robot.range_and_bearing.set_data(1, n); robot.range_and_bearing.set_data(2, 2 * n) end\n");
+  d.Write("recv.lua", R"(
+local kept, kept_data, kept_range, kept_byte
+function init() end
+function step()
+  collectgarbage()  -- a full cycle between the steps: kept tables must survive it untouched
+  local m = robot.range_and_bearing[1]
+  if kept then
+    local keys = 0
+    for _ in pairs(kept) do keys = keys + 1 end
+    log(tostring(kept ~= m), ' ', tostring(kept_data ~= m.data), ' ', kept.data[1], ' ', kept_data[1], ' ',
+        tostring(kept.range == kept_range), ' ', tostring(getmetatable(kept)), ' ', tostring(getmetatable(kept.data)), ' ',
+        keys, ' ', #kept.data, ' ', m.data[1], ' ', m.data[2])
+  end
+  kept, kept_data, kept_range = m, m.data, m.range
+end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
+                                        RabController("send", "send.lua") + RabController("recv", "recv.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  RunTicks(*ls->s.world, 4);
+  // Step t hears the sender's step t-1 (init: 100); the kept one is step t-2's.
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"true true 100 100 true nil nil 4 10 1 2",
+                                                 "true true 1 1 true nil nil 4 10 2 4",
+                                                 "true true 2 2 true nil nil 4 10 3 6"}));
+}
+
 TEST(RangeAndBearing, SetDataErrors) {
   TempDir d;
   d.Write("bad.lua",
