@@ -399,6 +399,34 @@ RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exc
 }
 
 namespace {
+/// A circle round the shape where b2Fixture::RayCast sees it (the body's current transform):
+/// a circle is its own; a polygon's is centred on its centroid through its farthest vertex
+/// (2.4.1's polygon ray cast ignores the skin radius). Tight, so CastRay's nearest-first
+/// scan stops early: the box round a foot-bot would be 41% wider than the foot-bot.
+void BoundingCircle(const b2Fixture& f, double* cx, double* cy, double* r) {
+  const b2Transform& xf = f.GetBody()->GetTransform();
+  const b2Shape* shape = f.GetShape();
+  if (shape->GetType() == b2Shape::e_circle) {
+    const auto* circle = static_cast<const b2CircleShape*>(shape);
+    const b2Vec2 c = b2Mul(xf, circle->m_p);
+    *cx = c.x;
+    *cy = c.y;
+    *r = circle->m_radius;
+    return;
+  }
+  const auto* poly = static_cast<const b2PolygonShape*>(shape);
+  double r2 = 0;
+  for (int i = 0; i < poly->m_count; ++i) {
+    const double dx = static_cast<double>(poly->m_vertices[i].x) - poly->m_centroid.x;
+    const double dy = static_cast<double>(poly->m_vertices[i].y) - poly->m_centroid.y;
+    r2 = std::max(r2, dx * dx + dy * dy);
+  }
+  const b2Vec2 c = b2Mul(xf, poly->m_centroid);
+  *cx = c.x;
+  *cy = c.y;
+  *r = std::sqrt(r2);
+}
+
 // Shapes reaching the height whose tight box overlaps the query box; bounding circles kept
 // only when they can reach the query disc.
 class CandidateQuery : public b2QueryCallback {
@@ -409,20 +437,17 @@ class CandidateQuery : public b2QueryCallback {
   bool ReportFixture(b2Fixture* f) override {
     uintptr_t tag = f->GetUserData().pointer;
     if (!ReachesHeight(TagKind(tag), TagIndex(tag), z_, exclude_, tops_, bottoms_)) return true;
-    // The proxy box bounds the shape at its current transform (dynamic bodies: the union
-    // of the last sub-step's start and end), so the circle round it bounds the shape.
-    const b2AABB& box = f->GetAABB(0);
-    const double cx = 0.5 * (static_cast<double>(box.lowerBound.x) + box.upperBound.x);
-    const double cy = 0.5 * (static_cast<double>(box.lowerBound.y) + box.upperBound.y);
-    const double hx = 0.5 * (static_cast<double>(box.upperBound.x) - box.lowerBound.x);
-    const double hy = 0.5 * (static_cast<double>(box.upperBound.y) - box.lowerBound.y);
-    const double r = std::sqrt(hx * hx + hy * hy) + kSlack;
+    double cx, cy, r;
+    BoundingCircle(*f, &cx, &cy, &r);
+    r += kSlack;
     const double dx = cx - c_.x(), dy = cy - c_.y();
-    if (dx * dx + dy * dy > (r + r_) * (r + r_)) return true;
-    out_->push_back({f, cx, cy, r});
+    const double d2 = dx * dx + dy * dy;
+    if (d2 > (r + r_) * (r + r_)) return true;
+    out_->push_back({std::sqrt(d2) - r, cx, cy, r, f});
     return true;
   }
-  // m: far above float rounding at arena scale, so no shape a ray touches is ever dropped.
+  // m: far above float rounding at arena scale (Box2D's hit points lie within ~1e-5 m of
+  // the shape), so no shape a ray touches is ever dropped, nor cut off by CastRay's early stop.
   static constexpr double kSlack = 1e-3;
 
  private:
@@ -445,6 +470,11 @@ void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double
   box.lowerBound.Set(static_cast<float>(center.x() - r), static_cast<float>(center.y() - r));
   box.upperBound.Set(static_cast<float>(center.x() + r), static_cast<float>(center.y() + r));
   impl_->world.QueryAABB(&q, box);
+  out->center = center;
+  // Nearest first, for CastRay's early stop. Ties keep no particular order: only which of
+  // two equally close shapes is reported could change, never the distance.
+  std::sort(out->items.begin(), out->items.end(),
+            [](const RayCandidate& a, const RayCandidate& b) { return a.near < b.near; });
 }
 
 RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const {
@@ -455,10 +485,19 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   in.maxFraction = 1;
   if (candidates.items.empty() || b2DistanceSquared(in.p1, in.p2) <= 0) return {};
   const Vec2 d = to - from;
-  const double inv_len2 = 1 / d.squaredNorm();  // a multiply per candidate, not a divide
+  const double len2 = d.squaredNorm();
+  const double inv_len2 = 1 / len2;  // a multiply per candidate, not a divide
+  const double len = std::sqrt(len2);
+  // Every point of candidate c is at least c.near from the gather centre, hence at least
+  // c.near - start from the ray's start: once that exceeds the closest hit so far (or the
+  // ray's length), no candidate left can be hit closer. The 1 mm the bounding circles are
+  // inflated by keeps this safe against float rounding in Box2D's fractions.
+  const double start = (from - candidates.center).norm();
+  double reach = len;  // m, how far along the ray a better hit must lie
   float best = 2;
   const b2Fixture* closest = nullptr;
   for (const RayCandidate& c : candidates.items) {
+    if (c.near - start > reach) break;
     // Segment to bounding-circle distance, in double: rejects most candidates cheaply.
     const double mx = c.cx - from.x(), my = c.cy - from.y();
     const double t = std::clamp((mx * d.x() + my * d.y()) * inv_len2, 0.0, 1.0);
@@ -472,6 +511,7 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
     if (out.fraction < best) {
       best = out.fraction;
       closest = f;
+      reach = len * best;
     }
   }
   if (!closest) return {};
