@@ -4,7 +4,11 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
+
+#include "physics/shape_grid.h"
 
 namespace essaim {
 
@@ -41,6 +45,14 @@ struct PhysicsWorld::Impl {
   std::vector<Grip> grips;
   float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
   PhysicsDef phys;                  // friction of obstacles added later
+
+  /// Ray candidates come from this grid (EnsureRayGrid), rebuilt at the first query after
+  /// shapes moved: every change to a body's place or to the set of shapes counts up
+  /// `shapes_moved` (never during a parallel stage; queries only read it).
+  ShapeGrid ray_grid;
+  uint64_t shapes_moved = 0;
+  std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
+  std::mutex grid_mutex;
 };
 
 PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
@@ -103,6 +115,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
 }
 
 int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
+  ++impl_->shapes_moved;
   const PhysicsDef& phys = impl_->phys;
   const int index = static_cast<int>(obstacles_.size());
   b2BodyDef bd;
@@ -169,6 +182,7 @@ int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
 }
 
 void PhysicsWorld::RemoveObstacle(int index) {
+  ++impl_->shapes_moved;
   b2Body* body = AsBody(obstacles_[index]);
   for (size_t r = 0; r < impl_->grips.size(); ++r) {
     GripTarget& t = impl_->grips[r].target;
@@ -187,6 +201,7 @@ void PhysicsWorld::RemoveObstacle(int index) {
 }
 
 void PhysicsWorld::SetObstaclePose(int index, const Pose2& pose) {
+  ++impl_->shapes_moved;
   b2Body* b = AsBody(obstacles_[index]);
   b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
   b->SetLinearVelocity(b2Vec2(0, 0));
@@ -216,6 +231,7 @@ void PhysicsWorld::Step(double dt, int substeps) {
   // 4 velocity and 2 position iterations per sub-step: with ARGoS's 10 sub-steps that is 40
   // solver passes per tick; 8/3 cost 9% more instructions with no change in any test.
   for (int i = 0; i < substeps; ++i) impl_->world.Step(h, 4, 2);
+  ++impl_->shapes_moved;
 }
 
 Pose2 PhysicsWorld::RobotPose(int robot) const {
@@ -233,6 +249,7 @@ double PhysicsWorld::RobotAngularVelocity(int robot) const {
 }
 
 void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
+  ++impl_->shapes_moved;
   b2Body* b = AsBody(robots_[robot]);
   const b2Transform before = b->GetTransform();
   const float turn = static_cast<float>(pose.yaw) - b->GetAngle();
@@ -427,49 +444,56 @@ void BoundingCircle(const b2Fixture& f, double* cx, double* cy, double* r) {
   *r = std::sqrt(r2);
 }
 
-// Shapes reaching the height whose tight box overlaps the query box; bounding circles kept
-// only when they can reach the query disc.
-class CandidateQuery : public b2QueryCallback {
- public:
-  CandidateQuery(const Vec2& c, double r, const std::vector<double>& tops, const std::vector<double>& bottoms,
-                 double z, int exclude, std::vector<RayCandidate>* out)
-      : c_(c), r_(r), tops_(tops), bottoms_(bottoms), z_(z), exclude_(exclude), out_(out) {}
-  bool ReportFixture(b2Fixture* f) override {
-    uintptr_t tag = f->GetUserData().pointer;
-    if (!ReachesHeight(TagKind(tag), TagIndex(tag), z_, exclude_, tops_, bottoms_)) return true;
-    double cx, cy, r;
-    BoundingCircle(*f, &cx, &cy, &r);
-    r += kSlack;
-    const double dx = cx - c_.x(), dy = cy - c_.y();
-    const double d2 = dx * dx + dy * dy;
-    if (d2 > (r + r_) * (r + r_)) return true;
-    out_->push_back({std::sqrt(d2) - r, cx, cy, r, f});
-    return true;
-  }
-  // m: far above float rounding at arena scale (Box2D's hit points lie within ~1e-5 m of
-  // the shape), so no shape a ray touches is ever dropped, nor cut off by CastRay's early stop.
-  static constexpr double kSlack = 1e-3;
-
- private:
-  Vec2 c_;
-  double r_;
-  const std::vector<double>& tops_;
-  const std::vector<double>& bottoms_;
-  double z_;
-  int exclude_;
-  std::vector<RayCandidate>* out_;
-};
+// m: far above float rounding at arena scale (Box2D's hit points lie within ~1e-5 m of the
+// shape), so no shape a ray touches is ever dropped, nor cut off by CastRay's early stop.
+constexpr double kCircleSlack = 1e-3;
 }  // namespace
+
+void PhysicsWorld::EnsureRayGrid() const {
+  Impl& im = *impl_;
+  if (im.grid_built_at.load(std::memory_order_acquire) == im.shapes_moved) return;
+  // The first query after a change rebuilds; the others of a parallel stage wait for it.
+  std::lock_guard<std::mutex> lock(im.grid_mutex);
+  if (im.grid_built_at.load(std::memory_order_relaxed) == im.shapes_moved) return;
+  im.ray_grid.Clear();
+  for (b2Body* b = im.world.GetBodyList(); b; b = b->GetNext()) {
+    for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
+      const uintptr_t tag = f->GetUserData().pointer;
+      const BodyKind kind = TagKind(tag);
+      if (kind == BodyKind::None) continue;
+      GridCircle g;
+      BoundingCircle(*f, &g.cx, &g.cy, &g.r);
+      g.r += kCircleSlack;
+      const int index = TagIndex(tag);
+      if (kind == BodyKind::Robot) {
+        g.robot = index;
+        g.bottom = 0;  // as ReachesHeight
+        g.top = footbot::kHeight;
+      } else {
+        g.bottom = im.obstacle_bottom[index];
+        g.top = im.obstacle_top[index];
+      }
+      g.shape = f;
+      im.ray_grid.Add(g);
+    }
+  }
+  im.ray_grid.Build();
+  im.grid_built_at.store(im.shapes_moved, std::memory_order_release);
+}
 
 void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
                                        RayCandidates* out) const {
   out->items.clear();
-  const double r = radius + CandidateQuery::kSlack;
-  CandidateQuery q(center, r, impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot, &out->items);
-  b2AABB box;
-  box.lowerBound.Set(static_cast<float>(center.x() - r), static_cast<float>(center.y() - r));
-  box.upperBound.Set(static_cast<float>(center.x() + r), static_cast<float>(center.y() + r));
-  impl_->world.QueryAABB(&q, box);
+  EnsureRayGrid();
+  const double r = radius + kCircleSlack;
+  // ReachesHeight's rule: shapes spanning z, not the excluded robot; then circles that reach the disc.
+  impl_->ray_grid.ForEachNear(center.x(), center.y(), r, [&](const GridCircle& g) {
+    if (z < g.bottom || z > g.top || (exclude_robot >= 0 && g.robot == exclude_robot)) return;
+    const double dx = g.cx - center.x(), dy = g.cy - center.y();
+    const double d2 = dx * dx + dy * dy;
+    if (d2 > (g.r + r) * (g.r + r)) return;
+    out->items.push_back({std::sqrt(d2) - g.r, g.cx, g.cy, g.r, g.shape});
+  });
   out->center = center;
   // Nearest first, for CastRay's early stop. Ties keep no particular order: only which of
   // two equally close shapes is reported could change, never the distance.

@@ -119,6 +119,9 @@ class PhysicsWorld {
   GripTarget Gripped(int robot) const;
 
  private:
+  /// Brings the grid that GatherRayCandidates reads up to date (thread-safe).
+  void EnsureRayGrid() const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*

@@ -159,6 +159,45 @@ TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
   EXPECT_GT(hits, rays / 3);  // dense: most rays hit something
 }
 
+// The candidates come from a grid rebuilt after shapes move: a teleported robot, an added,
+// moved or removed obstacle is seen where it is now, without a physics step in between.
+TEST(RayCandidates, FollowTeleportsAndObstaclesAddedMovedOrRemoved) {
+  TempDir d;
+  d.Write("still.lua", "function step() end\n");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.5, 0, 0, "c"),
+                               WheelsController("c", "still.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  PhysicsWorld& ph = s.world->physics;
+  const double z = footbot::kScannerElevation, r = footbot::kRadius;
+  RayCandidates c;
+  // Distance along a 1.42 m ray from fb0's surface in direction (dx, dy); -1 for a miss.
+  auto cast = [&](double dx, double dy) {
+    ph.GatherRayCandidates({0, 0}, r + 1.42, z, 0, &c);
+    const Vec2 from(r * dx, r * dy), to = from + 1.42 * Vec2(dx, dy);
+    const RayHit listed = ph.CastRay(c, from, to), tree = ph.CastRay(from, to, z, 0);
+    EXPECT_EQ(listed.Hit(), tree.Hit());
+    EXPECT_EQ(listed.distance, tree.distance);
+    return listed.Hit() ? listed.distance : -1.0;
+  };
+  EXPECT_NEAR(cast(1, 0), 0.5 - 2 * r, 1e-6);
+  ph.SetRobotPose(1, {1.0, 0, 0});
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
+  ObstacleDef post;
+  post.kind = ShapeKind::Cylinder;
+  post.radius = 0.05;
+  post.height = 0.5;
+  post.pose = {0.4, 0, 0};
+  const int index = ph.AddObstacle(post);
+  EXPECT_NEAR(cast(1, 0), 0.4 - 0.05 - r, 1e-6);
+  EXPECT_EQ(cast(0, 1), -1.0);
+  ph.SetObstaclePose(index, {0, 0.6, 0});
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
+  EXPECT_NEAR(cast(0, 1), 0.6 - 0.05 - r, 1e-6);
+  ph.RemoveObstacle(index);
+  EXPECT_EQ(cast(0, 1), -1.0);
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
+}
+
 TEST(RayCandidates, ExcludedRobotAndShapesBelowTheRayAreNotCandidates) {
   TempDir d;
   d.Write("still.lua", "function step() end\n");
