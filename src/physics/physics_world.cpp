@@ -483,22 +483,58 @@ void PhysicsWorld::EnsureRayGrid() const {
 
 void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
                                        RayCandidates* out) const {
-  out->items.clear();
   EnsureRayGrid();
+  std::vector<RayCandidate>& found = out->scratch;
+  found.clear();
   const double r = radius + kCircleSlack;
+  double lo = 0, hi = 0;  // m, range of `near`
   // ReachesHeight's rule: shapes spanning z, not the excluded robot; then circles that reach the disc.
   impl_->ray_grid.ForEachNear(center.x(), center.y(), r, [&](const GridCircle& g) {
     if (z < g.bottom || z > g.top || (exclude_robot >= 0 && g.robot == exclude_robot)) return;
     const double dx = g.cx - center.x(), dy = g.cy - center.y();
     const double d2 = dx * dx + dy * dy;
     if (d2 > (g.r + r) * (g.r + r)) return;
-    out->items.push_back({std::sqrt(d2) - g.r, g.cx, g.cy, g.r, g.shape});
+    const double near = std::sqrt(d2) - g.r;
+    lo = std::min(lo, near);
+    hi = std::max(hi, near);
+    found.push_back({near, g.cx, g.cy, g.r, g.shape});
   });
   out->center = center;
-  // Nearest first, for CastRay's early stop. Ties keep no particular order: only which of
-  // two equally close shapes is reported could change, never the distance.
-  std::sort(out->items.begin(), out->items.end(),
-            [](const RayCandidate& a, const RayCandidate& b) { return a.near < b.near; });
+  SortNearestFirst(lo, hi, out);
+}
+
+namespace {
+/// m: CastRay's stop is tested against `near` rounded down by one to two of these steps, so a
+/// ray tests at most the candidates of two more centimetres; std::sort was 40% of a gather.
+constexpr double kNearStep = 0.01;
+constexpr int kMaxNearSteps = 1024;
+}  // namespace
+
+void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
+  const std::vector<RayCandidate>& found = out->scratch;
+  std::vector<RayCandidate>& items = out->items;
+  items.resize(found.size());
+  if (found.empty()) return;
+  // Counting sort on `near` in steps; each is stored as the floor of the step below its own
+  // (a lower bound even if (near - lo) / step rounded up, and non-decreasing along the
+  // result). Same order for the same input: deterministic.
+  double step = kNearStep;
+  while ((hi - lo) / step > kMaxNearSteps) step *= 2;  // a huge obstacle: fewer, coarser steps
+  const double inv_step = 1 / step;
+  const int steps = static_cast<int>((hi - lo) * inv_step) + 1;
+  std::vector<int>& ends = out->bucket_ends;
+  ends.reserve(kMaxNearSteps + 1);  // once: later gathers never allocate for it
+  ends.assign(steps, 0);
+  auto step_of = [&](double near) { return std::min(static_cast<int>((near - lo) * inv_step), steps - 1); };
+  for (const RayCandidate& c : found) ++ends[step_of(c.near)];
+  for (int k = 1; k < steps; ++k) ends[k] += ends[k - 1];
+  for (size_t i = found.size(); i-- > 0;) {
+    const RayCandidate& c = found[i];
+    const int k = step_of(c.near);
+    RayCandidate& slot = items[--ends[k]];
+    slot = c;
+    slot.near = lo + std::max(k - 1, 0) * step;
+  }
 }
 
 RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const {

@@ -35,17 +35,20 @@ struct RayHit {
 /// One shape a bundle of rays may hit (PhysicsWorld::GatherRayCandidates): the Box2D
 /// fixture (opaque here) and a circle that bounds it, for a cheap per-ray reject.
 struct RayCandidate {
-  double near = 0;                // m, |circle centre - gather centre| - r: no point of the shape is closer
+  double near = 0;                // m, no point of the shape is closer to the gather centre
   double cx = 0, cy = 0, r = 0;   // m, bounding circle (inflated by 1 mm)
   const void* fixture = nullptr;  // b2Fixture*
 };
 
 /// The shapes near one robot, gathered once per tick for all its rays at one height,
-/// nearest first (by `near`), so a ray stops looking once no shape left can beat its
-/// closest hit. The vector is reused: after the densest neighbourhood it never allocates.
+/// nearest first (`near` never decreases along `items`), so a ray stops looking once no
+/// shape left can beat its closest hit. Reused: after the densest neighbourhood it never
+/// allocates.
 struct RayCandidates {
   std::vector<RayCandidate> items;
   Vec2 center = Vec2::Zero();  // m, the gather centre
+  std::vector<RayCandidate> scratch;  // the gather's unsorted list
+  std::vector<int> bucket_ends;       // the gather's counting sort
 };
 
 struct PhysicsProfile {
@@ -121,6 +124,8 @@ class PhysicsWorld {
  private:
   /// Brings the grid that GatherRayCandidates reads up to date (thread-safe).
   void EnsureRayGrid() const;
+  /// Moves `out->scratch` (its `near` within [lo, hi]) into `out->items`, nearest first.
+  static void SortNearestFirst(double lo, double hi, RayCandidates* out);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;
