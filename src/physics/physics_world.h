@@ -35,14 +35,20 @@ struct RayHit {
 /// One shape a bundle of rays may hit (PhysicsWorld::GatherRayCandidates): the Box2D
 /// fixture (opaque here) and a circle that bounds it, for a cheap per-ray reject.
 struct RayCandidate {
+  double near = 0;                // m, no point of the shape is closer to the gather centre
+  double cx = 0, cy = 0, r = 0;   // m, bounding circle (inflated by 1 mm)
   const void* fixture = nullptr;  // b2Fixture*
-  double cx = 0, cy = 0, r = 0;   // m, bounding circle (slightly inflated)
 };
 
-/// The shapes near one robot, gathered once per tick for all its rays at one height. The
-/// vector is reused: after the densest neighbourhood it never allocates again.
+/// The shapes near one robot, gathered once per tick for all its rays at one height,
+/// nearest first (`near` never decreases along `items`), so a ray stops looking once no
+/// shape left can beat its closest hit. Reused: after the densest neighbourhood it never
+/// allocates.
 struct RayCandidates {
   std::vector<RayCandidate> items;
+  Vec2 center = Vec2::Zero();  // m, the gather centre
+  std::vector<RayCandidate> scratch;  // the gather's unsorted list
+  std::vector<int> bucket_ends;       // the gather's counting sort
 };
 
 struct PhysicsProfile {
@@ -89,8 +95,9 @@ class PhysicsWorld {
                            RayCandidates* out) const;
   /// CastRay's distance for a ray inside the gathered disc, tested against the candidates
   /// only, with Box2D's own shape ray casts: the same closest fraction, bit for bit (the
-  /// closest of several hits does not depend on the order they are tested in). Only
-  /// `distance` is filled besides Hit(): kind and index are those of the first closest.
+  /// closest of several hits does not depend on the order they are tested in, and the
+  /// shapes skipped once the nearest-first scan passes the closest hit cannot beat it).
+  /// Kind and index are those of the first closest in that order (ties are rare).
   RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
   /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
   /// bounding box within the square of half-side `radius` around `center`. A cheap,
@@ -116,6 +123,11 @@ class PhysicsWorld {
   GripTarget Gripped(int robot) const;
 
  private:
+  /// Brings the grid that GatherRayCandidates reads up to date (thread-safe).
+  void EnsureRayGrid() const;
+  /// Moves `out->scratch` (its `near` within [lo, hi]) into `out->items`, nearest first.
+  static void SortNearestFirst(double lo, double hi, RayCandidates* out);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*

@@ -13,7 +13,9 @@ namespace essaim {
 namespace {
 using namespace essaim::testing;
 
-std::string Crowd(int robots, uint64_t seed) {
+// Walls, boxes and cylinders (some movable, some below the scanner) among `robots` foot-bots
+// placed uniformly in the square of half-side `half` (m).
+std::string Crowd(int robots, uint64_t seed, double half = 2.5) {
   Rng rng;
   rng.Seed(seed);
   std::string arena =
@@ -36,8 +38,10 @@ std::string Crowd(int robots, uint64_t seed) {
                   rng.Uniform(-2.5, 2.5), rng.Uniform(-2.5, 2.5));
     arena += buf;
   }
-  arena += "<distribute><position method=\"uniform\" min=\"-2.5,-2.5,0\" max=\"2.5,2.5,0\"/>"
-           "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/><entity quantity=\"" +
+  std::snprintf(buf, sizeof buf, "<distribute><position method=\"uniform\" min=\"%g,%g,0\" max=\"%g,%g,0\"/>", -half,
+                -half, half, half);
+  arena += buf;
+  arena += "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/><entity quantity=\"" +
            std::to_string(robots) + "\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot>"
            "</entity></distribute>";
   return arena;
@@ -83,6 +87,115 @@ TEST(RayCandidates, SameHitsAndDistancesAsTheTree) {
     }
   }
   EXPECT_GT(hits, rays / 10);  // the crowd is dense enough to test hits, not only misses
+}
+
+// CastRay of candidates scans them nearest first and stops once none left can beat its
+// closest hit. Pitted against Box2D's tree walk (b2World::RayCast) in a crowd as dense as
+// foraging-300's (~15 foot-bots per m², shoving each other): rays from anywhere within the
+// body at any length the gathered disc allows, and rays grazing the neighbours' circles, where
+// Box2D's float fractions are least precise. Same hit or miss, same distance to the last bit.
+TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
+  TempDir d;
+  d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
+                        "20 * robot.random.uniform()) end\n");
+  Scene s = Load(d, Experiment(Crowd(300, 7, 2.2), WheelsController("c", "wander.lua"), 40, 7));
+  ASSERT_TRUE(s.ok()) << s.error;
+  World& w = *s.world;
+  Rng rng;
+  rng.Seed(77);
+  RayCandidates near_shapes;
+  std::vector<int> neighbours;
+  int rays = 0, hits = 0, grazing = 0;
+  auto check = [&](const Vec2& from, const Vec2& to, double z, int self) {
+    const RayHit tree = w.physics.CastRay(from, to, z, self);
+    const RayHit listed = w.physics.CastRay(near_shapes, from, to);
+    ++rays;
+    hits += tree.Hit();
+    ASSERT_EQ(tree.Hit(), listed.Hit()) << "robot " << self << " z " << z << " ray " << rays;
+    if (tree.Hit()) {
+      ASSERT_EQ(tree.distance, listed.distance) << "robot " << self << " z " << z << " ray " << rays;
+    }
+  };
+  for (int round = 0; round < 2; ++round) {
+    RunTicks(w, round == 0 ? 3 : 20);
+    for (int i = 0; i < w.physics.RobotCount(); ++i) {
+      const Pose2 p = w.physics.RobotPose(i);
+      const Vec2 c(p.x, p.y);
+      for (double z : {footbot::kProximityElevation, footbot::kScannerElevation}) {
+        const double radius = footbot::kRadius + (z < 0.1 ? 0.1 : 1.42);
+        w.physics.GatherRayCandidates(c, radius, z, i, &near_shapes);
+        for (int k = 0; k < 24; ++k) {  // anywhere in the body, any direction, as long as the disc allows
+          const double rho = rng.Uniform(0.0, footbot::kRadius), phi = rng.Uniform(-kPi, kPi);
+          const double a = rng.Uniform(-kPi, kPi), len = rng.Uniform(0.0, radius - rho);
+          const Vec2 from = c + rho * Vec2(std::cos(phi), std::sin(phi));
+          check(from, from + len * Vec2(std::cos(a), std::sin(a)), z, i);
+          if (::testing::Test::HasFatalFailure()) return;
+        }
+        // From the body surface, tangent to each neighbour's circle, nudged by up to 1e-4 rad.
+        w.physics.RobotsNear(c, radius, &neighbours);
+        for (int j : neighbours) {
+          if (j == i) continue;
+          const Pose2 q = w.physics.RobotPose(j);
+          const Vec2 dq(q.x - p.x, q.y - p.y);
+          if (dq.norm() <= 2 * footbot::kRadius || dq.norm() + footbot::kRadius > radius) continue;
+          const double toward = std::atan2(dq.y(), dq.x());
+          const double from_angle = toward + rng.Uniform(-0.3, 0.3);
+          const Vec2 from = c + footbot::kRadius * Vec2(std::cos(from_angle), std::sin(from_angle));
+          const Vec2 e = Vec2(q.x, q.y) - from;
+          const double half_width = std::asin(std::min(1.0, footbot::kRadius / e.norm()));
+          for (double side : {-1.0, 1.0})
+            for (double nudge : {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-4, -1e-4}) {
+              const double a = std::atan2(e.y(), e.x()) + side * half_width + nudge;
+              check(from, from + (radius - footbot::kRadius) * Vec2(std::cos(a), std::sin(a)), z, i);
+              if (::testing::Test::HasFatalFailure()) return;
+              ++grazing;
+            }
+        }
+      }
+    }
+  }
+  EXPECT_GT(rays, 500000);
+  EXPECT_GT(grazing, 400000);
+  EXPECT_GT(hits, rays / 3);  // dense: most rays hit something
+}
+
+// The candidates come from a grid rebuilt after shapes move: a teleported robot, an added,
+// moved or removed obstacle is seen where it is now, without a physics step in between.
+TEST(RayCandidates, FollowTeleportsAndObstaclesAddedMovedOrRemoved) {
+  TempDir d;
+  d.Write("still.lua", "function step() end\n");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.5, 0, 0, "c"),
+                               WheelsController("c", "still.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  PhysicsWorld& ph = s.world->physics;
+  const double z = footbot::kScannerElevation, r = footbot::kRadius;
+  RayCandidates c;
+  // Distance along a 1.42 m ray from fb0's surface in direction (dx, dy); -1 for a miss.
+  auto cast = [&](double dx, double dy) {
+    ph.GatherRayCandidates({0, 0}, r + 1.42, z, 0, &c);
+    const Vec2 from(r * dx, r * dy), to = from + 1.42 * Vec2(dx, dy);
+    const RayHit listed = ph.CastRay(c, from, to), tree = ph.CastRay(from, to, z, 0);
+    EXPECT_EQ(listed.Hit(), tree.Hit());
+    EXPECT_EQ(listed.distance, tree.distance);
+    return listed.Hit() ? listed.distance : -1.0;
+  };
+  EXPECT_NEAR(cast(1, 0), 0.5 - 2 * r, 1e-6);
+  ph.SetRobotPose(1, {1.0, 0, 0});
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
+  ObstacleDef post;
+  post.kind = ShapeKind::Cylinder;
+  post.radius = 0.05;
+  post.height = 0.5;
+  post.pose = {0.4, 0, 0};
+  const int index = ph.AddObstacle(post);
+  EXPECT_NEAR(cast(1, 0), 0.4 - 0.05 - r, 1e-6);
+  EXPECT_EQ(cast(0, 1), -1.0);
+  ph.SetObstaclePose(index, {0, 0.6, 0});
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
+  EXPECT_NEAR(cast(0, 1), 0.6 - 0.05 - r, 1e-6);
+  ph.RemoveObstacle(index);
+  EXPECT_EQ(cast(0, 1), -1.0);
+  EXPECT_NEAR(cast(1, 0), 1.0 - 2 * r, 1e-6);
 }
 
 TEST(RayCandidates, ExcludedRobotAndShapesBelowTheRayAreNotCandidates) {
