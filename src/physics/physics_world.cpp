@@ -274,13 +274,26 @@ Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {
 void PhysicsWorld::FreezeRobot(int robot) { SetWheelSpeeds(robot, 0, 0); }
 
 namespace {
-/// Whether a query at height z can touch this shape: any robot but the excluded one below
-/// the foot-bot's height, any obstacle whose vertical extent contains z.
+/// A shape's vertical extent (m): a robot's is the foot-bot's body, an obstacle's its own.
+void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const std::vector<double>& bottoms,
+                double* bottom, double* top) {
+  if (kind == BodyKind::Robot) {
+    *bottom = 0;
+    *top = footbot::kHeight;
+  } else {
+    *bottom = bottoms[index];
+    *top = tops[index];
+  }
+}
+
+/// Whether a query at height z can touch this shape: any robot but the excluded one, any
+/// obstacle, whose vertical extent contains z.
 bool ReachesHeight(BodyKind kind, int index, double z, int exclude_robot, const std::vector<double>& tops,
                    const std::vector<double>& bottoms) {
-  if (kind == BodyKind::Robot) return index != exclude_robot && z >= 0 && z <= footbot::kHeight;
-  if (kind == BodyKind::Obstacle) return z >= bottoms[index] && z <= tops[index];
-  return false;
+  if (kind == BodyKind::None || (kind == BodyKind::Robot && index == exclude_robot)) return false;
+  double bottom, top;
+  HeightSpan(kind, index, tops, bottoms, &bottom, &top);
+  return z >= bottom && z <= top;
 }
 
 class ClosestRay : public b2RayCastCallback {
@@ -465,14 +478,8 @@ void PhysicsWorld::EnsureRayGrid() const {
       BoundingCircle(*f, &g.cx, &g.cy, &g.r);
       g.r += kCircleSlack;
       const int index = TagIndex(tag);
-      if (kind == BodyKind::Robot) {
-        g.robot = index;
-        g.bottom = 0;  // as ReachesHeight
-        g.top = footbot::kHeight;
-      } else {
-        g.bottom = im.obstacle_bottom[index];
-        g.top = im.obstacle_top[index];
-      }
+      if (kind == BodyKind::Robot) g.robot = index;
+      HeightSpan(kind, index, im.obstacle_top, im.obstacle_bottom, &g.bottom, &g.top);
       g.shape = f;
       im.ray_grid.Add(g);
     }

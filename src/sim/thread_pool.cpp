@@ -24,9 +24,7 @@ void Chunk(int n, int parts, int k, int* begin, int* end) {
   *begin = k * base + (k < extra ? k : extra);
   *end = *begin + base + (k < extra ? 1 : 0);
 }
-}  // namespace
 
-namespace {
 using Claim = unsigned long long;
 Claim Pack(long generation, int next) {
   return (static_cast<Claim>(static_cast<uint32_t>(generation)) << 32) | static_cast<uint32_t>(next);
