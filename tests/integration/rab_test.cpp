@@ -119,6 +119,29 @@ end
   EXPECT_EQ(run->lines, std::vector<std::string>({"magenta at step 6 angle 0.995 blobs 8"}));
 }
 
+// Brute force for the crowd tests below, one test per (pair, body): the pair's ray runs
+// between the bodies' centres from the lower index, as the media stage casts it, and
+// anything entered before `t_b` (where it enters the other body) hides the pair.
+using MediaState = decltype(World::media);
+struct PairRay {
+  int lo, hi;
+  Vec2 from, to;
+  double t_b;
+};
+PairRay RayBetween(const MediaState& m, int a, int b) {
+  PairRay r{std::min(a, b), std::max(a, b), Vec2::Zero(), Vec2::Zero(), 0};
+  r.from = m.body_xy[r.lo];
+  r.to = m.body_xy[r.hi];
+  const double len = (r.to - r.from).norm();
+  r.t_b = std::max(0.0, len - footbot::kRadius) / len;
+  return r;
+}
+bool HiddenByABody(const MediaState& m, const PairRay& r, int robots) {
+  for (int c = 0; c < robots; ++c)
+    if (c != r.lo && c != r.hi && CircleEntry(r.from, r.to, m.body_xy[c], footbot::kRadius) < r.t_b) return true;
+  return false;
+}
+
 // The media stage's occlusion shortcuts (per-device offsets, nearest-first scan with a
 // distance cut-off, issue 12) must decide exactly what one CircleEntry per (pair, body)
 // decides: compare every inbox of a dense, moving crowd with that brute force.
@@ -141,14 +164,8 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
       std::vector<int> expect;
       for (int b = 0; b < n; ++b) {
         if (b == a) continue;
-        const int lo = std::min(a, b), hi = std::max(a, b);  // rays go from the lower index
-        const Vec2 xl = m.body_xy[lo], xh = m.body_xy[hi];
         if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= run->s.model->robots[b].rab_range) continue;
-        const double len = (xh - xl).norm();
-        const double t_b = std::max(0.0, len - footbot::kRadius) / len;
-        bool blocked = false;
-        for (int c = 0; c < n && !blocked; ++c)
-          blocked = c != lo && c != hi && CircleEntry(xl, xh, m.body_xy[c], footbot::kRadius) < t_b;
+        const bool blocked = HiddenByABody(m, RayBetween(m, a, b), n);
         if (blocked) ++hidden;
         else expect.push_back(b);
       }
@@ -199,21 +216,17 @@ TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
       std::vector<int> expect;
       for (int b = 0; b < n; ++b) {
         if (b == a) continue;
-        const int lo = std::min(a, b), hi = std::max(a, b);  // rays go from the lower index
-        const Vec2 xl = m.body_xy[lo], xh = m.body_xy[hi];
         if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
-        const double len = (xh - xl).norm();
-        const double t_b = std::max(0.0, len - footbot::kRadius) / len;
-        bool blocked = false;
-        for (int c = 0; c < n && !blocked; ++c)
-          blocked = c != lo && c != hi && CircleEntry(xl, xh, m.body_xy[c], footbot::kRadius) < t_b;
+        const PairRay ray = RayBetween(m, a, b);
+        bool blocked = HiddenByABody(m, ray, n);
         for (size_t k = 0; k < model.obstacles.size() && !blocked; ++k) {
           const ObstacleDef& o = model.obstacles[k];
-          const double z = m.rab_pos[lo].z();
+          const double z = m.rab_pos[ray.lo].z();
           if (z < o.z || z > o.z + o.height) continue;
           blocked = (o.kind == ShapeKind::Cylinder
-                         ? CircleEntry(xl, xh, m.obstacle_xy[k], o.radius)
-                         : BoxEntry(xl, xh, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) < t_b;
+                         ? CircleEntry(ray.from, ray.to, m.obstacle_xy[k], o.radius)
+                         : BoxEntry(ray.from, ray.to, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) <
+                    ray.t_b;
           hidden_by_obstacle += blocked;
         }
         if (!blocked) expect.push_back(b);
