@@ -357,8 +357,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   }
   lua_State* L = L_;
   OpenGuardedLibraries(L, limits_.sandbox);
-  lua_pushlightuserdata(L, this);
-  lua_rawsetp(L, LUA_REGISTRYINDEX, &kLoopSelfKey);
+  *static_cast<LoopFunctions**>(lua_getextraspace(L)) = this;  // LoopFunctionsOf
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   OpenMathTypes(L);
@@ -388,6 +387,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   luaL_setfuncs(L, handle_methods, 0);
   lua_pushcfunction(L, LoopFunctionsAccess::HandleIndex);
   lua_setfield(L, -2, "__index");
+  handle_meta_ = lua_topointer(L, -1);  // kept alive by the registry
   lua_rawsetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
 
   lua_newtable(L);  // experiment
