@@ -228,16 +228,14 @@ bool ObstacleHides(const Model& model, const Media& m, const Vec2& a, const Vec2
       cx0 = std::max(x0, g.CellX(std::min(xa, xb) - eps));
       cx1 = std::min(x1, g.CellX(std::max(xa, xb) + eps));
     }
-    for (int cx = cx0; cx <= cx1; ++cx) {
-      const int c = cy * g.nx + cx;
-      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
-        const int k = g.items[s];
-        const ObstacleDef& o = model.obstacles[k];
-        if (z < o.z || z > o.z + o.height) continue;
-        const Vec2 &olo = m.obstacle_lo[k], &ohi = m.obstacle_hi[k];
-        if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
-        if (ObstacleEntry(o, m, k, a, b) < t_b) return true;
-      }
+    // Cells cx0..cx1 of a row are consecutive in the grid: their items are one range.
+    for (int s = g.cell_start[cy * g.nx + cx0], end = g.cell_start[cy * g.nx + cx1 + 1]; s < end; ++s) {
+      const int k = g.items[s];
+      const ObstacleDef& o = model.obstacles[k];
+      if (z < o.z || z > o.z + o.height) continue;
+      const Vec2 &olo = m.obstacle_lo[k], &ohi = m.obstacle_hi[k];
+      if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
+      if (ObstacleEntry(o, m, k, a, b) < t_b) return true;
     }
   }
   return false;
@@ -268,6 +266,29 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
         if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) sc.near.push_back(j);
       }
     }
+  // Obstacles that may hide a pair of a's: listed if few (rows of cells within reach, each
+  // obstacle once), else each pair walks its own cells (walk_obstacles). A segment from a is
+  // shorter than the reach, so whatever it enters lies in these cells.
+  sc.near_obstacles.clear();
+  bool walk_obstacles = false;
+  if (occlusions && n_obs > 0) {
+    const PointGrid& og = m->rab_obstacle_grid;
+    ++sc.stamp;
+    const int x0 = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach);
+    for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1 && !walk_obstacles; ++cy)
+      for (int s = og.cell_start[cy * og.nx + x0], end = og.cell_start[cy * og.nx + x1 + 1]; s < end; ++s) {
+        const int k = og.items[s];
+        if (sc.obstacle_stamp[k] == sc.stamp) continue;
+        sc.obstacle_stamp[k] = sc.stamp;
+        const ObstacleDef& o = model.obstacles[k];
+        if (pa.z() < o.z || pa.z() > o.z + o.height) continue;
+        if (static_cast<int>(sc.near_obstacles.size()) == Media::kFewObstacles) {
+          walk_obstacles = true;
+          break;
+        }
+        sc.near_obstacles.push_back(k);
+      }
+  }
   const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
   // Occluders bucketed by cc (a counting sort, not a comparison sort): a pair only scans
   // the buckets up to its cut-off (see the pair loop), nearest first.
@@ -339,7 +360,19 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
             }
           }
       }
-      if (!hidden && n_obs > 0) hidden = ObstacleHides(model, *m, xa, xb, t_b, pa.z());
+      if (!hidden && walk_obstacles) {
+        hidden = ObstacleHides(model, *m, xa, xb, t_b, pa.z());
+      } else if (!hidden) {
+        const Vec2 lo = xa.cwiseMin(xb), hi = xa.cwiseMax(xb);
+        for (int k : sc.near_obstacles) {
+          const Vec2 &olo = m->obstacle_lo[k], &ohi = m->obstacle_hi[k];
+          if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
+          if (ObstacleEntry(model.obstacles[k], *m, k, xa, xb) < t_b) {
+            hidden = true;
+            break;
+          }
+        }
+      }
       if (hidden) continue;
     }
     out.push_back(b << 2 | static_cast<int>(a_hears_b) | static_cast<int>(b_hears_a) << 1);
@@ -366,6 +399,9 @@ void SizeRabScratch(const Model& model, Media::RabScratch* sc) {
   sc->unsorted.reserve(n);
   sc->occluders.resize(n);
   sc->bucket_end.assign(Media::kOccluderBuckets + 1, 0);
+  sc->near_obstacles.reserve(Media::kFewObstacles);
+  sc->obstacle_stamp.assign(model.obstacles.size(), 0);
+  sc->stamp = 0;
 }
 
 struct RabJob {

@@ -94,7 +94,13 @@ struct Media {
     std::vector<NearBody> occluders;   // those that may hide a partner, bucketed by cc
     std::vector<NearBody> unsorted;    // occluders before bucketing
     std::vector<int> bucket_end;       // kOccluderBuckets + 1 offsets into occluders
+    std::vector<int> near_obstacles;   // within reach of one device, if few (kFewObstacles)
+    std::vector<int> obstacle_stamp;   // dedup of near_obstacles
+    int stamp = 0;
   };
+  /// Up to this many obstacles within reach, a device's pairs test them all; beyond, each
+  /// pair walks the obstacle grid's cells along its segment.
+  static constexpr int kFewObstacles = 12;
   static constexpr int kOccluderBuckets = 64;
   std::vector<RabScratch> rab_scratch;  // one per slot of the runner (UpdateMedia)
   /// rab_partners[a] = the partners b > a that a reaches unhidden, ascending, each as
