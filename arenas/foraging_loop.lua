@@ -155,6 +155,7 @@ function pre_step()
   local tick = experiment.tick
   local R = cfg.robot_radius
   local nest = cfg.nest
+  local sources = cfg.sources
   for i, r in ipairs(experiment.robots) do
     local info = robots_info[i]
     if info == nil then info = { trips = 0 }; robots_info[i] = info end
@@ -169,14 +170,18 @@ function pre_step()
           info.informed_tick = tick
         end
         local x, y = r:position()
-        for _, s in ipairs(cfg.sources) do
-          if inside(x, y, s.x, s.y, s.radius + R) then
+        -- inside() written out, and a numeric for: this runs for every robot every tick.
+        for k = 1, #sources do
+          local s = sources[k]
+          local dx, dy, touch = x - s.x, y - s.y, s.radius + R
+          if dx * dx + dy * dy < touch * touch then
             info.touched = s.name
             if info.first_touch == nil then info.first_touch = { source = s.name, tick = tick } end
             if s.discovered_tick == nil then s.discovered_tick, s.discovered_by = tick, r.id end
           end
         end
-        if inside(x, y, nest.x, nest.y, nest.radius + R) then
+        local dx, dy, home = x - nest.x, y - nest.y, nest.radius + R
+        if dx * dx + dy * dy < home * home then
           if info.touched then
             local s = cfg.by_name[info.touched]
             s.trips = s.trips + 1

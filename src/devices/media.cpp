@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace essaim {
 
@@ -39,19 +40,6 @@ void PointGrid::Setup(const Vec2& min, const Vec2& max, double cell_size, size_t
 size_t PointGrid::DiscEntries(double radius) const {
   const size_t span = static_cast<size_t>(std::ceil(2 * radius / cell)) + 1;
   return std::min<size_t>(span, nx) * std::min<size_t>(span, ny);
-}
-
-int PointGrid::CellX(double x) const {
-  // Safe for any double: NaN and ±inf land in an edge cell, never cast out of range.
-  double c = std::floor((x - origin.x()) / cell);
-  if (!(c < nx)) return nx - 1;
-  return c >= 0 ? static_cast<int>(c) : 0;
-}
-
-int PointGrid::CellY(double y) const {
-  double c = std::floor((y - origin.y()) / cell);
-  if (!(c < ny)) return ny - 1;
-  return c >= 0 ? static_cast<int>(c) : 0;
 }
 
 template <class PosFn>
@@ -83,6 +71,25 @@ void PointGrid::BuildDiscs(int n, PosFn pos, RadiusFn radius) {
   };
   int total = 0;
   for (int i = 0; i < n; ++i) each_cell(i, [&](int c) { ++cell_start[c], ++total; });
+  const size_t cells = cell_start.size() - 1;
+  for (size_t c = 1; c < cells; ++c) cell_start[c] += cell_start[c - 1];
+  cell_start[cells] = total;
+  for (int i = n - 1; i >= 0; --i) each_cell(i, [&](int c) { items[--cell_start[c]] = i; });
+}
+
+template <class LoFn, class HiFn>
+void PointGrid::BuildBoxes(int n, LoFn lo, HiFn hi) {
+  // As BuildDiscs, over each box's cells.
+  std::fill(cell_start.begin(), cell_start.end(), 0);
+  auto each_cell = [&](int i, auto&& f) {
+    const Vec2 a = lo(i), b = hi(i);
+    for (int cy = CellY(a.y()), y1 = CellY(b.y()); cy <= y1; ++cy)
+      for (int cx = CellX(a.x()), x1 = CellX(b.x()); cx <= x1; ++cx) f(cy * nx + cx);
+  };
+  int total = 0;
+  for (int i = 0; i < n; ++i) each_cell(i, [&](int c) { ++cell_start[c], ++total; });
+  // Setup's bound has a spare cell per axis; only absurd coordinates (margins of a cell) get here.
+  if (static_cast<size_t>(total) > items.size()) items.resize(total);
   const size_t cells = cell_start.size() - 1;
   for (size_t c = 1; c < cells; ++c) cell_start[c] += cell_start[c - 1];
   cell_start[cells] = total;
@@ -132,16 +139,6 @@ namespace {
 double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b) {
   return o.kind == ShapeKind::Cylinder ? CircleEntry(a, b, m.obstacle_xy[k], o.radius)
                                        : BoxEntry(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
-}
-
-/// Distance from p to obstacle k's footprint (0 inside).
-double ObstacleDistance(const ObstacleDef& o, const Media& m, int k, const Vec2& p) {
-  const Vec2 r = p - m.obstacle_xy[k];
-  if (o.kind == ShapeKind::Cylinder) return std::max(0.0, r.norm() - o.radius);
-  const Vec2& cs = m.obstacle_cs[k];
-  const Vec2 local(cs.x() * r.x() + cs.y() * r.y(), -cs.y() * r.x() + cs.x() * r.y());
-  const Vec2 out(std::max(0.0, std::abs(local.x()) - o.size_x / 2), std::max(0.0, std::abs(local.y()) - o.size_y / 2));
-  return out.norm();
 }
 }  // namespace
 
@@ -199,9 +196,49 @@ bool RabBegin(const std::vector<RobotState>& robots, Media* m) {
   m->rab_grid.Build(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
   const int n_obs = static_cast<int>(m->obstacle_xy.size());
   if (n_obs > 0)
-    m->rab_obstacle_grid.BuildDiscs(n_obs, [&](int k) { return m->obstacle_xy[k]; },
-                                    [&](int k) { return m->obstacle_radius[k]; });
+    m->rab_obstacle_grid.BuildBoxes(n_obs, [&](int k) { return m->obstacle_lo[k]; },
+                                    [&](int k) { return m->obstacle_hi[k]; });
   return true;
+}
+
+/// Whether segment a -> b enters an obstacle spanning height z before fraction t_b. Only
+/// the obstacles listed in the cells the segment crosses can: it walks them row by row,
+/// each row over the segment's x span within it. Spans are widened far beyond rounding (an
+/// extra cell costs a little; every cell of a point of the segment is visited). An
+/// obstacle in several of these cells is tested in each: the answer is the same.
+bool ObstacleHides(const Model& model, const Media& m, const Vec2& a, const Vec2& b, double t_b, double z) {
+  const PointGrid& g = m.rab_obstacle_grid;
+  const Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  const double eps = 1e-9 * (lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff() + g.cell) + 1e-12;
+  const double dx = b.x() - a.x(), dy = b.y() - a.y();
+  const int x0 = g.CellX(lo.x() - eps), x1 = g.CellX(hi.x() + eps);
+  const int y0 = g.CellY(lo.y() - eps), y1 = g.CellY(hi.y() + eps);
+  for (int cy = y0; cy <= y1; ++cy) {
+    int cx0 = x0, cx1 = x1;
+    if (y0 < y1 && dy != 0) {
+      // The row's band (open-ended at the grid's edges, where points outside land).
+      constexpr double kInf = std::numeric_limits<double>::infinity();
+      const double band_lo = cy == 0 ? -kInf : g.origin.y() + cy * g.cell - eps;
+      const double band_hi = cy == g.ny - 1 ? kInf : g.origin.y() + (cy + 1) * g.cell + eps;
+      double t0 = (band_lo - a.y()) / dy, t1 = (band_hi - a.y()) / dy;
+      if (t0 > t1) std::swap(t0, t1);
+      t0 = std::max(t0, 0.0), t1 = std::min(t1, 1.0);
+      if (t0 > t1) continue;
+      const double xa = a.x() + t0 * dx, xb = a.x() + t1 * dx;
+      cx0 = std::max(x0, g.CellX(std::min(xa, xb) - eps));
+      cx1 = std::min(x1, g.CellX(std::max(xa, xb) + eps));
+    }
+    // Cells cx0..cx1 of a row are consecutive in the grid: their items are one range.
+    for (int s = g.cell_start[cy * g.nx + cx0], end = g.cell_start[cy * g.nx + cx1 + 1]; s < end; ++s) {
+      const int k = g.items[s];
+      const ObstacleDef& o = model.obstacles[k];
+      if (z < o.z || z > o.z + o.height) continue;
+      const Vec2 &olo = m.obstacle_lo[k], &ohi = m.obstacle_hi[k];
+      if (hi.x() < olo.x() || lo.x() > ohi.x() || hi.y() < olo.y() || lo.y() > ohi.y()) continue;
+      if (ObstacleEntry(o, m, k, a, b) < t_b) return true;
+    }
+  }
+  return false;
 }
 
 /// Device a's unhidden partners b > a into m->rab_partners[a]. Reads the shared media,
@@ -229,21 +266,27 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
         if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) sc.near.push_back(j);
       }
     }
+  // Obstacles that may hide a pair of a's: listed if few (rows of cells within reach, each
+  // obstacle once), else each pair walks its own cells (walk_obstacles). A segment from a is
+  // shorter than the reach, so whatever it enters lies in these cells.
   sc.near_obstacles.clear();
+  bool walk_obstacles = false;
   if (occlusions && n_obs > 0) {
-    const PointGrid& og = m->rab_obstacle_grid;  // obstacles sit in every cell they overlap
+    const PointGrid& og = m->rab_obstacle_grid;
     ++sc.stamp;
-    for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1; ++cy)
-      for (int cx = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach); cx <= x1; ++cx) {
-        const int c = cy * og.nx + cx;
-        for (int s = og.cell_start[c]; s < og.cell_start[c + 1]; ++s) {
-          const int k = og.items[s];
-          if (sc.obstacle_stamp[k] == sc.stamp) continue;
-          sc.obstacle_stamp[k] = sc.stamp;
-          const ObstacleDef& o = model.obstacles[k];
-          if (pa.z() >= o.z && pa.z() <= o.z + o.height && ObstacleDistance(o, *m, k, xa) <= reach)
-            sc.near_obstacles.push_back(k);
+    const int x0 = og.CellX(xa.x() - reach), x1 = og.CellX(xa.x() + reach);
+    for (int cy = og.CellY(xa.y() - reach), y1 = og.CellY(xa.y() + reach); cy <= y1 && !walk_obstacles; ++cy)
+      for (int s = og.cell_start[cy * og.nx + x0], end = og.cell_start[cy * og.nx + x1 + 1]; s < end; ++s) {
+        const int k = og.items[s];
+        if (sc.obstacle_stamp[k] == sc.stamp) continue;
+        sc.obstacle_stamp[k] = sc.stamp;
+        const ObstacleDef& o = model.obstacles[k];
+        if (pa.z() < o.z || pa.z() > o.z + o.height) continue;
+        if (static_cast<int>(sc.near_obstacles.size()) == Media::kFewObstacles) {
+          walk_obstacles = true;
+          break;
         }
+        sc.near_obstacles.push_back(k);
       }
   }
   const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
@@ -317,7 +360,9 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
             }
           }
       }
-      if (!hidden && !sc.near_obstacles.empty()) {
+      if (!hidden && walk_obstacles) {
+        hidden = ObstacleHides(model, *m, xa, xb, t_b, pa.z());
+      } else if (!hidden) {
         const Vec2 lo = xa.cwiseMin(xb), hi = xa.cwiseMax(xb);
         for (int k : sc.near_obstacles) {
           const Vec2 &olo = m->obstacle_lo[k], &ohi = m->obstacle_hi[k];
@@ -349,13 +394,13 @@ void RabDeliver(Media* m) {
 
 /// Sizes a slot's scratch for the model (first tick, or after InitMedia).
 void SizeRabScratch(const Model& model, Media::RabScratch* sc) {
-  const size_t n = model.robots.size(), n_obs = model.obstacles.size();
+  const size_t n = model.robots.size();
   sc->near.reserve(n);
   sc->unsorted.reserve(n);
   sc->occluders.resize(n);
   sc->bucket_end.assign(Media::kOccluderBuckets + 1, 0);
-  sc->near_obstacles.reserve(n_obs);
-  sc->obstacle_stamp.assign(n_obs, 0);
+  sc->near_obstacles.reserve(Media::kFewObstacles);
+  sc->obstacle_stamp.assign(model.obstacles.size(), 0);
   sc->stamp = 0;
 }
 
@@ -435,6 +480,16 @@ static void SetupDiscGrid(const Vec2& lo, const Vec2& hi, double cell, const Med
   g->items.assign(entries, 0);
 }
 
+/// A grid of the obstacles' bounding boxes (BuildBoxes). A box lies within its bounding
+/// disc; a disc half a cell wider bounds it with a spare cell per axis for its margins.
+static void SetupBoxGrid(const Vec2& lo, const Vec2& hi, double cell, const Media& m, PointGrid* g) {
+  const size_t n_obs = m.obstacle_radius.size();
+  g->Setup(lo, hi, cell, 0, 4 * n_obs + 64);
+  size_t entries = 0;
+  for (double r : m.obstacle_radius) entries += g->DiscEntries(r + g->cell / 2);
+  g->items.assign(entries, 0);
+}
+
 void InitMedia(const Model& model, Media* m) {
   const size_t n = model.robots.size();
   m->rab_inbox.resize(n);
@@ -506,7 +561,7 @@ void InitMedia(const Model& model, Media* m) {
   if (rab_count >= 2) {
     const double near = m->rab_max_range + footbot::kRadius;
     m->rab_grid.Setup(lo, hi, near, n, 4 * n + 64);
-    SetupDiscGrid(lo, hi, near, *m, &m->rab_obstacle_grid);
+    SetupBoxGrid(lo, hi, near / 4, *m, &m->rab_obstacle_grid);
   }
   m->leds.clear();
   m->leds.reserve(led_capacity);

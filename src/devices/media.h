@@ -30,10 +30,20 @@ struct PointGrid {
   /// overlaps; at most `max_items` entries (see DiscEntries).
   template <class PosFn, class RadiusFn>
   void BuildDiscs(int n, PosFn pos, RadiusFn radius);
+  /// Buckets boxes 0..n-1 ([lo(i), hi(i)]) into every cell they overlap (as BuildDiscs).
+  template <class LoFn, class HiFn>
+  void BuildBoxes(int n, LoFn lo, HiFn hi);
   /// Upper bound of the cells a disc of `radius` overlaps.
   size_t DiscEntries(double radius) const;
-  int CellX(double x) const;
-  int CellY(double y) const;
+  int CellX(double x) const { return Cell((x - origin.x()) / cell, nx); }
+  int CellY(double y) const { return Cell((y - origin.y()) / cell, ny); }
+  /// floor(q) clamped to [0, n): safe for any double (NaN and ±inf land in an edge cell,
+  /// never cast out of range). Inline and without floor(): the media stage asks for a few
+  /// cells per device and per pair.
+  static int Cell(double q, int n) {
+    if (!(q < n)) return n - 1;
+    return q >= 0 ? static_cast<int>(q) : 0;  // truncation is floor for q >= 0
+  }
 };
 
 /// A lit LED of the current tick (robot ring/beacon, box or cylinder LED, <light>).
@@ -68,7 +78,9 @@ struct Media {
   int rab_devices = 0;             // robots with a RAB sensor in a medium
   double rab_max_range = 0;        // m, largest rab_range of a member
   PointGrid rab_grid;              // bodies, cell = reach + body radius
-  PointGrid rab_obstacle_grid;     // obstacles, in every cell they overlap
+  /// Obstacles by bounding box, in every cell it overlaps; cells of about a quarter of the
+  /// reach, so that a pair's segment visits few cells and each lists few obstacles.
+  PointGrid rab_obstacle_grid;
   /// A body that may hide a partner from one device: the parts of CircleEntry that do not
   /// depend on the partner (offset s from the device, |s|² - r²), computed once per device.
   struct NearBody {
@@ -82,10 +94,13 @@ struct Media {
     std::vector<NearBody> occluders;   // those that may hide a partner, bucketed by cc
     std::vector<NearBody> unsorted;    // occluders before bucketing
     std::vector<int> bucket_end;       // kOccluderBuckets + 1 offsets into occluders
-    std::vector<int> near_obstacles;
+    std::vector<int> near_obstacles;   // within reach of one device, if few (kFewObstacles)
     std::vector<int> obstacle_stamp;   // dedup of near_obstacles
     int stamp = 0;
   };
+  /// Up to this many obstacles within reach, a device's pairs test them all; beyond, each
+  /// pair walks the obstacle grid's cells along its segment.
+  static constexpr int kFewObstacles = 12;
   static constexpr int kOccluderBuckets = 64;
   std::vector<RabScratch> rab_scratch;  // one per slot of the runner (UpdateMedia)
   /// rab_partners[a] = the partners b > a that a reaches unhidden, ascending, each as

@@ -18,6 +18,8 @@ struct lua_State;
 
 namespace essaim {
 
+struct EntityHandle;
+
 struct Timeseries {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
@@ -76,7 +78,9 @@ class LoopFunctions {
   ObstacleDef obstacle_spec_;
   LightDef light_spec_;
   LuaTape tape_;
+  const void* handle_meta_ = nullptr;  // the handle metatable, compared by address
   friend struct LoopFunctionsAccess;
+  friend EntityHandle* ToEntityHandle(lua_State* L, int idx);
   friend struct LoopEntities;
 };
 

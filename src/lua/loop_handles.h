@@ -14,10 +14,10 @@ struct EntityHandle {
 };
 
 /// Registry keys (by address).
-extern const char kLoopSelfKey, kHandleMetaKey, kHandleCacheKey;
+extern const char kHandleMetaKey, kHandleCacheKey;
 
 class LoopFunctions;
-/// The loop functions that own `L` (kept in its registry under kLoopSelfKey).
+/// The loop functions that own `L` (kept in its extra space, see Load).
 LoopFunctions* LoopFunctionsOf(lua_State* L);
 
 /// Pushes the handle of `e`, creating it (with `id`) on first use.

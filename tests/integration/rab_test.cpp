@@ -239,6 +239,64 @@ TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
   EXPECT_GT(hidden_by_obstacle, 50u);  // the obstacles do hide some pairs
 }
 
+// Long ranges across the whole arena, up to its border: each pair's segment visits the
+// cells of the obstacle grid it crosses, row by row (issue 12). Every cell it touches must
+// be visited, at any slope and at the grid's edge rows and columns, for the inboxes to
+// equal one CircleEntry/BoxEntry per (pair, body or obstacle).
+TEST(RabIntegration, LongRangesAcrossScatteredObstaclesMatchBruteForceOcclusion) {
+  TempDir d;
+  d.Write("spin.lua", "function init() end function step() robot.wheels.set_velocity(5, -4) end");
+  std::string scene;
+  for (int i = 0; i < 100; ++i)  // a 10 x 10 lattice, 0.96 m apart, to 0.2 m from the walls' edge
+    scene += Bot("b" + std::to_string(i), -4.8 + 0.96 * (i % 10) + 0.03 * (i % 3), -4.8 + 0.96 * (i / 10) - 0.02 * (i % 4),
+                 "spin", "rab_range=\"6\"");
+  char buf[320];
+  for (int k = 0; k < 45; ++k) {  // small cylinders at the centres of the lattice's even rows
+    const double x = -4.32 + 0.96 * (k % 9), y = -4.32 + 1.92 * (k / 9);
+    std::snprintf(buf, sizeof buf, "<cylinder id=\"c%d\" radius=\"0.05\" height=\"0.5\" movable=\"false\">"
+                  "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>", k, x + 0.1 * (k % 3), y);
+    scene += buf;
+  }
+  for (int k = 0; k < 5; ++k) {  // long, slightly turned walls along the odd rows' centres
+    std::snprintf(buf, sizeof buf, "<box id=\"w%d\" size=\"2.6,0.04,0.5\" movable=\"false\">"
+                  "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>", k, -3 + 1.5 * k, -3.36 + 1.92 * k, 4 - 2 * k);
+    scene += buf;
+  }
+  auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
+  ASSERT_TRUE(run->s.ok()) << run->s.error;
+  World& w = *run->s.world;
+  const Model& model = *run->s.model;
+  const auto& m = w.media;
+  const int n = static_cast<int>(w.robots.size());
+  size_t heard = 0, hidden_by_obstacle = 0;
+  for (int tick = 0; tick < 3; ++tick) {
+    RunTicks(w, 1);
+    for (int a = 0; a < n; ++a) {
+      std::vector<int> expect;
+      for (int b = 0; b < n; ++b) {
+        if (b == a) continue;
+        if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
+        const PairRay ray = RayBetween(m, a, b);
+        if (HiddenByABody(m, ray, n)) continue;
+        bool blocked = false;
+        for (size_t k = 0; k < model.obstacles.size() && !blocked; ++k) {
+          const ObstacleDef& o = model.obstacles[k];
+          blocked = (o.kind == ShapeKind::Cylinder
+                         ? CircleEntry(ray.from, ray.to, m.obstacle_xy[k], o.radius)
+                         : BoxEntry(ray.from, ray.to, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) <
+                    ray.t_b;
+        }
+        hidden_by_obstacle += blocked;
+        if (!blocked) expect.push_back(b);
+      }
+      heard += expect.size();
+      EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
+    }
+  }
+  EXPECT_GT(heard, 1000u);
+  EXPECT_GT(hidden_by_obstacle, 1000u);
+}
+
 // The media stage routes devices on several threads (issue 12): a dense crowd that steers
 // by what it hears must get the same inboxes, message by message and tick by tick, with
 // 1, 2 and 3 threads (and so the same poses).
