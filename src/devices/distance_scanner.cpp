@@ -34,10 +34,9 @@ void Insert(ScanReading* readings, int* count, double angle, double distance) {
   ++*count;
 }
 
-double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const Pose2& p, double angle,
+/// The reading of one ray in direction (c, s), robot heading included.
+double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const Pose2& p, double c, double s,
             double length, double min) {
-  const double a = p.yaw + angle;
-  const double c = std::cos(a), s = std::sin(a);
   const Vec2 from(p.x + footbot::kRadius * c, p.y + footbot::kRadius * s);
   const Vec2 to(from.x() + length * c, from.y() + length * s);
   const RayHit hit = physics.CastRay(near_shapes, from, to);
@@ -45,18 +44,55 @@ double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const
   return hit.distance > min ? hit.distance * 100 : -1;
 }
 
+/// Sensor k's angle on the platform at rotation `theta` (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
+double SensorAngle(double theta, int k) {
+  const double angles[4] = {theta, theta + kPi / 2, theta + kPi, theta - kPi / 2};
+  return WrapSigned(angles[k]);
+}
+
+void Insert(Readings& rd, int k, double angle, double d) {
+  if (k % 2 == 0) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
+  else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+}
+
 /// The four sensors at platform angle `theta`.
 void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double theta) {
-  Readings& rd = robot.rd;
-  const double angles[4] = {theta, theta + kPi / 2, theta + kPi, theta - kPi / 2};
   for (int k = 0; k < 4; ++k) {
-    const double angle = WrapSigned(angles[k]);
+    const double angle = SensorAngle(theta, k);
+    const double a = p.yaw + angle;
     const bool shortRange = (k % 2) == 0;
-    const double d = Cast(physics, robot.scanner_candidates, p, angle, shortRange ? kShortLength : kLongLength,
-                          shortRange ? kShortMin : kLongMin);
-    if (shortRange) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
-    else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+    const double d = Cast(physics, robot.scanner_candidates, p, std::cos(a), std::sin(a),
+                          shortRange ? kShortLength : kLongLength, shortRange ? kShortMin : kLongMin);
+    Insert(robot.rd, k, angle, d);
   }
+}
+
+/// Speed mode: each sensor's kSweepRays rays from `start`, `span` apart. A long sensor's rays
+/// are tested only against the shapes in the wedge they sweep (when at most a quarter turn):
+/// most of the 1.5 m disc lies outside it. Readings inserted in CastAll's order.
+void Sweep(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double start, double span) {
+  double angle[kSweepRays][4], reading[kSweepRays][4];
+  for (int k = 0; k < 4; ++k) {
+    const bool shortRange = (k % 2) == 0;
+    double c[kSweepRays], s[kSweepRays];
+    for (int i = 0; i < kSweepRays; ++i) {
+      angle[i][k] = SensorAngle(start + i * span, k);
+      const double a = p.yaw + angle[i][k];
+      c[i] = std::cos(a);
+      s[i] = std::sin(a);
+    }
+    const RayCandidates* shapes = &robot.scanner_candidates;
+    if (!shortRange && (kSweepRays - 1) * span <= kPi / 2) {
+      PhysicsWorld::SelectWedge(robot.scanner_candidates, {c[0], s[0]}, {c[kSweepRays - 1], s[kSweepRays - 1]},
+                                &robot.scanner_wedge);
+      shapes = &robot.scanner_wedge;
+    }
+    for (int i = 0; i < kSweepRays; ++i)
+      reading[i][k] = Cast(physics, *shapes, p, c[i], s[i], shortRange ? kShortLength : kLongLength,
+                           shortRange ? kShortMin : kLongMin);
+  }
+  for (int i = 0; i < kSweepRays; ++i)
+    for (int k = 0; k < 4; ++k) Insert(robot.rd, k, angle[i][k], reading[i][k]);
 }
 }  // namespace
 
@@ -96,7 +132,7 @@ void SenseScanner(RobotState& robot, const PhysicsWorld& physics) {
   } else if (s.mode == ScannerMode::Speed) {
     // The span is always swept counter-clockwise (ARGoS quirk: negative rpm mis-handled).
     const double span = WrapUnsigned(s.rotation - s.previous_rotation) / kSweepRays;
-    for (int k = 0; k < kSweepRays; ++k) CastAll(physics, p, robot, s.previous_rotation + k * span);
+    Sweep(physics, p, robot, s.previous_rotation, span);
   }
   s.previous_rotation = s.rotation;
 }

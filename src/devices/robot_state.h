@@ -110,6 +110,7 @@ struct RobotState {
   // capacity kept: no allocation once the densest neighbourhood has been seen).
   RayCandidates proximity_candidates;
   RayCandidates scanner_candidates;
+  RayCandidates scanner_wedge;  // those a long sensor's sweep can hit (distance_scanner.cpp)
 };
 
 }  // namespace essaim

@@ -591,6 +591,19 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   return hit;
 }
 
+void PhysicsWorld::SelectWedge(const RayCandidates& all, const Vec2& u0, const Vec2& u1, RayCandidates* out) {
+  out->center = all.center;
+  out->items.clear();
+  out->items.reserve(all.items.size());  // grows with `all` only
+  // A point of the wedge (less than π wide) lies left of u0 and right of u1; a circle holding
+  // one has its centre within its radius of both lines. A superset of the circles that meet it.
+  for (const RayCandidate& c : all.items) {
+    const double mx = c.cx - all.center.x(), my = c.cy - all.center.y();
+    if (u0.x() * my - u0.y() * mx < -c.r || mx * u1.y() - my * u1.x() < -c.r) continue;
+    out->items.push_back(c);
+  }
+}
+
 void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const {
   out->clear();
   RobotQuery q(center, radius, out);

@@ -99,6 +99,12 @@ class PhysicsWorld {
   /// shapes skipped once the nearest-first scan passes the closest hit cannot beat it).
   /// Kind and index are those of the first closest in that order (ties are rare).
   RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
+  /// The candidates of `all` that a ray can hit when it lies on a half-line from the gather
+  /// centre whose direction is between unit vectors `u0` and `u1` (counter-clockwise from u0,
+  /// less than π on): those whose circle comes within its radius of that wedge. Same order,
+  /// same centre, so CastRay on `out` answers such rays as on `all`, with fewer rejects (a
+  /// scanner's six sweep rays share one; issue 12).
+  static void SelectWedge(const RayCandidates& all, const Vec2& u0, const Vec2& u1, RayCandidates* out);
   /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
   /// bounding box within the square of half-side `radius` around `center`. A cheap,
   /// conservative pre-test: false means no ray of that length from there can hit anything.
