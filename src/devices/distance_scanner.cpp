@@ -67,10 +67,14 @@ void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, dou
   }
 }
 
-/// Speed mode: each sensor's kSweepRays rays from `start`, `span` apart. A long sensor's rays
-/// are tested only against the shapes in the wedge they sweep (when at most a quarter turn):
-/// most of the 1.5 m disc lies outside it. Readings inserted in CastAll's order.
+/// Speed mode: each sensor's kSweepRays rays from `start`, `span` apart. The short sensors'
+/// rays are tested against the shapes within their reach, each long sensor's against those
+/// near the sector it sweeps (when at most a quarter turn): most of the 1.5 m disc lies
+/// outside both. Readings inserted in CastAll's order.
 void Sweep(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double start, double span) {
+  const Vec2 centre(p.x, p.y);
+  physics.GatherRayCandidates(centre, footbot::kRadius + kShortLength, footbot::kScannerElevation, robot.index,
+                              &robot.scanner_candidates);
   double angle[kSweepRays][4], reading[kSweepRays][4];
   for (int k = 0; k < 4; ++k) {
     const bool shortRange = (k % 2) == 0;
@@ -82,9 +86,13 @@ void Sweep(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, doubl
       s[i] = std::sin(a);
     }
     const RayCandidates* shapes = &robot.scanner_candidates;
-    if (!shortRange && (kSweepRays - 1) * span <= kPi / 2) {
-      PhysicsWorld::SelectWedge(robot.scanner_candidates, {c[0], s[0]}, {c[kSweepRays - 1], s[kSweepRays - 1]},
-                                &robot.scanner_wedge);
+    if (!shortRange) {
+      const double radius = footbot::kRadius + kLongLength;
+      if ((kSweepRays - 1) * span <= kPi / 2)
+        physics.GatherWedgeCandidates(centre, radius, {c[0], s[0]}, {c[kSweepRays - 1], s[kSweepRays - 1]},
+                                      footbot::kScannerElevation, robot.index, &robot.scanner_wedge);
+      else
+        physics.GatherRayCandidates(centre, radius, footbot::kScannerElevation, robot.index, &robot.scanner_wedge);
       shapes = &robot.scanner_wedge;
     }
     for (int i = 0; i < kSweepRays; ++i)
@@ -124,10 +132,9 @@ void SenseScanner(RobotState& robot, const PhysicsWorld& physics) {
   rd.scanner_short_count = 0;
   rd.scanner_long_count = 0;
   const Pose2 p = physics.RobotPose(robot.index);
-  if (s.mode != ScannerMode::Off)  // one tree query for all of this tick's rays
+  if (s.mode == ScannerMode::Position) {
     physics.GatherRayCandidates({p.x, p.y}, footbot::kRadius + kLongLength, footbot::kScannerElevation, robot.index,
                                 &robot.scanner_candidates);
-  if (s.mode == ScannerMode::Position) {
     CastAll(physics, p, robot, s.rotation);
   } else if (s.mode == ScannerMode::Speed) {
     // The span is always swept counter-clockwise (ARGoS quirk: negative rpm mis-handled).

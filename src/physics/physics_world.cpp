@@ -488,24 +488,69 @@ void PhysicsWorld::EnsureRayGrid() const {
   im.grid_built_at.store(im.shapes_moved, std::memory_order_release);
 }
 
-void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
-                                       RayCandidates* out) const {
-  EnsureRayGrid();
-  std::vector<RayCandidate>& found = out->scratch;
-  found.clear();
-  const double r = radius + kCircleSlack;
-  double lo = 0, hi = 0;  // m, range of `near`
-  // ReachesHeight's rule: shapes spanning z, not the excluded robot; then circles that reach the disc.
-  impl_->ray_grid.ForEachNear(center.x(), center.y(), r, [&](const GridCircle& g) {
+namespace {
+/// The gathers' scan: circles filed in the grid cells over the box (x0, y0)-(x1, y1) that span
+/// `z` (ReachesHeight's rule), are not robot `exclude_robot`, reach the disc of radius `r` round
+/// `center` and pass `keep(dx, dy, circle radius)` (offset from the centre). Each goes into
+/// `found` with its `near`; [*lo, *hi] covers those.
+template <class Keep>
+void Collect(const ShapeGrid& grid, double x0, double y0, double x1, double y1, const Vec2& center, double r,
+             double z, int exclude_robot, Keep&& keep, std::vector<RayCandidate>* found, double* lo, double* hi) {
+  grid.ForEachInBox(x0, y0, x1, y1, [&](const GridCircle& g) {
     if (z < g.bottom || z > g.top || (exclude_robot >= 0 && g.robot == exclude_robot)) return;
     const double dx = g.cx - center.x(), dy = g.cy - center.y();
     const double d2 = dx * dx + dy * dy;
-    if (d2 > (g.r + r) * (g.r + r)) return;
+    if (d2 > (g.r + r) * (g.r + r) || !keep(dx, dy, g.r)) return;
     const double near = std::sqrt(d2) - g.r;
-    lo = std::min(lo, near);
-    hi = std::max(hi, near);
-    found.push_back({near, g.cx, g.cy, g.r, g.shape});
+    *lo = std::min(*lo, near);
+    *hi = std::max(*hi, near);
+    found->push_back({near, g.cx, g.cy, g.r, g.shape});
   });
+}
+
+/// Whether a circle at offset (dx, dy) from the apex, of radius r, comes within r of the wedge
+/// from unit vector u0 counter-clockwise to u1 (less than π on): a point of the wedge lies left
+/// of u0 and right of u1, so a circle holding one has its centre within r of both lines.
+/// A superset of the circles that meet it.
+bool NearWedge(double dx, double dy, double r, const Vec2& u0, const Vec2& u1) {
+  return u0.x() * dy - u0.y() * dx >= -r && dx * u1.y() - dy * u1.x() >= -r;
+}
+}  // namespace
+
+void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
+                                       RayCandidates* out) const {
+  EnsureRayGrid();
+  out->scratch.clear();
+  const double r = radius + kCircleSlack;
+  double lo = 0, hi = 0;  // m, range of `near`
+  Collect(impl_->ray_grid, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center, r, z,
+          exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
+  out->center = center;
+  SortNearestFirst(lo, hi, out);
+}
+
+void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1,
+                                         double z, int exclude_robot, RayCandidates* out) const {
+  EnsureRayGrid();
+  out->scratch.clear();
+  const double r = radius + kCircleSlack;
+  // The sector's bounding box: its apex, the ends of its edges, and its rim where it crosses
+  // an axis. The grid files circles by their boxes, so those that meet the sector are in it.
+  double x0 = center.x(), y0 = center.y(), x1 = x0, y1 = y0;
+  auto cover = [&](const Vec2& u) {
+    x0 = std::min(x0, center.x() + r * u.x());
+    x1 = std::max(x1, center.x() + r * u.x());
+    y0 = std::min(y0, center.y() + r * u.y());
+    y1 = std::max(y1, center.y() + r * u.y());
+  };
+  cover(u0);
+  cover(u1);
+  for (const Vec2& axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
+    if (NearWedge(axis.x(), axis.y(), 0, u0, u1)) cover(axis);
+  double lo = 0, hi = 0;  // m, range of `near`
+  Collect(impl_->ray_grid, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack, y1 + kCircleSlack, center, r,
+          z, exclude_robot, [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); },
+          &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -531,8 +576,26 @@ void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
   const int steps = static_cast<int>((hi - lo) * inv_step) + 1;
   std::vector<int>& ends = out->bucket_ends;
   ends.reserve(kMaxNearSteps + 1);  // once: later gathers never allocate for it
-  ends.assign(steps, 0);
   auto step_of = [&](double near) { return std::min(static_cast<int>((near - lo) * inv_step), steps - 1); };
+  const size_t n = found.size();
+  if (n * n < 2 * static_cast<size_t>(steps)) {
+    // Few candidates over many steps (a wedge's): a stable insertion sort on the step
+    // (`ends` holds the steps placed so far) beats sweeping every step. Same order.
+    ends.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const int k = step_of(found[i].near);
+      size_t j = i;
+      for (; j > 0 && ends[j - 1] > k; --j) {
+        ends[j] = ends[j - 1];
+        items[j] = items[j - 1];
+      }
+      ends[j] = k;
+      items[j] = found[i];
+      items[j].near = lo + std::max(k - 1, 0) * step;
+    }
+    return;
+  }
+  ends.assign(steps, 0);
   for (const RayCandidate& c : found) ++ends[step_of(c.near)];
   for (int k = 1; k < steps; ++k) ends[k] += ends[k - 1];
   for (size_t i = found.size(); i-- > 0;) {
@@ -589,19 +652,6 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   hit.point = {(1.0f - best) * in.p1.x + best * in.p2.x, (1.0f - best) * in.p1.y + best * in.p2.y};
   hit.distance = (to - from).norm() * best;
   return hit;
-}
-
-void PhysicsWorld::SelectWedge(const RayCandidates& all, const Vec2& u0, const Vec2& u1, RayCandidates* out) {
-  out->center = all.center;
-  out->items.clear();
-  out->items.reserve(all.items.size());  // grows with `all` only
-  // A point of the wedge (less than π wide) lies left of u0 and right of u1; a circle holding
-  // one has its centre within its radius of both lines. A superset of the circles that meet it.
-  for (const RayCandidate& c : all.items) {
-    const double mx = c.cx - all.center.x(), my = c.cy - all.center.y();
-    if (u0.x() * my - u0.y() * mx < -c.r || mx * u1.y() - my * u1.x() < -c.r) continue;
-    out->items.push_back(c);
-  }
 }
 
 void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const {

@@ -93,18 +93,18 @@ class PhysicsWorld {
   /// `exclude_robot`: gathers once (one tree query) every shape such a ray can hit.
   void GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
                            RayCandidates* out) const;
+  /// GatherRayCandidates for rays on half-lines from `center`, within `radius` of it, whose
+  /// directions lie between unit vectors `u0` and `u1` (counter-clockwise from u0, less than π
+  /// on): only the shapes that come near that sector, from the grid cells over it. A scanner's
+  /// long sensor sweeps six rays through a narrow sector of its 1.5 m disc (issue 12).
+  void GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1, double z,
+                             int exclude_robot, RayCandidates* out) const;
   /// CastRay's distance for a ray inside the gathered disc, tested against the candidates
   /// only, with Box2D's own shape ray casts: the same closest fraction, bit for bit (the
   /// closest of several hits does not depend on the order they are tested in, and the
   /// shapes skipped once the nearest-first scan passes the closest hit cannot beat it).
   /// Kind and index are those of the first closest in that order (ties are rare).
   RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
-  /// The candidates of `all` that a ray can hit when it lies on a half-line from the gather
-  /// centre whose direction is between unit vectors `u0` and `u1` (counter-clockwise from u0,
-  /// less than π on): those whose circle comes within its radius of that wedge. Same order,
-  /// same centre, so CastRay on `out` answers such rays as on `all`, with fewer rejects (a
-  /// scanner's six sweep rays share one; issue 12).
-  static void SelectWedge(const RayCandidates& all, const Vec2& u0, const Vec2& u1, RayCandidates* out);
   /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
   /// bounding box within the square of half-side `radius` around `center`. A cheap,
   /// conservative pre-test: false means no ray of that length from there can hit anything.

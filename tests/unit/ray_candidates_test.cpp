@@ -159,8 +159,8 @@ TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
   EXPECT_GT(hits, rays / 3);  // dense: most rays hit something
 }
 
-// A scanner's long sensor casts its six sweep rays against the candidates in the wedge they
-// sweep (PhysicsWorld::SelectWedge). In the dense crowd among tiled walls and rotated boxes:
+// A scanner's long sensor casts its six sweep rays against the candidates near the sector they
+// sweep (PhysicsWorld::GatherWedgeCandidates). In the dense crowd among tiled walls and rotated boxes:
 // wedges of every width up to a quarter turn (zero included), rays on both edges and inside,
 // rays at every corner of every box in reach (nudged by up to 1e-4 rad) and along the walls'
 // faces, each from the body surface as the scanner casts them. Same hit or miss, same distance
@@ -199,8 +199,8 @@ TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
       w.physics.GatherRayCandidates({p.x, p.y}, r + length, z, i, &all);
       for (int k = 0; k < 8; ++k) {  // random wedges, as the sweep gives them (span >= 0)
         const double a0 = rng.Uniform(-kPi, kPi), width = k == 0 ? 0.0 : rng.Uniform(0.0, kPi / 2);
-        PhysicsWorld::SelectWedge(all, {std::cos(a0), std::sin(a0)},
-                                  {std::cos(a0 + width), std::sin(a0 + width)}, &wedge);
+        w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, {std::cos(a0), std::sin(a0)},
+                                        {std::cos(a0 + width), std::sin(a0 + width)}, z, i, &wedge);
         all_items += all.items.size();
         wedge_items += wedge.items.size();
         for (int j = 0; j <= 5; ++j) {
@@ -227,11 +227,10 @@ TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
             const bool left = corner % 2 == 0;  // the ray opens or closes the wedge
             const double b = left ? a + 0.3 : a - 0.3;
             const Vec2 v(std::cos(b), std::sin(b));
-            if (left) PhysicsWorld::SelectWedge(all, u, v, &wedge);
-            else PhysicsWorld::SelectWedge(all, v, u, &wedge);
+            w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, left ? u : v, left ? v : u, z, i, &wedge);
             check(p, a, length, i);
             if (::testing::Test::HasFatalFailure()) return;
-            PhysicsWorld::SelectWedge(all, u, u, &wedge);  // a single direction
+            w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, u, u, z, i, &wedge);  // a single direction
             check(p, a, length, i);
             if (::testing::Test::HasFatalFailure()) return;
           }
@@ -282,20 +281,19 @@ TEST(RayCandidates, WedgeAlongLongAndRotatedWalls) {
   ASSERT_TRUE(s.ok()) << s.error;
   PhysicsWorld& ph = s.world->physics;
   const double z = footbot::kScannerElevation, length = 1.42, r = footbot::kRadius;
-  RayCandidates all, wedge;
+  RayCandidates wedge;
   Rng rng;
   rng.Seed(9);
   int rays = 0, hits = 0;
   for (int i = 0; i < ph.RobotCount(); ++i) {
     const Pose2 p = ph.RobotPose(i);
-    ph.GatherRayCandidates({p.x, p.y}, r + length, z, i, &all);
     for (int k = 0; k < 2000; ++k) {
       // Directions near the walls' own (0, 17°, 90° and their opposites) and anywhere.
       const double base = (k % 5) * kPi / 2 + (k % 5 == 4 ? DegToRad(17) : 0);
       const double a = k % 3 == 0 ? rng.Uniform(-kPi, kPi) : base + (k % 2 ? 1 : -1) * rng.Uniform(0.0, 1e-3);
       const double width = rng.Uniform(0.0, kPi / 2), before = rng.Uniform(0.0, width);
-      PhysicsWorld::SelectWedge(all, {std::cos(a - before), std::sin(a - before)},
-                                {std::cos(a - before + width), std::sin(a - before + width)}, &wedge);
+      ph.GatherWedgeCandidates({p.x, p.y}, r + length, {std::cos(a - before), std::sin(a - before)},
+                               {std::cos(a - before + width), std::sin(a - before + width)}, z, i, &wedge);
       const Vec2 u(std::cos(a), std::sin(a));
       const Vec2 from(p.x + r * u.x(), p.y + r * u.y()), to = from + length * u;
       const RayHit tree = ph.CastRay(from, to, z, i), listed = ph.CastRay(wedge, from, to);
