@@ -21,15 +21,16 @@ constexpr double kLongMin = 0.12;
 constexpr int kSweepRays = 6;           // rays per sensor per tick in speed mode
 
 /// Inserts (angle, distance) into a sorted array of `*count` readings; an equal angle
-/// overwrites (map semantics).
+/// overwrites (map semantics). Shifts while it scans (a sweep mostly appends); writes at most
+/// readings[*count], within the array since a tick inserts no more than it holds.
 void Insert(ScanReading* readings, int* count, double angle, double distance) {
   int i = *count;
-  while (i > 0 && readings[i - 1].angle > angle) --i;
-  if (i > 0 && readings[i - 1].angle == angle) {
+  for (; i > 0 && readings[i - 1].angle > angle; --i) readings[i] = readings[i - 1];
+  if (i > 0 && readings[i - 1].angle == angle) {  // rare (a stopped sweep): undo the shift
     readings[i - 1].distance = distance;
+    for (int j = i; j < *count; ++j) readings[j] = readings[j + 1];
     return;
   }
-  for (int j = *count; j > i; --j) readings[j] = readings[j - 1];
   readings[i] = {angle, distance};
   ++*count;
 }
@@ -46,8 +47,13 @@ double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const
 
 /// Sensor k's angle on the platform at rotation `theta` (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
 double SensorAngle(double theta, int k) {
-  const double angles[4] = {theta, theta + kPi / 2, theta + kPi, theta - kPi / 2};
-  return WrapSigned(angles[k]);
+  double a = theta;
+  if (k == 1) a = theta + kPi / 2;
+  else if (k == 2) a = theta + kPi;
+  else if (k == 3) a = theta - kPi / 2;
+  // WrapSigned's result without its fmod in the common case: for π < a < 2π, fmod(a, 2π) is a.
+  if (a > kPi && a < kTwoPi) return a - kTwoPi;
+  return WrapSigned(a);
 }
 
 void Insert(Readings& rd, int k, double angle, double d) {
