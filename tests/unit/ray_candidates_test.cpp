@@ -159,12 +159,13 @@ TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
   EXPECT_GT(hits, rays / 3);  // dense: most rays hit something
 }
 
-// A scanner's long sensor casts its six sweep rays against the candidates near the sector they
-// sweep (PhysicsWorld::GatherWedgeCandidates). In the dense crowd among tiled walls and rotated boxes:
-// wedges of every width up to a quarter turn (zero included), rays on both edges and inside,
-// rays at every corner of every box in reach (nudged by up to 1e-4 rad) and along the walls'
-// faces, each from the body surface as the scanner casts them. Same hit or miss, same distance
-// to the last bit as Box2D's tree; and the wedges keep only a fraction of the disc's candidates.
+// A scanner's long sensor casts its six sweep rays against the candidates near the sector
+// they sweep (PhysicsWorld::GatherWedgeCandidates). In the dense crowd among tiled walls and
+// rotated boxes: sectors of every width up to a quarter turn (zero included), rays on both
+// edges and inside, rays at every corner of every box in reach (nudged by up to 1e-4 rad) as a
+// sector's edge or its only direction, each from the body surface as the scanner casts them.
+// Same hit or miss, same distance to the last bit as Box2D's tree; and the sectors keep only a
+// fraction of the disc's candidates.
 TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
   TempDir d;
   d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
@@ -241,7 +242,7 @@ TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
   EXPECT_GT(rays, 100000);
   EXPECT_GT(corners, 1000);
   EXPECT_GT(hits, rays / 3);
-  EXPECT_LT(wedge_items * 3, all_items);  // the point of it: a wedge keeps a third at most
+  EXPECT_LT(wedge_items * 3, all_items);  // the point of it: a sector keeps a third at most
 }
 
 // Long walls (32 m, tiled by the physics) in a sparse arena, some rotated: rays parallel to a
