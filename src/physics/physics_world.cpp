@@ -616,8 +616,8 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   if (candidates.items.empty() || b2DistanceSquared(in.p1, in.p2) <= 0) return {};
   const Vec2 d = to - from;
   const double len2 = d.squaredNorm();
-  const double inv_len2 = 1 / len2;  // a multiply per candidate, not a divide
   const double len = std::sqrt(len2);
+  const double ux = d.x() / len, uy = d.y() / len;
   // Every point of candidate c is at least c.near from the gather centre, hence at least
   // c.near - start from the ray's start: once that exceeds the closest hit so far (or the
   // ray's length), no candidate left can be hit closer. The 1 mm the bounding circles are
@@ -628,11 +628,13 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   const b2Fixture* closest = nullptr;
   for (const RayCandidate& c : candidates.items) {
     if (c.near - start > reach) break;
-    // Segment to bounding-circle distance, in double: rejects most candidates cheaply.
+    // Rejects most candidates cheaply, in double: a circle the segment meets has its centre
+    // within r of the ray's line, and between r before the start and r past the end.
     const double mx = c.cx - from.x(), my = c.cy - from.y();
-    const double t = std::clamp((mx * d.x() + my * d.y()) * inv_len2, 0.0, 1.0);
-    const double ex = mx - t * d.x(), ey = my - t * d.y();
-    if (ex * ex + ey * ey > c.r * c.r) continue;
+    const double across = mx * uy - my * ux;
+    if (across * across > c.r * c.r) continue;
+    const double along = mx * ux + my * uy;
+    if (along < -c.r || along > len + c.r) continue;
     // Box2D's own shape test. The tree's walk passes a clipped maxFraction instead of 1;
     // that only rejects hits no closer than the best so far, so the minimum is the same.
     const auto* f = static_cast<const b2Fixture*>(c.fixture);
