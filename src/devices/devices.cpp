@@ -13,7 +13,13 @@ void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot
   if (c.Has(DeviceType::RabSensor)) robot.rd.rab.reserve(std::min<size_t>(model.robots.size(), 128));
   if (c.Has(DeviceType::CameraSensor)) robot.rd.blobs.reserve(64);
   if (c.Has(DeviceType::ProximitySensor)) robot.proximity_candidates.items.reserve(16);
-  if (c.Has(DeviceType::ScannerSensor)) robot.scanner_candidates.items.reserve(64);
+  if (c.Has(DeviceType::ScannerSensor)) {
+    // The long sensors' sectors turn: a new densest one may come long after the first ticks.
+    for (RayCandidates* list : {&robot.scanner_candidates, &robot.scanner_wedge}) {
+      list->items.reserve(64);
+      list->scratch.reserve(64);
+    }
+  }
   for (const DeviceConfig& d : c.actuators)
     if (d.type == DeviceType::WheelsActuator) InitWheelNoise(d, robot);
   InitBattery(def.battery, robot, physics.RobotPose(robot.index));

@@ -21,23 +21,23 @@ constexpr double kLongMin = 0.12;
 constexpr int kSweepRays = 6;           // rays per sensor per tick in speed mode
 
 /// Inserts (angle, distance) into a sorted array of `*count` readings; an equal angle
-/// overwrites (map semantics).
+/// overwrites (map semantics). Shifts while it scans (a sweep mostly appends); writes at most
+/// readings[*count], within the array since a tick inserts no more than it holds.
 void Insert(ScanReading* readings, int* count, double angle, double distance) {
   int i = *count;
-  while (i > 0 && readings[i - 1].angle > angle) --i;
-  if (i > 0 && readings[i - 1].angle == angle) {
+  for (; i > 0 && readings[i - 1].angle > angle; --i) readings[i] = readings[i - 1];
+  if (i > 0 && readings[i - 1].angle == angle) {  // rare (a stopped sweep): undo the shift
     readings[i - 1].distance = distance;
+    for (int j = i; j < *count; ++j) readings[j] = readings[j + 1];
     return;
   }
-  for (int j = *count; j > i; --j) readings[j] = readings[j - 1];
   readings[i] = {angle, distance};
   ++*count;
 }
 
-double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const Pose2& p, double angle,
+/// The reading of one ray in direction (c, s), robot heading included.
+double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const Pose2& p, double c, double s,
             double length, double min) {
-  const double a = p.yaw + angle;
-  const double c = std::cos(a), s = std::sin(a);
   const Vec2 from(p.x + footbot::kRadius * c, p.y + footbot::kRadius * s);
   const Vec2 to(from.x() + length * c, from.y() + length * s);
   const RayHit hit = physics.CastRay(near_shapes, from, to);
@@ -45,18 +45,68 @@ double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const
   return hit.distance > min ? hit.distance * 100 : -1;
 }
 
+/// Sensor k's angle on the platform at rotation `theta` (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
+double SensorAngle(double theta, int k) {
+  double a = theta;
+  if (k == 1) a = theta + kPi / 2;
+  else if (k == 2) a = theta + kPi;
+  else if (k == 3) a = theta - kPi / 2;
+  // WrapSigned's result without its fmod in the common case: for π < a < 2π, fmod(a, 2π) is a.
+  if (a > kPi && a < kTwoPi) return a - kTwoPi;
+  return WrapSigned(a);
+}
+
+void Insert(Readings& rd, int k, double angle, double d) {
+  if (k % 2 == 0) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
+  else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+}
+
 /// The four sensors at platform angle `theta`.
 void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double theta) {
-  Readings& rd = robot.rd;
-  const double angles[4] = {theta, theta + kPi / 2, theta + kPi, theta - kPi / 2};
   for (int k = 0; k < 4; ++k) {
-    const double angle = WrapSigned(angles[k]);
+    const double angle = SensorAngle(theta, k);
+    const double a = p.yaw + angle;
     const bool shortRange = (k % 2) == 0;
-    const double d = Cast(physics, robot.scanner_candidates, p, angle, shortRange ? kShortLength : kLongLength,
-                          shortRange ? kShortMin : kLongMin);
-    if (shortRange) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
-    else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+    const double d = Cast(physics, robot.scanner_candidates, p, std::cos(a), std::sin(a),
+                          shortRange ? kShortLength : kLongLength, shortRange ? kShortMin : kLongMin);
+    Insert(robot.rd, k, angle, d);
   }
+}
+
+/// Speed mode: each sensor's kSweepRays rays from `start`, `span` apart. The short sensors'
+/// rays are tested against the shapes within their reach, each long sensor's against those
+/// near the sector it sweeps (when at most a quarter turn): most of the 1.5 m disc lies
+/// outside both. Readings inserted in CastAll's order.
+void Sweep(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double start, double span) {
+  const Vec2 centre(p.x, p.y);
+  physics.GatherRayCandidates(centre, footbot::kRadius + kShortLength, footbot::kScannerElevation, robot.index,
+                              &robot.scanner_candidates);
+  double angle[kSweepRays][4], reading[kSweepRays][4];
+  for (int k = 0; k < 4; ++k) {
+    const bool shortRange = (k % 2) == 0;
+    double c[kSweepRays], s[kSweepRays];
+    for (int i = 0; i < kSweepRays; ++i) {
+      angle[i][k] = SensorAngle(start + i * span, k);
+      const double a = p.yaw + angle[i][k];
+      c[i] = std::cos(a);
+      s[i] = std::sin(a);
+    }
+    const RayCandidates* shapes = &robot.scanner_candidates;
+    if (!shortRange) {
+      const double radius = footbot::kRadius + kLongLength;
+      if ((kSweepRays - 1) * span <= kPi / 2)
+        physics.GatherWedgeCandidates(centre, radius, {c[0], s[0]}, {c[kSweepRays - 1], s[kSweepRays - 1]},
+                                      footbot::kScannerElevation, robot.index, &robot.scanner_wedge);
+      else
+        physics.GatherRayCandidates(centre, radius, footbot::kScannerElevation, robot.index, &robot.scanner_wedge);
+      shapes = &robot.scanner_wedge;
+    }
+    for (int i = 0; i < kSweepRays; ++i)
+      reading[i][k] = Cast(physics, *shapes, p, c[i], s[i], shortRange ? kShortLength : kLongLength,
+                           shortRange ? kShortMin : kLongMin);
+  }
+  for (int i = 0; i < kSweepRays; ++i)
+    for (int k = 0; k < 4; ++k) Insert(robot.rd, k, angle[i][k], reading[i][k]);
 }
 }  // namespace
 
@@ -88,15 +138,14 @@ void SenseScanner(RobotState& robot, const PhysicsWorld& physics) {
   rd.scanner_short_count = 0;
   rd.scanner_long_count = 0;
   const Pose2 p = physics.RobotPose(robot.index);
-  if (s.mode != ScannerMode::Off)  // one tree query for all of this tick's rays
+  if (s.mode == ScannerMode::Position) {
     physics.GatherRayCandidates({p.x, p.y}, footbot::kRadius + kLongLength, footbot::kScannerElevation, robot.index,
                                 &robot.scanner_candidates);
-  if (s.mode == ScannerMode::Position) {
     CastAll(physics, p, robot, s.rotation);
   } else if (s.mode == ScannerMode::Speed) {
     // The span is always swept counter-clockwise (ARGoS quirk: negative rpm mis-handled).
     const double span = WrapUnsigned(s.rotation - s.previous_rotation) / kSweepRays;
-    for (int k = 0; k < kSweepRays; ++k) CastAll(physics, p, robot, s.previous_rotation + k * span);
+    Sweep(physics, p, robot, s.previous_rotation, span);
   }
   s.previous_rotation = s.rotation;
 }

@@ -109,7 +109,8 @@ struct RobotState {
   // Shapes near the robot, gathered once per tick for all rays of one sensor (scratch,
   // capacity kept: no allocation once the densest neighbourhood has been seen).
   RayCandidates proximity_candidates;
-  RayCandidates scanner_candidates;
+  RayCandidates scanner_candidates;  // speed mode: within the short sensors' reach only
+  RayCandidates scanner_wedge;       // near the sector a long sensor sweeps (distance_scanner.cpp)
 };
 
 }  // namespace essaim

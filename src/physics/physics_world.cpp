@@ -488,24 +488,69 @@ void PhysicsWorld::EnsureRayGrid() const {
   im.grid_built_at.store(im.shapes_moved, std::memory_order_release);
 }
 
-void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
-                                       RayCandidates* out) const {
-  EnsureRayGrid();
-  std::vector<RayCandidate>& found = out->scratch;
-  found.clear();
-  const double r = radius + kCircleSlack;
-  double lo = 0, hi = 0;  // m, range of `near`
-  // ReachesHeight's rule: shapes spanning z, not the excluded robot; then circles that reach the disc.
-  impl_->ray_grid.ForEachNear(center.x(), center.y(), r, [&](const GridCircle& g) {
+namespace {
+/// The gathers' scan: circles filed in the grid cells over the box (x0, y0)-(x1, y1) that span
+/// `z` (ReachesHeight's rule), are not robot `exclude_robot`, reach the disc of radius `r` round
+/// `center` and pass `keep(dx, dy, circle radius)` (offset from the centre). Each goes into
+/// `found` with its `near`; [*lo, *hi] covers those.
+template <class Keep>
+void Collect(const ShapeGrid& grid, double x0, double y0, double x1, double y1, const Vec2& center, double r,
+             double z, int exclude_robot, Keep&& keep, std::vector<RayCandidate>* found, double* lo, double* hi) {
+  grid.ForEachInBox(x0, y0, x1, y1, [&](const GridCircle& g) {
     if (z < g.bottom || z > g.top || (exclude_robot >= 0 && g.robot == exclude_robot)) return;
     const double dx = g.cx - center.x(), dy = g.cy - center.y();
     const double d2 = dx * dx + dy * dy;
-    if (d2 > (g.r + r) * (g.r + r)) return;
+    if (d2 > (g.r + r) * (g.r + r) || !keep(dx, dy, g.r)) return;
     const double near = std::sqrt(d2) - g.r;
-    lo = std::min(lo, near);
-    hi = std::max(hi, near);
-    found.push_back({near, g.cx, g.cy, g.r, g.shape});
+    *lo = std::min(*lo, near);
+    *hi = std::max(*hi, near);
+    found->push_back({near, g.cx, g.cy, g.r, g.shape});
   });
+}
+
+/// Whether a circle at offset (dx, dy) from the apex, of radius r, comes within r of the wedge
+/// from unit vector u0 counter-clockwise to u1 (less than π on): a point of the wedge lies left
+/// of u0 and right of u1, so a circle holding one has its centre within r of both lines.
+/// A superset of the circles that meet it.
+bool NearWedge(double dx, double dy, double r, const Vec2& u0, const Vec2& u1) {
+  return u0.x() * dy - u0.y() * dx >= -r && dx * u1.y() - dy * u1.x() >= -r;
+}
+}  // namespace
+
+void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
+                                       RayCandidates* out) const {
+  EnsureRayGrid();
+  out->scratch.clear();
+  const double r = radius + kCircleSlack;
+  double lo = 0, hi = 0;  // m, range of `near`
+  Collect(impl_->ray_grid, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center, r, z,
+          exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
+  out->center = center;
+  SortNearestFirst(lo, hi, out);
+}
+
+void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1,
+                                         double z, int exclude_robot, RayCandidates* out) const {
+  EnsureRayGrid();
+  out->scratch.clear();
+  const double r = radius + kCircleSlack;
+  // The sector's bounding box: its apex, the ends of its edges, and its rim where it crosses
+  // an axis. The grid files circles by their boxes, so those that meet the sector are in it.
+  double x0 = center.x(), y0 = center.y(), x1 = x0, y1 = y0;
+  auto cover = [&](const Vec2& u) {
+    x0 = std::min(x0, center.x() + r * u.x());
+    x1 = std::max(x1, center.x() + r * u.x());
+    y0 = std::min(y0, center.y() + r * u.y());
+    y1 = std::max(y1, center.y() + r * u.y());
+  };
+  cover(u0);
+  cover(u1);
+  for (const Vec2& axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
+    if (NearWedge(axis.x(), axis.y(), 0, u0, u1)) cover(axis);
+  double lo = 0, hi = 0;  // m, range of `near`
+  Collect(impl_->ray_grid, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack, y1 + kCircleSlack, center, r,
+          z, exclude_robot, [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); },
+          &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -531,8 +576,26 @@ void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
   const int steps = static_cast<int>((hi - lo) * inv_step) + 1;
   std::vector<int>& ends = out->bucket_ends;
   ends.reserve(kMaxNearSteps + 1);  // once: later gathers never allocate for it
-  ends.assign(steps, 0);
   auto step_of = [&](double near) { return std::min(static_cast<int>((near - lo) * inv_step), steps - 1); };
+  const size_t n = found.size();
+  if (n * n < 2 * static_cast<size_t>(steps)) {
+    // Few candidates over many steps (a wedge's): a stable insertion sort on the step
+    // (`ends` holds the steps placed so far) beats sweeping every step. Same order.
+    ends.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const int k = step_of(found[i].near);
+      size_t j = i;
+      for (; j > 0 && ends[j - 1] > k; --j) {
+        ends[j] = ends[j - 1];
+        items[j] = items[j - 1];
+      }
+      ends[j] = k;
+      items[j] = found[i];
+      items[j].near = lo + std::max(k - 1, 0) * step;
+    }
+    return;
+  }
+  ends.assign(steps, 0);
   for (const RayCandidate& c : found) ++ends[step_of(c.near)];
   for (int k = 1; k < steps; ++k) ends[k] += ends[k - 1];
   for (size_t i = found.size(); i-- > 0;) {
@@ -553,8 +616,8 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   if (candidates.items.empty() || b2DistanceSquared(in.p1, in.p2) <= 0) return {};
   const Vec2 d = to - from;
   const double len2 = d.squaredNorm();
-  const double inv_len2 = 1 / len2;  // a multiply per candidate, not a divide
   const double len = std::sqrt(len2);
+  const double ux = d.x() / len, uy = d.y() / len;
   // Every point of candidate c is at least c.near from the gather centre, hence at least
   // c.near - start from the ray's start: once that exceeds the closest hit so far (or the
   // ray's length), no candidate left can be hit closer. The 1 mm the bounding circles are
@@ -565,11 +628,13 @@ RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, 
   const b2Fixture* closest = nullptr;
   for (const RayCandidate& c : candidates.items) {
     if (c.near - start > reach) break;
-    // Segment to bounding-circle distance, in double: rejects most candidates cheaply.
+    // Rejects most candidates cheaply, in double: a circle the segment meets has its centre
+    // within r of the ray's line, and between r before the start and r past the end.
     const double mx = c.cx - from.x(), my = c.cy - from.y();
-    const double t = std::clamp((mx * d.x() + my * d.y()) * inv_len2, 0.0, 1.0);
-    const double ex = mx - t * d.x(), ey = my - t * d.y();
-    if (ex * ex + ey * ey > c.r * c.r) continue;
+    const double across = mx * uy - my * ux;
+    if (across * across > c.r * c.r) continue;
+    const double along = mx * ux + my * uy;
+    if (along < -c.r || along > len + c.r) continue;
     // Box2D's own shape test. The tree's walk passes a clipped maxFraction instead of 1;
     // that only rejects hits no closer than the best so far, so the minimum is the same.
     const auto* f = static_cast<const b2Fixture*>(c.fixture);

@@ -93,6 +93,12 @@ class PhysicsWorld {
   /// `exclude_robot`: gathers once (one tree query) every shape such a ray can hit.
   void GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
                            RayCandidates* out) const;
+  /// GatherRayCandidates for rays on half-lines from `center`, within `radius` of it, whose
+  /// directions lie between unit vectors `u0` and `u1` (counter-clockwise from u0, less than π
+  /// on): only the shapes that come near that sector, from the grid cells over it. A scanner's
+  /// long sensor sweeps six rays through a narrow sector of its 1.5 m disc (issue 12).
+  void GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1, double z,
+                             int exclude_robot, RayCandidates* out) const;
   /// CastRay's distance for a ray inside the gathered disc, tested against the candidates
   /// only, with Box2D's own shape ray casts: the same closest fraction, bit for bit (the
   /// closest of several hits does not depend on the order they are tested in, and the

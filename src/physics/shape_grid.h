@@ -30,7 +30,13 @@ class ShapeGrid {
   /// `radius` round (x, y) overlaps: all circles that can touch that disc, and some others.
   /// In filing order within a cell, cells row by row: deterministic.
   template <class F>
-  void ForEachNear(double x, double y, double radius, F&& f) const;
+  void ForEachNear(double x, double y, double radius, F&& f) const {
+    ForEachInBox(x - radius, y - radius, x + radius, y + radius, f);
+  }
+  /// Calls f(circle) once for every circle filed in a cell that the box [x0, x1] × [y0, y1]
+  /// overlaps: all circles whose bounding box meets it, and some others. Same order as ForEachNear.
+  template <class F>
+  void ForEachInBox(double x0, double y0, double x1, double y1, F&& f) const;
 
   int Columns() const { return nx_; }
   int Rows() const { return ny_; }
@@ -66,10 +72,10 @@ inline int ShapeGrid::Column(double x) const { return grid_detail::Clamp((x - x0
 inline int ShapeGrid::Row(double y) const { return grid_detail::Clamp((y - y0_) * inv_cell_, ny_); }
 
 template <class F>
-void ShapeGrid::ForEachNear(double x, double y, double radius, F&& f) const {
+void ShapeGrid::ForEachInBox(double x0, double y0, double x1, double y1, F&& f) const {
   if (nx_ == 0) return;
-  const int cx0 = Column(x - radius), cx1 = Column(x + radius);
-  const int cy0 = Row(y - radius), cy1 = Row(y + radius);
+  const int cx0 = Column(x0), cx1 = Column(x1);
+  const int cy0 = Row(y0), cy1 = Row(y1);
   for (int row = cy0; row <= cy1; ++row) {
     for (int col = cx0; col <= cx1; ++col) {
       const int cell = row * nx_ + col;

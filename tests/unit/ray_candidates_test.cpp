@@ -159,6 +159,156 @@ TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
   EXPECT_GT(hits, rays / 3);  // dense: most rays hit something
 }
 
+// A scanner's long sensor casts its six sweep rays against the candidates near the sector
+// they sweep (PhysicsWorld::GatherWedgeCandidates). In the dense crowd among tiled walls and
+// rotated boxes: sectors of every width up to a quarter turn (zero included), rays on both
+// edges and inside, rays at every corner of every box in reach (nudged by up to 1e-4 rad) as a
+// sector's edge or its only direction, each from the body surface as the scanner casts them.
+// Same hit or miss, same distance to the last bit as Box2D's tree; and the sectors keep only a
+// fraction of the disc's candidates.
+TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
+  TempDir d;
+  d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
+                        "20 * robot.random.uniform()) end\n");
+  Scene s = Load(d, Experiment(Crowd(300, 11, 2.2), WheelsController("c", "wander.lua"), 40, 11));
+  ASSERT_TRUE(s.ok()) << s.error;
+  World& w = *s.world;
+  const std::vector<ObstacleDef>& obstacles = s.model->obstacles;
+  ASSERT_EQ(static_cast<int>(obstacles.size()), w.physics.ObstacleCount());
+  Rng rng;
+  rng.Seed(78);
+  RayCandidates all, wedge;
+  const double z = footbot::kScannerElevation, length = 1.42, r = footbot::kRadius;
+  int rays = 0, hits = 0, corners = 0;
+  size_t all_items = 0, wedge_items = 0;
+  auto check = [&](const Pose2& p, double a, double len, int self) {
+    const Vec2 u(std::cos(a), std::sin(a));
+    const Vec2 from(p.x + r * u.x(), p.y + r * u.y()), to = from + len * u;
+    const RayHit tree = w.physics.CastRay(from, to, z, self);
+    const RayHit listed = w.physics.CastRay(wedge, from, to);
+    ++rays;
+    hits += tree.Hit();
+    ASSERT_EQ(tree.Hit(), listed.Hit()) << "robot " << self << " ray " << rays;
+    if (tree.Hit()) {
+      ASSERT_EQ(tree.distance, listed.distance) << "robot " << self << " ray " << rays;
+    }
+  };
+  for (int round = 0; round < 2; ++round) {
+    RunTicks(w, round == 0 ? 3 : 20);
+    for (int i = 0; i < w.physics.RobotCount(); ++i) {
+      const Pose2 p = w.physics.RobotPose(i);
+      w.physics.GatherRayCandidates({p.x, p.y}, r + length, z, i, &all);
+      for (int k = 0; k < 8; ++k) {  // random wedges, as the sweep gives them (span >= 0)
+        const double a0 = rng.Uniform(-kPi, kPi), width = k == 0 ? 0.0 : rng.Uniform(0.0, kPi / 2);
+        w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, {std::cos(a0), std::sin(a0)},
+                                        {std::cos(a0 + width), std::sin(a0 + width)}, z, i, &wedge);
+        all_items += all.items.size();
+        wedge_items += wedge.items.size();
+        for (int j = 0; j <= 5; ++j) {
+          check(p, a0 + j * width / 5, length, i);
+          if (::testing::Test::HasFatalFailure()) return;
+        }
+        check(p, a0 + rng.Uniform(0.0, width), rng.Uniform(0.0, length), i);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+      // Rays at each box corner in reach, and along the faces: the ray is a wedge's edge.
+      for (size_t o = 0; o < obstacles.size(); ++o) {
+        if (obstacles[o].kind != ShapeKind::Box) continue;
+        const Pose2 q = w.physics.ObstaclePose(static_cast<int>(o));
+        const double hx = obstacles[o].size_x / 2, hy = obstacles[o].size_y / 2;
+        for (int corner = 0; corner < 4; ++corner) {
+          const double lx = corner & 1 ? hx : -hx, ly = corner & 2 ? hy : -hy;
+          const Vec2 e(q.x + lx * std::cos(q.yaw) - ly * std::sin(q.yaw) - p.x,
+                       q.y + lx * std::sin(q.yaw) + ly * std::cos(q.yaw) - p.y);
+          if (e.norm() > r + length || e.norm() < r) continue;
+          ++corners;
+          for (double nudge : {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-4, -1e-4}) {
+            const double a = std::atan2(e.y(), e.x()) + nudge;
+            const Vec2 u(std::cos(a), std::sin(a));
+            const bool left = corner % 2 == 0;  // the ray opens or closes the wedge
+            const double b = left ? a + 0.3 : a - 0.3;
+            const Vec2 v(std::cos(b), std::sin(b));
+            w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, left ? u : v, left ? v : u, z, i, &wedge);
+            check(p, a, length, i);
+            if (::testing::Test::HasFatalFailure()) return;
+            w.physics.GatherWedgeCandidates({p.x, p.y}, r + length, u, u, z, i, &wedge);  // a single direction
+            check(p, a, length, i);
+            if (::testing::Test::HasFatalFailure()) return;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(rays, 100000);
+  EXPECT_GT(corners, 1000);
+  EXPECT_GT(hits, rays / 3);
+  EXPECT_LT(wedge_items * 3, all_items);  // the point of it: a sector keeps a third at most
+}
+
+// Long walls (32 m, tiled by the physics) in a sparse arena, some rotated: rays parallel to a
+// wall's face at distances straddling it, along it, at its ends and corners, from robots near
+// it, through the wedge of a long sensor's sweep. Same hits as Box2D's tree.
+TEST(RayCandidates, WedgeAlongLongAndRotatedWalls) {
+  TempDir d;
+  d.Write("still.lua", "function step() end\n");
+  std::string arena =
+      "<box id=\"n\" size=\"32,0.1,0.5\" movable=\"false\"><body position=\"0,1,0\"/></box>"
+      "<box id=\"r\" size=\"12,0.2,0.5\" movable=\"false\"><body position=\"0,-1,0\" orientation=\"17,0,0\"/></box>"
+      "<box id=\"e\" size=\"0.1,9,0.5\" movable=\"false\"><body position=\"2,0,0\" orientation=\"90,0,0\"/></box>";
+  // Robots anywhere clear of the walls (x, y, yaw in degrees, half sizes), down to 1 mm away.
+  const double walls[3][5] = {{0, 1, 0, 16, 0.05}, {0, -1, 17, 6, 0.1}, {2, 0, 90, 0.05, 4.5}};
+  auto clear = [&](double x, double y) {
+    for (const auto& b : walls) {
+      const double a = DegToRad(b[2]), dx = x - b[0], dy = y - b[1];
+      const double lx = std::abs(dx * std::cos(a) + dy * std::sin(a)), ly = std::abs(-dx * std::sin(a) + dy * std::cos(a));
+      const double ex = std::max(lx - b[3], 0.0), ey = std::max(ly - b[4], 0.0);
+      if (ex * ex + ey * ey < std::pow(footbot::kRadius + 0.001, 2)) return false;
+    }
+    return true;
+  };
+  Rng place;
+  place.Seed(5);
+  std::vector<Vec2> placed;
+  while (placed.size() < 40) {
+    const Vec2 c(place.Uniform(-3, 3), place.Uniform(-3, 3));
+    if (!clear(c.x(), c.y())) continue;
+    bool apart = true;
+    for (const Vec2& o : placed) apart = apart && (o - c).norm() > 2 * footbot::kRadius + 0.01;
+    if (!apart) continue;
+    arena += FootBot("fb" + std::to_string(placed.size()), c.x(), c.y(), 0, "c");
+    placed.push_back(c);
+  }
+  Scene s = Load(d, Experiment(arena, WheelsController("c", "still.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  PhysicsWorld& ph = s.world->physics;
+  const double z = footbot::kScannerElevation, length = 1.42, r = footbot::kRadius;
+  RayCandidates wedge;
+  Rng rng;
+  rng.Seed(9);
+  int rays = 0, hits = 0;
+  for (int i = 0; i < ph.RobotCount(); ++i) {
+    const Pose2 p = ph.RobotPose(i);
+    for (int k = 0; k < 2000; ++k) {
+      // Directions near the walls' own (0, 17°, 90° and their opposites) and anywhere.
+      const double base = (k % 5) * kPi / 2 + (k % 5 == 4 ? DegToRad(17) : 0);
+      const double a = k % 3 == 0 ? rng.Uniform(-kPi, kPi) : base + (k % 2 ? 1 : -1) * rng.Uniform(0.0, 1e-3);
+      const double width = rng.Uniform(0.0, kPi / 2), before = rng.Uniform(0.0, width);
+      ph.GatherWedgeCandidates({p.x, p.y}, r + length, {std::cos(a - before), std::sin(a - before)},
+                               {std::cos(a - before + width), std::sin(a - before + width)}, z, i, &wedge);
+      const Vec2 u(std::cos(a), std::sin(a));
+      const Vec2 from(p.x + r * u.x(), p.y + r * u.y()), to = from + length * u;
+      const RayHit tree = ph.CastRay(from, to, z, i), listed = ph.CastRay(wedge, from, to);
+      ++rays;
+      hits += tree.Hit();
+      ASSERT_EQ(tree.Hit(), listed.Hit()) << "robot " << i << " ray " << k;
+      if (tree.Hit()) {
+        ASSERT_EQ(tree.distance, listed.distance) << "robot " << i << " ray " << k;
+      }
+    }
+  }
+  EXPECT_GT(hits, rays / 10);
+}
+
 // The candidates come from a grid rebuilt after shapes move: a teleported robot, an added,
 // moved or removed obstacle is seen where it is now, without a physics step in between.
 TEST(RayCandidates, FollowTeleportsAndObstaclesAddedMovedOrRemoved) {
