@@ -8,6 +8,7 @@
 
 #include "core/rng.h"
 #include "devices/media.h"
+#include "lua/bind_byte.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -268,6 +269,67 @@ TEST(RangeAndBearing, SetDataErrors) {
   ASSERT_EQ(rb.size(), 1u);
   std::vector<int> got(rb[0].data, rb[0].data + rb[0].size);
   EXPECT_EQ(got, std::vector<int>({1, 2, 3, 4, 5, 6, 7, 8, 9, 99}));
+}
+
+TEST(RangeAndBearing, SetDataConvertsEachElementOnceAsACast) {
+  // set_data(array) reads each element once (a proxy's __index runs once per element) and
+  // converts integers and floats alike: LuaNumberToByte of the element as a double, so
+  // integers beyond 2^53 round first, as the double they were read as before.
+  TempDir d;
+  d.Write("conv.lua", R"(
+local rab = robot.range_and_bearing
+reads = 0
+function init()
+  local proxy = setmetatable({}, {__index = function(_, i) reads = reads + 1; return 3 * i end,
+                                  __len = function() return 10 end})
+  rab.set_data(proxy)
+  log(reads, ' ', math.type(2^53 + 1), ' ', math.type(9007199254740993))
+  rab.set_data({9007199254740993, -9007199254740995, math.mininteger, math.maxinteger, 255.0, -0.5, 1e300,
+                2^53, -300, 44.7})
+end
+function step() end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "conv"), RabController("conv", "conv.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"10 float integer"}));
+  const double as_read[] = {9007199254740993.0, -9007199254740995.0, -9223372036854775808.0, 9223372036854775807.0,
+                            255.0, -0.5, 1e300, 9007199254740992.0, -300.0, 44.7};
+  std::vector<int> want;
+  for (double v : as_read) want.push_back(LuaNumberToByte(v));
+  EXPECT_EQ(want, std::vector<int>({0, 252, 0, 0, 255, 0, 0, 0, 212, 44}));
+  const std::vector<uint8_t>& got = ls->s.world->robots[0].cmd.rab_data;
+  EXPECT_EQ(std::vector<int>(got.begin(), got.end()), want);
+}
+
+TEST(RangeAndBearing, SetDataOfALargePayloadIsCheckedBeforeWritten) {
+  // Payloads longer than the one-pass buffer (256) take the check-then-write path: same
+  // errors, same untouched payload on a bad element, same bytes otherwise.
+  TempDir d;
+  d.Write("big.lua", R"(
+local rab = robot.range_and_bearing
+function init()
+  local t = {}
+  for i = 1, 300 do t[i] = i end
+  rab.set_data(t)
+  for _, bad in ipairs({'x', 0/0, 1/0}) do
+    local u = {}
+    for i = 1, 300 do u[i] = 7 end
+    u[300] = bad
+    local ok, err = pcall(rab.set_data, u)
+    log(ok and 'ok' or err)
+  end
+end
+function step() end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "big", "rab_data_size=\"300\""), RabController("big", "big.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  ASSERT_EQ(ls->lines.size(), 3u);
+  EXPECT_NE(ls->lines[0].find("element #300 is not a number"), std::string::npos) << ls->lines[0];
+  EXPECT_NE(ls->lines[1].find("element #300 is nan"), std::string::npos) << ls->lines[1];
+  EXPECT_NE(ls->lines[2].find("element #300 is inf"), std::string::npos) << ls->lines[2];
+  const std::vector<uint8_t>& got = ls->s.world->robots[0].cmd.rab_data;
+  ASSERT_EQ(got.size(), 300u);
+  for (int i = 0; i < 300; ++i) EXPECT_EQ(got[static_cast<size_t>(i)], (i + 1) % 256) << i;
 }
 
 TEST(RangeAndBearing, StaleEntriesBecomeNil) {
