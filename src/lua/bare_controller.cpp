@@ -68,7 +68,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
     *error = "robot " + def.id + ": cannot create a Lua state";
     return false;
   }
-  lua_gc(L, LUA_GCGEN, 0, 0);  // as LuaController: the same collector costs the same
+  lua_gc(L, LUA_GCGEN, 0, 0);  // Lua's generational defaults; the run's own tuning is not the floor's
   luaL_openlibs(L);
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");

@@ -2,6 +2,7 @@
 // robot.range_and_bearing[i] = {range, horizontal_bearing, vertical_bearing, data}.
 // Each message and its data table are fresh every step, as in ARGoS: a controller may
 // keep last step's message and compare it with the new one. Bytes are Lua integers.
+#include <algorithm>
 #include <cmath>
 
 #include "lua/bind_byte.h"
@@ -10,6 +11,28 @@
 namespace essaim {
 
 namespace {
+constexpr lua_Integer kOnePassBytes = 256;  // payloads up to this are read once into a stack buffer
+
+/// array[i] as a byte, or a Lua error naming the element. One lua_geti per call: a table
+/// with __index sees each element read once per pass, as in ARGoS.
+uint8_t ElementByte(lua_State* L, lua_Integer i) {
+  if (lua_geti(L, 1, i) != LUA_TNUMBER)
+    luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is not a number", static_cast<int>(i));
+  int exact = 0;
+  const lua_Integer n = lua_tointegerx(L, -1, &exact);  // bytes are integers: the cheap read
+  constexpr lua_Integer kExactInDouble = lua_Integer{1} << 53;
+  if (exact && n >= -kExactInDouble && n <= kExactInDouble) {  // LuaNumberToByte(double(n)), without the double
+    lua_pop(L, 1);
+    return static_cast<uint8_t>(n);
+  }
+  const double v = exact ? static_cast<double>(n) : lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  if (!std::isfinite(v))
+    luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is %s (must be a finite number)",
+               static_cast<int>(i), std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+  return LuaNumberToByte(v);
+}
+
 int SetData(lua_State* L) {
   RobotState* r = UpvalueRobot(L);
   const lua_Integer size = static_cast<lua_Integer>(r->cmd.rab_data.size());
@@ -19,23 +42,15 @@ int SetData(lua_State* L) {
     if (static_cast<lua_Integer>(luaL_len(L, 1)) != size)
       return luaL_error(L, "robot.range_and_bearing.set_data(array) expects an array of %d numbers (rab_data_size), got %d",
                         static_cast<int>(size), static_cast<int>(luaL_len(L, 1)));
-    // Check everything first: a bad element leaves the payload untouched.
-    for (lua_Integer i = 1; i <= size; ++i) {
-      int t = lua_geti(L, 1, i);
-      lua_pop(L, 1);
-      if (t != LUA_TNUMBER)
-        return luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is not a number", static_cast<int>(i));
-      lua_geti(L, 1, i);
-      const double v = lua_tonumber(L, -1);
-      lua_pop(L, 1);
-      if (!std::isfinite(v))
-        return luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is %s (must be a finite number)",
-                          static_cast<int>(i), std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
-    }
-    for (lua_Integer i = 1; i <= size; ++i) {
-      lua_geti(L, 1, i);
-      r->cmd.rab_data[static_cast<size_t>(i - 1)] = LuaNumberToByte(lua_tonumber(L, -1));
-      lua_pop(L, 1);
+    // Every element is checked before the payload changes: a bad one leaves it untouched.
+    uint8_t* out = r->cmd.rab_data.data();
+    if (size <= kOnePassBytes) {
+      uint8_t bytes[kOnePassBytes];
+      for (lua_Integer i = 1; i <= size; ++i) bytes[i - 1] = ElementByte(L, i);
+      std::copy(bytes, bytes + size, out);
+    } else {  // rare big payloads: a checking pass, then a writing pass
+      for (lua_Integer i = 1; i <= size; ++i) ElementByte(L, i);
+      for (lua_Integer i = 1; i <= size; ++i) out[i - 1] = ElementByte(L, i);
     }
     return 0;
   }

@@ -8,6 +8,7 @@
 
 #include "core/rng.h"
 #include "devices/media.h"
+#include "lua/bind_byte.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -235,6 +236,40 @@ end
                                                  "true true 2 2 true nil nil 4 10 3 6"}));
 }
 
+TEST(RangeAndBearing, KeptMessagesSurviveTheCollectorsOwnCycles) {
+  // No collectgarbage() here: the run's own generational collector (its tuned minor and
+  // major multipliers) promotes kept messages through its minor and major cycles while the
+  // controller churns garbage. Every kept message and data table must still read what it
+  // read when it arrived, 150 ticks later included.
+  TempDir d;
+  d.Write("send.lua",
+          "n = 0\nfunction init() end\n"
+          "function step() n = n + 1; robot.range_and_bearing.set_data(1, n % 256); "
+          "robot.range_and_bearing.set_data(2, (7 * n) % 256) end\n");
+  d.Write("recv.lua", R"(
+local kept, first, second, junk = {}, {}, {}, {}
+local checked, wrong = 0, 0
+function init() end
+function step()
+  for i = 1, 400 do junk[i % 50 + 1] = {i, tostring(i)} end  -- garbage: many collections
+  local m = robot.range_and_bearing[1]
+  if m then
+    kept[#kept + 1], first[#kept + 1], second[#kept + 1] = m, m.data[1], m.data[2]
+  end
+  for k = 1, #kept do
+    checked = checked + 1
+    if kept[k].data[1] ~= first[k] or kept[k].data[2] ~= second[k] or #kept[k].data ~= 10 then wrong = wrong + 1 end
+  end
+  if #kept == 150 then log(checked, ' ', wrong, ' ', tostring(kept[1] ~= kept[2]), ' ', tostring(kept[1].data ~= kept[2].data)) end
+end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
+                                        RabController("send", "send.lua") + RabController("recv", "recv.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  RunTicks(*ls->s.world, 152);
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"11325 0 true true"}));  // 1 + 2 + ... + 150 checks
+}
+
 TEST(RangeAndBearing, SetDataErrors) {
   TempDir d;
   d.Write("bad.lua",
@@ -268,6 +303,67 @@ TEST(RangeAndBearing, SetDataErrors) {
   ASSERT_EQ(rb.size(), 1u);
   std::vector<int> got(rb[0].data, rb[0].data + rb[0].size);
   EXPECT_EQ(got, std::vector<int>({1, 2, 3, 4, 5, 6, 7, 8, 9, 99}));
+}
+
+TEST(RangeAndBearing, SetDataConvertsEachElementOnceAsACast) {
+  // set_data(array) reads each element once (a proxy's __index runs once per element) and
+  // converts integers and floats alike: LuaNumberToByte of the element as a double, so
+  // integers beyond 2^53 round first, as the double they were read as before.
+  TempDir d;
+  d.Write("conv.lua", R"(
+local rab = robot.range_and_bearing
+reads = 0
+function init()
+  local proxy = setmetatable({}, {__index = function(_, i) reads = reads + 1; return 3 * i end,
+                                  __len = function() return 10 end})
+  rab.set_data(proxy)
+  log(reads, ' ', math.type(2^53 + 1), ' ', math.type(9007199254740993))
+  rab.set_data({9007199254740993, -9007199254740995, math.mininteger, math.maxinteger, 255.0, -0.5, 1e300,
+                2^53, -300, 44.7})
+end
+function step() end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "conv"), RabController("conv", "conv.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"10 float integer"}));
+  const double as_read[] = {9007199254740993.0, -9007199254740995.0, -9223372036854775808.0, 9223372036854775807.0,
+                            255.0, -0.5, 1e300, 9007199254740992.0, -300.0, 44.7};
+  std::vector<int> want;
+  for (double v : as_read) want.push_back(LuaNumberToByte(v));
+  EXPECT_EQ(want, std::vector<int>({0, 252, 0, 0, 255, 0, 0, 0, 212, 44}));
+  const std::vector<uint8_t>& got = ls->s.world->robots[0].cmd.rab_data;
+  EXPECT_EQ(std::vector<int>(got.begin(), got.end()), want);
+}
+
+TEST(RangeAndBearing, SetDataOfALargePayloadIsCheckedBeforeWritten) {
+  // Payloads longer than the one-pass buffer (256) take the check-then-write path: same
+  // errors, same untouched payload on a bad element, same bytes otherwise.
+  TempDir d;
+  d.Write("big.lua", R"(
+local rab = robot.range_and_bearing
+function init()
+  local t = {}
+  for i = 1, 300 do t[i] = i end
+  rab.set_data(t)
+  for _, bad in ipairs({'x', 0/0, 1/0}) do
+    local u = {}
+    for i = 1, 300 do u[i] = 7 end
+    u[300] = bad
+    local ok, err = pcall(rab.set_data, u)
+    log(ok and 'ok' or err)
+  end
+end
+function step() end
+)");
+  auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "big", "rab_data_size=\"300\""), RabController("big", "big.lua")));
+  ASSERT_TRUE(ls->s.ok()) << ls->s.error;
+  ASSERT_EQ(ls->lines.size(), 3u);
+  EXPECT_NE(ls->lines[0].find("element #300 is not a number"), std::string::npos) << ls->lines[0];
+  EXPECT_NE(ls->lines[1].find("element #300 is nan"), std::string::npos) << ls->lines[1];
+  EXPECT_NE(ls->lines[2].find("element #300 is inf"), std::string::npos) << ls->lines[2];
+  const std::vector<uint8_t>& got = ls->s.world->robots[0].cmd.rab_data;
+  ASSERT_EQ(got.size(), 300u);
+  for (int i = 0; i < 300; ++i) EXPECT_EQ(got[static_cast<size_t>(i)], (i + 1) % 256) << i;
 }
 
 TEST(RangeAndBearing, StaleEntriesBecomeNil) {
