@@ -37,7 +37,7 @@ std::string Cylinder(const std::string& id, double x, double y, bool movable, co
   std::snprintf(buf, sizeof buf,
                 "<cylinder id=\"%s\" radius=\"0.1\" height=\"0.2\" movable=\"%s\" %s><body position=\"%g,%g,0\" "
                 "orientation=\"0,0,0\"/>%s</cylinder>",
-                id.c_str(), x, y, movable ? "true" : "false", movable ? "mass=\"0.1\"" : "", leds.c_str());
+                id.c_str(), movable ? "true" : "false", movable ? "mass=\"0.1\"" : "", x, y, leds.c_str());
   return buf;
 }
 
