@@ -61,25 +61,14 @@ void PointGrid::Build(int n, PosFn pos) {
 
 template <class PosFn, class RadiusFn>
 void PointGrid::BuildDiscs(int n, PosFn pos, RadiusFn radius) {
-  // As Build, over each disc's box of cells: count, prefix sums, fill backwards.
-  std::fill(cell_start.begin(), cell_start.end(), 0);
-  auto each_cell = [&](int i, auto&& f) {
-    const Vec2 p = pos(i);
-    const double r = radius(i);
-    for (int cy = CellY(p.y() - r), y1 = CellY(p.y() + r); cy <= y1; ++cy)
-      for (int cx = CellX(p.x() - r), x1 = CellX(p.x() + r); cx <= x1; ++cx) f(cy * nx + cx);
-  };
-  int total = 0;
-  for (int i = 0; i < n; ++i) each_cell(i, [&](int c) { ++cell_start[c], ++total; });
-  const size_t cells = cell_start.size() - 1;
-  for (size_t c = 1; c < cells; ++c) cell_start[c] += cell_start[c - 1];
-  cell_start[cells] = total;
-  for (int i = n - 1; i >= 0; --i) each_cell(i, [&](int c) { items[--cell_start[c]] = i; });
+  // Each disc over the cells of its bounding box.
+  BuildBoxes(n, [&](int i) { return Vec2(pos(i).array() - radius(i)); },
+             [&](int i) { return Vec2(pos(i).array() + radius(i)); });
 }
 
 template <class LoFn, class HiFn>
 void PointGrid::BuildBoxes(int n, LoFn lo, HiFn hi) {
-  // As BuildDiscs, over each box's cells.
+  // As Build, over each box's cells: count, prefix sums, fill backwards.
   std::fill(cell_start.begin(), cell_start.end(), 0);
   auto each_cell = [&](int i, auto&& f) {
     const Vec2 a = lo(i), b = hi(i);
@@ -471,22 +460,14 @@ void UpdateLeds(const Model& model, const PhysicsWorld& physics, const std::vect
 }
 }  // namespace
 
-/// A grid of the obstacles' bounding discs, each in every cell it overlaps.
-static void SetupDiscGrid(const Vec2& lo, const Vec2& hi, double cell, const Media& m, PointGrid* g) {
+/// A grid of the obstacles, each in every cell its bounding disc, widened by `slack_cells`
+/// cells, overlaps (a box's margins need half a cell: BuildBoxes).
+static void SetupObstacleGrid(const Vec2& lo, const Vec2& hi, double cell, double slack_cells, const Media& m,
+                              PointGrid* g) {
   const size_t n_obs = m.obstacle_radius.size();
   g->Setup(lo, hi, cell, 0, 4 * n_obs + 64);
   size_t entries = 0;
-  for (double r : m.obstacle_radius) entries += g->DiscEntries(r);
-  g->items.assign(entries, 0);
-}
-
-/// A grid of the obstacles' bounding boxes (BuildBoxes). A box lies within its bounding
-/// disc; a disc half a cell wider bounds it with a spare cell per axis for its margins.
-static void SetupBoxGrid(const Vec2& lo, const Vec2& hi, double cell, const Media& m, PointGrid* g) {
-  const size_t n_obs = m.obstacle_radius.size();
-  g->Setup(lo, hi, cell, 0, 4 * n_obs + 64);
-  size_t entries = 0;
-  for (double r : m.obstacle_radius) entries += g->DiscEntries(r + g->cell / 2);
+  for (double r : m.obstacle_radius) entries += g->DiscEntries(r + slack_cells * g->cell);
   g->items.assign(entries, 0);
 }
 
@@ -561,7 +542,7 @@ void InitMedia(const Model& model, Media* m) {
   if (rab_count >= 2) {
     const double near = m->rab_max_range + footbot::kRadius;
     m->rab_grid.Setup(lo, hi, near, n, 4 * n + 64);
-    SetupBoxGrid(lo, hi, near / 4, *m, &m->rab_obstacle_grid);
+    SetupObstacleGrid(lo, hi, near / 4, 0.5, *m, &m->rab_obstacle_grid);
   }
   m->leds.clear();
   m->leds.reserve(led_capacity);
@@ -572,7 +553,7 @@ void InitMedia(const Model& model, Media* m) {
     // Occlusion rays are at most h·sqrt(2) long: cells of about h/2 keep the cells a ray's
     // box touches few and small.
     m->camera_body_grid.Setup(lo, hi, h / 2, n, 4 * n + 64);
-    SetupDiscGrid(lo, hi, h / 2, *m, &m->camera_obstacle_grid);
+    SetupObstacleGrid(lo, hi, h / 2, 0, *m, &m->camera_obstacle_grid);
   }
   m->rab_devices = static_cast<int>(rab_count);
   m->ready = true;

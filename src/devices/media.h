@@ -30,7 +30,8 @@ struct PointGrid {
   /// overlaps; at most `max_items` entries (see DiscEntries).
   template <class PosFn, class RadiusFn>
   void BuildDiscs(int n, PosFn pos, RadiusFn radius);
-  /// Buckets boxes 0..n-1 ([lo(i), hi(i)]) into every cell they overlap (as BuildDiscs).
+  /// Buckets boxes 0..n-1 ([lo(i), hi(i)]) into every cell they overlap; items grow past
+  /// `max_items` only for absurd coordinates.
   template <class LoFn, class HiFn>
   void BuildBoxes(int n, LoFn lo, HiFn hi);
   /// Upper bound of the cells a disc of `radius` overlaps.

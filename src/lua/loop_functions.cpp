@@ -133,18 +133,6 @@ struct LoopFunctionsAccess {
     return 0;
   }
   static int HandleIndex(lua_State* L) {
-    // Method names first, in one raw lookup: every r:method() call comes through here. The
-    // same checks as ToEntityHandle, against the metatable it was given as upvalue.
-    if (lua_touserdata(L, 1) && lua_getmetatable(L, 1)) {
-      const bool handle = lua_rawequal(L, -1, lua_upvalueindex(1));
-      const char* k = handle && lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : nullptr;
-      if (k && k[0] != 'i' && k[0] != 'k') {  // not "id", "kind" nor "index" (compared as C strings below)
-        lua_pushvalue(L, 2);
-        lua_rawget(L, -2);
-        return 1;
-      }
-      lua_pop(L, 1);
-    }
     EntityHandle* h = ToEntityHandle(L, 1);
     if (!h) luaL_typeerror(L, 1, "entity handle");
     const char* k = luaL_checkstring(L, 2);
@@ -397,8 +385,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
       {"controller_ok", LoopFunctionsAccess::ControllerOk}, {nullptr, nullptr}};
   lua_newtable(L);  // the robot-handle metatable
   luaL_setfuncs(L, handle_methods, 0);
-  lua_pushvalue(L, -1);  // HandleIndex's upvalue: the metatable itself
-  lua_pushcclosure(L, LoopFunctionsAccess::HandleIndex, 1);
+  lua_pushcfunction(L, LoopFunctionsAccess::HandleIndex);
   lua_setfield(L, -2, "__index");
   handle_meta_ = lua_topointer(L, -1);  // kept alive by the registry
   lua_rawsetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);

@@ -141,6 +141,40 @@ bool HiddenByABody(const MediaState& m, const PairRay& r, int robots) {
     if (c != r.lo && c != r.hi && CircleEntry(r.from, r.to, m.body_xy[c], footbot::kRadius) < r.t_b) return true;
   return false;
 }
+bool HiddenByAnObstacle(const Model& model, const MediaState& m, const PairRay& r) {
+  const double z = m.rab_pos[r.lo].z();
+  for (size_t k = 0; k < model.obstacles.size(); ++k) {
+    const ObstacleDef& o = model.obstacles[k];
+    if (z < o.z || z > o.z + o.height) continue;
+    const double entry = o.kind == ShapeKind::Cylinder
+                             ? CircleEntry(r.from, r.to, m.obstacle_xy[k], o.radius)
+                             : BoxEntry(r.from, r.to, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
+    if (entry < r.t_b) return true;
+  }
+  return false;
+}
+/// Every inbox of this tick against the brute force (bodies, then obstacles); counts the
+/// messages heard and the in-range pairs that only an obstacle hides.
+void ExpectBruteForceInboxes(const World& w, const Model& model, int tick, size_t* heard, size_t* hidden_by_obstacle) {
+  const MediaState& m = w.media;
+  const int n = static_cast<int>(w.robots.size());
+  for (int a = 0; a < n; ++a) {
+    std::vector<int> expect;
+    for (int b = 0; b < n; ++b) {
+      if (b == a) continue;
+      if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
+      const PairRay ray = RayBetween(m, a, b);
+      if (HiddenByABody(m, ray, n)) continue;
+      if (HiddenByAnObstacle(model, m, ray)) {
+        ++*hidden_by_obstacle;
+        continue;
+      }
+      expect.push_back(b);
+    }
+    *heard += expect.size();
+    EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
+  }
+}
 
 // The media stage's occlusion shortcuts (per-device offsets, nearest-first scan with a
 // distance cut-off, issue 12) must decide exactly what one CircleEntry per (pair, body)
@@ -206,34 +240,10 @@ TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
   auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   World& w = *run->s.world;
-  const Model& model = *run->s.model;
-  const auto& m = w.media;
-  const int n = static_cast<int>(w.robots.size());
   size_t heard = 0, hidden_by_obstacle = 0;
   for (int tick = 0; tick < 5; ++tick) {
     RunTicks(w, 1);
-    for (int a = 0; a < n; ++a) {
-      std::vector<int> expect;
-      for (int b = 0; b < n; ++b) {
-        if (b == a) continue;
-        if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
-        const PairRay ray = RayBetween(m, a, b);
-        bool blocked = HiddenByABody(m, ray, n);
-        for (size_t k = 0; k < model.obstacles.size() && !blocked; ++k) {
-          const ObstacleDef& o = model.obstacles[k];
-          const double z = m.rab_pos[ray.lo].z();
-          if (z < o.z || z > o.z + o.height) continue;
-          blocked = (o.kind == ShapeKind::Cylinder
-                         ? CircleEntry(ray.from, ray.to, m.obstacle_xy[k], o.radius)
-                         : BoxEntry(ray.from, ray.to, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) <
-                    ray.t_b;
-          hidden_by_obstacle += blocked;
-        }
-        if (!blocked) expect.push_back(b);
-      }
-      heard += expect.size();
-      EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
-    }
+    ExpectBruteForceInboxes(w, *run->s.model, tick, &heard, &hidden_by_obstacle);
   }
   EXPECT_GT(heard, 300u);
   EXPECT_GT(hidden_by_obstacle, 50u);  // the obstacles do hide some pairs
@@ -265,33 +275,10 @@ TEST(RabIntegration, LongRangesAcrossScatteredObstaclesMatchBruteForceOcclusion)
   auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   World& w = *run->s.world;
-  const Model& model = *run->s.model;
-  const auto& m = w.media;
-  const int n = static_cast<int>(w.robots.size());
   size_t heard = 0, hidden_by_obstacle = 0;
   for (int tick = 0; tick < 3; ++tick) {
     RunTicks(w, 1);
-    for (int a = 0; a < n; ++a) {
-      std::vector<int> expect;
-      for (int b = 0; b < n; ++b) {
-        if (b == a) continue;
-        if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= model.robots[b].rab_range) continue;
-        const PairRay ray = RayBetween(m, a, b);
-        if (HiddenByABody(m, ray, n)) continue;
-        bool blocked = false;
-        for (size_t k = 0; k < model.obstacles.size() && !blocked; ++k) {
-          const ObstacleDef& o = model.obstacles[k];
-          blocked = (o.kind == ShapeKind::Cylinder
-                         ? CircleEntry(ray.from, ray.to, m.obstacle_xy[k], o.radius)
-                         : BoxEntry(ray.from, ray.to, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2)) <
-                    ray.t_b;
-        }
-        hidden_by_obstacle += blocked;
-        if (!blocked) expect.push_back(b);
-      }
-      heard += expect.size();
-      EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
-    }
+    ExpectBruteForceInboxes(w, *run->s.model, tick, &heard, &hidden_by_obstacle);
   }
   EXPECT_GT(heard, 1000u);
   EXPECT_GT(hidden_by_obstacle, 1000u);
