@@ -129,7 +129,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   }
   lua_setfield(L, -2, "params");
   lua_setglobal(L, "robot");
-  PushReadings();
+  if (!PushReadings(error)) return false;
 
   const std::string& script = controller_->script;
   if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
@@ -163,9 +163,34 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   return true;
 }
 
-void LuaController::PushReadings() {
-  if (!L_) return;
-  PushDeviceReadings(L_, *controller_, *robot_, &refs_);
+namespace {
+struct PushJob {
+  const ControllerDef* controller;
+  const RobotState* robot;
+  LuaDeviceRefs* refs;
+};
+
+int PushProtected(lua_State* L) {
+  const PushJob& job = *static_cast<const PushJob*>(lua_touserdata(L, 1));
+  lua_pop(L, 1);
+  PushDeviceReadings(L, *job.controller, *job.robot, job.refs);
+  return 0;
+}
+}  // namespace
+
+bool LuaController::PushReadings(std::string* error) {
+  lua_State* L = L_;
+  if (!L) return true;
+  // Protected and guarded like a lifecycle call: fresh message tables allocate, so a state
+  // at its memory limit raises here, and a controller's metamethod on a reading table
+  // (lua_setfield honours __newindex) runs Lua code: either must stop this robot alone,
+  // never abort or hang the process.
+  PushJob job{controller_, robot_, &refs_};
+  lua_pushcfunction(L, PushProtected);
+  lua_pushlightuserdata(L, &job);
+  BeginGuardedCall(&guard_);
+  const int status = lua_pcall(L, 1, 0, 0);
+  return Finish(status, "filling its sensor readings", "", error);
 }
 
 bool LuaController::Call(const char* fn, bool required, std::string* error) {
@@ -185,11 +210,16 @@ bool LuaController::Call(const char* fn, bool required, std::string* error) {
   }
   BeginGuardedCall(&guard_);
   const int status = lua_pcall(L, 0, 0, base);
+  return Finish(status, "in ", fn, error);
+}
+
+bool LuaController::Finish(int status, const char* where, const char* name, std::string* error) {
+  lua_State* L = L_;
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
     *error = "robot " + def_->id + ": " + (!stopped.empty() ? controller_->script + ": " + stopped : msg ? msg : "error") +
-             " (in " + fn + ")";
+             " (" + where + name + ")";
     lua_settop(L, 0);
     if (guard_.memory_exceeded) {
       // Free what the runaway took; the robot never runs again.

@@ -26,8 +26,9 @@ class LuaController {
   /// (not init). On failure returns false with `error` naming the script and line.
   bool Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
             const LuaOptions& options, std::string* error);
-  /// Copies the robot's Readings into its Lua tables (in place).
-  void PushReadings();
+  /// Copies the robot's Readings into its Lua tables, as a guarded call: false with `error`
+  /// (robot id, the limit hit) if it fails, the state closed as by a lifecycle call.
+  bool PushReadings(std::string* error);
   /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
   /// A state that hit its memory limit is closed and its memory freed.
   bool CallInit(std::string* error) { return Call("init", false, error); }
@@ -43,6 +44,10 @@ class LuaController {
 
  private:
   bool Call(const char* fn, bool required, std::string* error);
+  /// After a guarded pcall: the error (robot id, what stopped it, `where`) and the state
+  /// closed if it ran out of memory; true if the call went through. The error ends with
+  /// " (" where name ")", e.g. " (in step)".
+  bool Finish(int status, const char* where, const char* name, std::string* error);
 
   ::lua_State* L_ = nullptr;
   LuaGuard guard_;

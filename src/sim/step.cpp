@@ -98,9 +98,9 @@ StepStatus Step(World& w) {
       auto a = Clock::now();
       SenseRobot(ctx, m.robots[i], r);
       LuaController& c = *w.controllers[i];
-      c.PushReadings();
+      const bool pushed = c.PushReadings(&w.pending_errors[i]);
       auto b = Clock::now();
-      if (!c.CallStep(&w.pending_errors[i])) {
+      if (!pushed || !c.CallStep(&w.pending_errors[i])) {
         r.controller_ok = false;
         // The robot stops: zero wheels from the next act on (spec: never stepped again).
         r.cmd.wheel_left = r.cmd.wheel_right = 0;

@@ -170,6 +170,75 @@ TEST(LuaWatchdog, MemoryHogIsClosedAndFreedOthersUntouched) {
   EXPECT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;  // destroy skips the closed state
 }
 
+// Filling the readings allocates (every received message is a fresh table): a state kept
+// just under its limit, holding everything it got, runs out there, outside step(). It must
+// stop alone with the limit named, not abort the process (it did: a Lua panic).
+TEST(LuaWatchdog, MemoryLimitHitWhileFillingReadingsStopsThatRobotAlone) {
+  TempDir d;
+  d.Write("hog.lua", R"(
+local keep, n, hog = {}, 0, nil
+for i = 1, 20000 do keep[i] = false end  -- room for every message: storing one allocates nothing
+function step()
+  for i = 1, #robot.range_and_bearing do n = n + 1; keep[n] = robot.range_and_bearing[i] end
+  if hog == nil and n > 0 then
+    collectgarbage("collect")
+    collectgarbage("stop")  -- nothing becomes garbage from here on anyway
+    while collectgarbage("count") * 1024 < 8 * 1024 * 1024 - 2000 do hog = {hog} end
+  end
+end)");
+  d.Write("talk.lua", "function step() robot.range_and_bearing.set_data(1, 7) robot.wheels.set_velocity(1, 1) end");
+  auto rab_controller = [](const std::string& id, const std::string& script) {
+    return "<lua_controller id=\"" + id + "\"><actuators><differential_steering implementation=\"default\"/>"
+           "<range_and_bearing implementation=\"default\"/></actuators><sensors>"
+           "<range_and_bearing implementation=\"medium\" medium=\"rab\"/></sensors><params script=\"" + script +
+           "\"/></lua_controller>";
+  };
+  std::string bots = FootBot("hog", 0, 0, 0, "h");
+  for (int k = 0; k < 4; ++k) bots += FootBot("t" + std::to_string(k), 0.5 * std::cos(k * 1.5), 0.5 * std::sin(k * 1.5), 0, "t");
+  std::string xml = Experiment(bots, rab_controller("h", "hog.lua") + rab_controller("t", "talk.lua"));
+  xml.replace(xml.find("<media/>"), 8, "<media><range_and_bearing id=\"rab\"/></media>");
+  SimOptions so;
+  so.lua.memory_limit = 8u << 20;
+  Scene s = Load(d, xml, {}, so);
+  ASSERT_TRUE(s.ok()) << s.error;
+  RunTicks(*s.world, 60);
+  ASSERT_EQ(s.world->controller_errors.size(), 1u);
+  const std::string& e = s.world->controller_errors[0].message;
+  EXPECT_EQ(s.world->controller_errors[0].robot, "hog");
+  EXPECT_NE(e.find("memory limit exceeded (8 MiB per Lua state"), std::string::npos) << e;
+  EXPECT_NE(e.find("(filling its sensor readings)"), std::string::npos) << e;
+  EXPECT_EQ(s.world->controllers[0]->State(), nullptr);
+  EXPECT_EQ(s.world->controllers[0]->Memory().bytes, 0u);
+  for (int k = 1; k <= 4; ++k) EXPECT_TRUE(s.world->robots[k].controller_ok);
+  EXPECT_EQ(s.world->tick, 60u);
+}
+
+// A controller's metamethod on a reading table runs Lua code while the readings are filled
+// (lua_setfield honours __newindex once the field is gone): the watchdog covers it there too.
+TEST(LuaWatchdog, EndlessMetamethodWhileFillingReadingsIsStopped) {
+  TempDir d;
+  d.Write("c.lua", R"(
+function step()
+  robot.wheels.velocity_left = nil
+  setmetatable(robot.wheels, {__newindex = function() while true do end end})
+end)");
+  SimOptions so;
+  so.lua.instruction_limit = 1000000;
+  d.Write("c2.lua", "function step() robot.wheels.set_velocity(5, 5) end");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c2"),
+                              WheelsController("c", "c.lua") + WheelsController("c2", "c2.lua")),
+                 {}, so);
+  ASSERT_TRUE(s.ok()) << s.error;
+  RunTicks(*s.world, 5);
+  ASSERT_EQ(s.world->controller_errors.size(), 1u);
+  const std::string& e = s.world->controller_errors[0].message;
+  EXPECT_EQ(s.world->controller_errors[0].robot, "fb0");
+  EXPECT_NE(e.find("instruction budget exceeded (1000000 instructions per call"), std::string::npos) << e;
+  EXPECT_NE(e.find("(filling its sensor readings)"), std::string::npos) << e;
+  EXPECT_TRUE(s.world->robots[1].controller_ok);
+  EXPECT_GT(s.world->physics.RobotPose(1).x, 1.01);  // fb1 drove on at 5 cm/s
+}
+
 TEST(LuaWatchdog, NonFiniteActuatorValuesAreErrorsNamingFunctionAndValue) {
   TempDir d;
   d.Write("c.lua", R"(
