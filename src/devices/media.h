@@ -91,7 +91,7 @@ struct Media {
   };
   /// One thread's working buffers for the devices it routes (sized once, reused).
   struct RabScratch {
-    std::vector<int> near;             // bodies within reach of one device, any order
+    std::vector<int> near;             // members after the device within reach, any order
     std::vector<NearBody> occluders;   // those that may hide a partner, bucketed by cc
     std::vector<NearBody> unsorted;    // occluders before bucketing
     std::vector<int> bucket_end;       // kOccluderBuckets + 1 offsets into occluders
