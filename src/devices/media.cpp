@@ -15,6 +15,8 @@
 #include <cmath>
 #include <limits>
 
+#include "devices/rab_blockers.h"
+
 namespace essaim {
 
 // ---------------------------------------------------------------- PointGrid
@@ -308,6 +310,15 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
     for (int i = n_occ - 1; i >= 0; --i) sc.occluders[--sc.bucket_end[sc.unsorted[i].bucket]] = sc.unsorted[i];
     for (int k = 0; k < kBuckets; ++k) sc.bucket_end[k] = sc.bucket_end[k + 1];
   }
+  // Blockers from the bodies within kBlockerReach only (farther ones rarely cover a
+  // sector), and only in a crowd: elsewhere most pairs are unhidden, probes would not pay.
+  bool probe = false;
+  if (body_occluders) {
+    const double qb = (Media::kBlockerReach * Media::kBlockerReach - r2) * per_bucket;
+    const int n_blockers = qb < kBuckets ? sc.bucket_end[static_cast<int>(qb)] : n_occ;
+    probe = n_blockers >= Media::kCrowd;
+    if (probe) rab_blockers::FindBlockers(sc, n_blockers);
+  }
   for (int b : sc.near) {
     const RobotDef& db = model.robots[b];
     if (m->rab_medium[b] != m->rab_medium[a] || db.rab_data_size != da.rab_data_size) continue;
@@ -341,12 +352,19 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
           const double t = (bq - std::sqrt(disc)) / dd;
           return t >= 0 && t < t_b && o.body != b;
         };
-        if (dd > 0)
-          for (int i = 0; i < limit; ++i)
-            if (enters(sc.occluders[i])) {
-              hidden = true;
-              break;
-            }
+        if (dd > 0) {
+          // The sector's blocker first (it hides most pairs of a crowd), then all, nearest first.
+          int no_blocker = -1;
+          int& blocker = probe ? sc.sector_blocker[rab_blockers::SectorOf(rab_blockers::PseudoAngle(dx, dy))] : no_blocker;
+          hidden = blocker >= 0 && enters(sc.occluders[blocker]);
+          if (!hidden)
+            for (int i = 0; i < limit; ++i)
+              if (enters(sc.occluders[i])) {
+                hidden = true;
+                blocker = i;  // a likelier guess for the next pairs of its sector
+                break;
+              }
+        }
       }
       if (!hidden && walk_obstacles) {
         hidden = ObstacleHides(model, *m, xa, xb, t_b, pa.z());
@@ -387,6 +405,7 @@ void SizeRabScratch(const Model& model, Media::RabScratch* sc) {
   sc->unsorted.resize(n);
   sc->occluders.resize(n);
   sc->bucket_end.assign(Media::kOccluderBuckets + 1, 0);
+  sc->sector_blocker.assign(Media::kProbeSectors, -1);
   sc->near_obstacles.reserve(Media::kFewObstacles);
   sc->obstacle_stamp.assign(model.obstacles.size(), 0);
   sc->stamp = 0;
