@@ -15,6 +15,8 @@
 #include <cmath>
 #include <limits>
 
+#include "devices/rab_blockers.h"
+
 namespace essaim {
 
 // ---------------------------------------------------------------- PointGrid
@@ -244,17 +246,6 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
   const bool occlusions = model.rab_media[m->rab_medium[a]].check_occlusions;
   const double reach = m->rab_max_range;
   const double near = reach + footbot::kRadius;  // a body touching a segment from a is this close
-  // Bodies near a: the candidate partners (members after a) and the possible occluders.
-  // Any order: the partners are sorted at the end (fewer of them).
-  sc.near.clear();
-  for (int cy = g.CellY(xa.y() - near), y1 = g.CellY(xa.y() + near); cy <= y1; ++cy)
-    for (int cx = g.CellX(xa.x() - near), x1 = g.CellX(xa.x() + near); cx <= x1; ++cx) {
-      const int c = cy * g.nx + cx;
-      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
-        const int j = g.items[s];
-        if (j != a && (m->body_xy[j] - xa).squaredNorm() <= near * near) sc.near.push_back(j);
-      }
-    }
   // Obstacles that may hide a pair of a's: listed if few (rows of cells within reach, each
   // obstacle once), else each pair walks its own cells (walk_obstacles). A segment from a is
   // shorter than the reach, so whatever it enters lies in these cells.
@@ -279,38 +270,56 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
       }
   }
   const bool bodies_occlude = pa.z() >= 0 && pa.z() <= footbot::kHeight;  // as CastRay
+  const bool body_occluders = occlusions && bodies_occlude;
   // Occluders bucketed by cc (a counting sort, not a comparison sort): a pair only scans
   // the buckets up to its cut-off (see the pair loop), nearest first.
   constexpr int kBuckets = Media::kOccluderBuckets;
-  const double per_bucket = kBuckets / (near * near);  // cc < near²
+  const double near2 = near * near;
+  const double per_bucket = kBuckets / near2;  // cc < near²
+  const double r2 = footbot::kRadius * footbot::kRadius;
+  if (body_occluders) std::fill(sc.bucket_end.begin(), sc.bucket_end.end(), 0);
+  // One pass over the bodies near a: the candidate partners (members after a, any order:
+  // the partners are sorted at the end) and the occluders (any other body but those around
+  // a, cc < 0: Box2D reports no hit for a ray starting inside). CircleEntry(xa, xb, c, r)
+  // split: s = c - a and cc = |s|² - r² depend on the occluder only (same operations, so
+  // the same bits: the build has -ffp-contract=off).
+  sc.near.clear();
   int n_occ = 0;
-  if (occlusions && bodies_occlude) {
-    // CircleEntry(xa, xb, c, r) split: s = c - a and cc = |s|² - r² depend on the
-    // occluder only (same operations, so the same bits: the build has -ffp-contract=off).
-    // A body around the device (cc < 0) never hides anything: Box2D reports no hit for a
-    // ray starting inside.
-    const double r2 = footbot::kRadius * footbot::kRadius;
-    std::fill(sc.bucket_end.begin(), sc.bucket_end.end(), 0);
-    sc.unsorted.clear();  // within the capacity reserved by UpdateMedia
-    for (int c : sc.near) {
-      const Vec2& xc = m->body_xy[c];
-      const double sx = xc.x() - xa.x(), sy = xc.y() - xa.y();
-      const double cc = (sx * sx + sy * sy) - r2;
-      if (cc < 0) continue;
-      const double q = cc * per_bucket;
-      const int bucket = q < kBuckets ? static_cast<int>(q) : kBuckets - 1;
-      sc.unsorted.push_back({cc, sx, sy, c, bucket});
-      ++sc.bucket_end[bucket];
+  for (int cy = g.CellY(xa.y() - near), y1 = g.CellY(xa.y() + near); cy <= y1; ++cy)
+    for (int cx = g.CellX(xa.x() - near), x1 = g.CellX(xa.x() + near); cx <= x1; ++cx) {
+      const int c = cy * g.nx + cx;
+      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
+        const int j = g.items[s];
+        const Vec2& xj = m->body_xy[j];
+        const double sx = xj.x() - xa.x(), sy = xj.y() - xa.y();
+        const double n2 = sx * sx + sy * sy;
+        if (n2 > near2 || j == a) continue;
+        if (j > a && m->rab_member[j]) sc.near.push_back(j);
+        const double cc = n2 - r2;
+        if (!body_occluders || cc < 0) continue;
+        const double q = cc * per_bucket;
+        const int bucket = q < kBuckets ? static_cast<int>(q) : kBuckets - 1;
+        sc.unsorted[n_occ++] = {cc, sx, sy, j, bucket};
+        ++sc.bucket_end[bucket];
+      }
     }
+  if (body_occluders) {
     for (int k = 1; k < kBuckets; ++k) sc.bucket_end[k] += sc.bucket_end[k - 1];
-    n_occ = static_cast<int>(sc.unsorted.size());
     sc.bucket_end[kBuckets] = n_occ;
     // Fill backwards; bucket_end[k] ends as bucket k's start, so shift into ends after.
     for (int i = n_occ - 1; i >= 0; --i) sc.occluders[--sc.bucket_end[sc.unsorted[i].bucket]] = sc.unsorted[i];
     for (int k = 0; k < kBuckets; ++k) sc.bucket_end[k] = sc.bucket_end[k + 1];
   }
+  // Blockers from the bodies within kBlockerReach only (farther ones rarely cover a
+  // sector), and only in a crowd: elsewhere most pairs are unhidden, probes would not pay.
+  bool probe = false;
+  if (body_occluders) {
+    const double qb = (Media::kBlockerReach * Media::kBlockerReach - r2) * per_bucket;
+    const int n_blockers = qb < kBuckets ? sc.bucket_end[static_cast<int>(qb)] : n_occ;
+    probe = n_blockers >= Media::kCrowd;
+    if (probe) rab_blockers::FindBlockers(sc, n_blockers);
+  }
   for (int b : sc.near) {
-    if (b < a || !m->rab_member[b]) continue;  // each unordered pair once, from its lower index
     const RobotDef& db = model.robots[b];
     if (m->rab_medium[b] != m->rab_medium[a] || db.rab_data_size != da.rab_data_size) continue;
     const Vec3& pb = m->rab_pos[b];
@@ -326,8 +335,6 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
       const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
       bool hidden = false;
       if (bodies_occlude) {
-        // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
-        // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
         const double dx = xb.x() - xa.x(), dy = xb.y() - xa.y();
         const double dd = dx * dx + dy * dy;
         // A body entered before t_b has its centre closer to a than b's: |s| < len, so
@@ -336,18 +343,28 @@ void RabPartners(const Model& model, Media* m, int a, Media::RabScratch& sc) {
         const double cc_max = (dd - footbot::kRadius * footbot::kRadius) * (1 + 1e-9) + 1e-12;
         const double q = cc_max * per_bucket;  // monotone in cc: its bucket bounds theirs
         const int limit = !(q >= 0) ? 0 : q < kBuckets ? sc.bucket_end[static_cast<int>(q)] : n_occ;
-        if (dd > 0)
-          for (int i = 0; i < limit; ++i) {
-            const Media::NearBody& o = sc.occluders[i];
-            const double bq = o.sx * dx + o.sy * dy;
-            const double disc = bq * bq - dd * o.cc;
-            if (disc < 0) continue;
-            const double t = (bq - std::sqrt(disc)) / dd;
-            if (t >= 0 && t < t_b && o.body != b) {
-              hidden = true;
-              break;
-            }
-          }
+        // The rest of CircleEntry(xa, xb, body c, r) < t_b (t_b <= 1, so "t in [0, 1]"
+        // reduces to t >= 0); the cheap tests reject almost every occluder before sqrt.
+        auto enters = [&](const Media::NearBody& o) {
+          const double bq = o.sx * dx + o.sy * dy;
+          const double disc = bq * bq - dd * o.cc;
+          if (disc < 0) return false;
+          const double t = (bq - std::sqrt(disc)) / dd;
+          return t >= 0 && t < t_b && o.body != b;
+        };
+        if (dd > 0) {
+          // The sector's blocker first (it hides most pairs of a crowd), then all, nearest first.
+          int no_blocker = -1;
+          int& blocker = probe ? sc.sector_blocker[rab_blockers::SectorOf(rab_blockers::PseudoAngle(dx, dy))] : no_blocker;
+          hidden = blocker >= 0 && enters(sc.occluders[blocker]);
+          if (!hidden)
+            for (int i = 0; i < limit; ++i)
+              if (enters(sc.occluders[i])) {
+                hidden = true;
+                blocker = i;  // a likelier guess for the next pairs of its sector
+                break;
+              }
+        }
       }
       if (!hidden && walk_obstacles) {
         hidden = ObstacleHides(model, *m, xa, xb, t_b, pa.z());
@@ -385,9 +402,10 @@ void RabDeliver(Media* m) {
 void SizeRabScratch(const Model& model, Media::RabScratch* sc) {
   const size_t n = model.robots.size();
   sc->near.reserve(n);
-  sc->unsorted.reserve(n);
+  sc->unsorted.resize(n);
   sc->occluders.resize(n);
   sc->bucket_end.assign(Media::kOccluderBuckets + 1, 0);
+  sc->sector_blocker.assign(Media::kProbeSectors, -1);
   sc->near_obstacles.reserve(Media::kFewObstacles);
   sc->obstacle_stamp.assign(model.obstacles.size(), 0);
   sc->stamp = 0;

@@ -91,10 +91,11 @@ struct Media {
   };
   /// One thread's working buffers for the devices it routes (sized once, reused).
   struct RabScratch {
-    std::vector<int> near;             // bodies within reach of one device, any order
+    std::vector<int> near;             // members after the device within reach, any order
     std::vector<NearBody> occluders;   // those that may hide a partner, bucketed by cc
     std::vector<NearBody> unsorted;    // occluders before bucketing
     std::vector<int> bucket_end;       // kOccluderBuckets + 1 offsets into occluders
+    std::vector<int> sector_blocker;   // kProbeSectors occluders or -1, see FindBlockers
     std::vector<int> near_obstacles;   // within reach of one device, if few (kFewObstacles)
     std::vector<int> obstacle_stamp;   // dedup of near_obstacles
     int stamp = 0;
@@ -103,6 +104,12 @@ struct Media {
   /// pair walks the obstacle grid's cells along its segment.
   static constexpr int kFewObstacles = 12;
   static constexpr int kOccluderBuckets = 64;
+  /// Blocker probes (rab_blockers.h): direction sectors (a power of 2), the reach of the
+  /// bodies that may block one, and how many within it make a crowd (fewer: no probes, as
+  /// most pairs are then unhidden and probing would not pay).
+  static constexpr int kProbeSectors = 64;
+  static constexpr double kBlockerReach = 1.0;  // m
+  static constexpr int kCrowd = 16;
   std::vector<RabScratch> rab_scratch;  // one per slot of the runner (UpdateMedia)
   /// rab_partners[a] = the partners b > a that a reaches unhidden, ascending, each as
   /// b << 2 | (a hears b) | (b hears a) << 1; merged into rab_inbox in ascending a.

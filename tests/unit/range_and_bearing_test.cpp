@@ -3,6 +3,7 @@
 // ordering, and the grid routing against a brute-force reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -590,5 +591,123 @@ TEST(PointGridCells, AnyDoubleLandsInAValidCell) {
     EXPECT_LT(cy, g.ny) << v;
   }
 }
+}  // namespace
+}  // namespace essaim
+
+namespace essaim {
+namespace {
+using namespace essaim::testing;
+
+/// Inboxes by brute force on the media's own positions: every pair of members in range,
+/// hidden when any other body's circle is entered before the partner's (CircleEntry over
+/// all bodies, from the lower index as the media does): no grid, cut-off or probe.
+std::vector<std::vector<int>> BruteForceInboxes(const Model& model, const Media& m) {
+  const int n = static_cast<int>(m.rab_pos.size());
+  std::vector<std::vector<int>> inbox(n);
+  for (int lo = 0; lo < n; ++lo)
+    for (int hi = lo + 1; hi < n; ++hi) {
+      if (!m.rab_member[lo] || !m.rab_member[hi]) continue;
+      const double d = (m.rab_pos[hi] - m.rab_pos[lo]).norm();
+      const bool lo_hears = d < model.robots[hi].rab_range, hi_hears = d < model.robots[lo].rab_range;
+      if (!lo_hears && !hi_hears) continue;
+      const Vec2 a = m.rab_pos[lo].head<2>(), b = m.rab_pos[hi].head<2>();
+      const double len = (b - a).norm();
+      const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+      bool hidden = false;
+      for (int c = 0; c < n && !hidden; ++c)
+        hidden = c != lo && c != hi && CircleEntry(a, b, m.body_xy[c], footbot::kRadius) < t_b;
+      if (hidden) continue;
+      if (lo_hears) inbox[lo].push_back(hi);
+      if (hi_hears) inbox[hi].push_back(lo);
+    }
+  for (auto& v : inbox) std::sort(v.begin(), v.end());
+  return inbox;
+}
+
+/// Runs one tick of `bots` (no obstacles, occlusions on) and compares every inbox with the
+/// brute force; returns the packets heard and the pairs in range found hidden.
+std::pair<size_t, size_t> CheckCrowd(const std::string& bots) {
+  TempDir d;
+  d.Write("s.lua", kSilent);
+  Scene s = Load(d, RabExperiment(bots, RabController("c", "s.lua")));
+  EXPECT_TRUE(s.ok()) << s.error;
+  if (!s.ok()) return {0, 0};
+  RunTicks(*s.world, 1);
+  const Media& m = s.world->media;
+  std::vector<std::vector<int>> expect = BruteForceInboxes(s.world->model, m);
+  size_t heard = 0, in_range = 0;
+  const int n = static_cast<int>(expect.size());
+  for (int r = 0; r < n; ++r) {
+    EXPECT_EQ(Senders(*s.world, r), expect[r]) << "robot " << r;
+    heard += expect[r].size();
+    for (int k = 0; k < n; ++k)
+      in_range += k != r && (m.rab_pos[k] - m.rab_pos[r]).norm() < s.world->model.robots[k].rab_range;
+  }
+  return {heard, in_range - heard};
+}
+
+TEST(RangeAndBearing, CrowdOcclusionMatchesBruteForce) {
+  // Crowds dense enough for the media's blocker probes (Media::kCrowd bodies within
+  // kBlockerReach), bodies all but touching, and mixed ranges: every inbox equals the
+  // brute-force rule.
+  for (uint64_t seed : {3, 4}) {
+    Rng rng(seed);
+    std::vector<Vec2> pos;
+    std::string bots;
+    for (int i = 0; i < 230; ++i) {
+      Vec2 p;
+      bool ok;
+      do {  // clearance 2 mm above touching: physics leaves them in place
+        p = Vec2(rng.Uniform(-1.8, 1.8), rng.Uniform(-1.8, 1.8));
+        ok = true;
+        for (const Vec2& q : pos) ok &= (p - q).norm() > 2 * footbot::kRadius + 0.002;
+      } while (!ok);
+      pos.push_back(p);
+      bots += Bot("fb" + std::to_string(i), p.x(), p.y(), 0, "c", i % 5 == 0 ? "rab_range=\"1.2\"" : "");
+    }
+    auto [heard, hidden] = CheckCrowd(bots);
+    EXPECT_GT(heard, 1500u);
+    EXPECT_GT(hidden, 10000u);  // the crowd hides most pairs
+  }
+}
+
+TEST(RangeAndBearing, GrazingAndTangentOccludersMatchBruteForce) {
+  // Around each of a few devices: a ring of bodies all but touching it, and partners
+  // placed along the ring bodies' tangent lines (a hair inside or outside) and through
+  // the gaps between them, with a crowd behind: rays that graze, touch or just miss.
+  std::string bots;
+  int id = 0;
+  Rng rng(5);
+  const double r = footbot::kRadius;
+  for (int cell = 0; cell < 4; ++cell) {
+    const Vec2 o(-3 + 4 * (cell % 2), -3 + 4 * (cell / 2));
+    std::vector<Vec2> pos{o};
+    auto add = [&](const Vec2& p) {
+      for (const Vec2& q : pos)
+        if ((p - q).norm() <= 2 * r + 1e-3) return;
+      pos.push_back(p);
+    };
+    const int ring = 6 + cell;
+    for (int k = 0; k < ring; ++k) {
+      const double ang = 2 * M_PI * k / ring + 0.1 * cell;
+      const double dist = 2 * r + 0.0015 + 0.01 * (k % 3);
+      add(o + dist * Vec2(std::cos(ang), std::sin(ang)));
+    }
+    for (int k = 0; k < ring; ++k) {
+      // Tangent directions of ring body k seen from o, shifted by ±1e-6 rad or not at all.
+      const Vec2 c = pos[1 + std::min(k, static_cast<int>(pos.size()) - 2)] - o;
+      const double half = std::asin(r / c.norm()), mid = std::atan2(c.y(), c.x());
+      for (double side : {-1.0, 1.0})
+        for (double eps : {-1e-6, 0.0, 1e-6})
+          add(o + rng.Uniform(0.5, 1.4) * Vec2(std::cos(mid + side * (half + eps)), std::sin(mid + side * (half + eps))));
+    }
+    for (int k = 0; k < 60; ++k) add(o + Vec2(rng.Uniform(-1.6, 1.6), rng.Uniform(-1.6, 1.6)));
+    for (const Vec2& p : pos) bots += Bot("fb" + std::to_string(id++), p.x(), p.y(), 0, "c");
+  }
+  auto [heard, hidden] = CheckCrowd(bots);
+  EXPECT_GT(heard, 300u);
+  EXPECT_GT(hidden, 1000u);
+}
+
 }  // namespace
 }  // namespace essaim
