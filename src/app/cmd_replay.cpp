@@ -4,9 +4,12 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 
 #include "app/commands.h"
+#include "app/web_pages.h"
 #include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
@@ -14,12 +17,7 @@
 
 namespace essaim {
 
-extern const char kReplayTemplate[];
-extern const std::size_t kReplayTemplate_size;
-
 namespace {
-
-constexpr const char* kPlaceholder = "@ESSAIM_RECORDING@";
 
 std::string Base64(const std::string& in) {
   static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -56,12 +54,13 @@ std::string RecordingPathOf(const std::string& run) {
   return IsDirectory(run) ? JoinPath(run, kRecordingFile) : run;
 }
 
-/// The page with the recording embedded.
-static std::string ReplayHtml(const Recording& rec) {
-  std::string page(kReplayTemplate, kReplayTemplate_size);
-  size_t at = page.find(kPlaceholder);
-  if (at != std::string::npos) page.replace(at, std::char_traits<char>::length(kPlaceholder), Base64(rec.bytes()));
-  return page;
+/// The page with the recording embedded, and the run's time series when the recording's
+/// folder has one (charts).
+static std::string ReplayHtml(const Recording& rec, const std::string& recording_path) {
+  std::string csv;
+  std::ifstream in(JoinPath(DirName(recording_path), "timeseries.csv"), std::ios::binary);
+  if (in) csv.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return ReplayPage(Base64(rec.bytes()), csv);
 }
 
 static int Replay(const std::string& run, std::string out) {
@@ -80,7 +79,7 @@ static int Replay(const std::string& run, std::string out) {
     std::fprintf(stderr, "essaim replay: %s\n", error.c_str());
     return kExitBadInput;
   }
-  if (!WriteFileAtomic(out, ReplayHtml(rec), &error)) {
+  if (!WriteFileAtomic(out, ReplayHtml(rec, path), &error)) {
     std::fprintf(stderr, "essaim replay: %s\n", error.c_str());
     return kExitRunFailed;
   }

@@ -6,6 +6,10 @@ std::string DumpJson(const Json& doc) {
   return doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
+std::string DumpJsonLine(const Json& doc) {
+  return doc.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 bool ParseJson(const std::string& text, Json* out, std::string* error) {
   try {
     *out = Json::parse(text);

@@ -12,6 +12,8 @@ namespace essaim {
 /// Pretty-printed with 2-space indentation, newline-terminated. Strings are escaped
 /// (control characters and NUL as \uXXXX); invalid UTF-8 is replaced, never an error.
 std::string DumpJson(const Json& doc);
+/// On one line, no indentation, no trailing newline (a frame for a live page, an API answer).
+std::string DumpJsonLine(const Json& doc);
 /// False with "line L, column C: ..." in `error` when `text` is not one JSON document.
 bool ParseJson(const std::string& text, Json* out, std::string* error);
 

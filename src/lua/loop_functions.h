@@ -53,6 +53,7 @@ class LoopFunctions {
   const Timeseries& Series() const { return series_; }
   const LuaGuard& Memory() const { return guard_; }
   std::string& LogBuffer() { return log_; }
+  ::lua_State* State() { return L_; }
 
  private:
   bool PCall(int nargs, int nresults, const char* what, std::string* error);

@@ -1,0 +1,145 @@
+#include "lua/lua_inspect.h"
+
+#include <lua.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+#include "core/json.h"
+
+namespace essaim {
+
+namespace {
+
+// Globals every state has: the standard library and what essaim itself defines.
+bool IsLibraryGlobal(const char* name) {
+  static const char* const kNames[] = {"_G",     "_VERSION", "coroutine", "debug", "io",     "math",  "os",
+                                       "package", "string",  "table",     "utf8",  "robot",  "vector2",
+                                       "vector3", "quaternion"};
+  for (const char* n : kNames)
+    if (std::strcmp(n, name) == 0) return true;
+  return false;
+}
+
+struct TreeWalk {
+  lua_State* L;
+  const LuaTreeLimits& limits;
+  int budget;
+
+  // The key at `idx` as a JSON object key; false for keys that are neither strings nor numbers.
+  static bool KeyText(lua_State* L, int idx, std::string* out) {
+    int t = lua_type(L, idx);
+    if (t == LUA_TSTRING) {
+      size_t n = 0;
+      const char* s = lua_tolstring(L, idx, &n);
+      out->assign(s, n);
+      return true;
+    }
+    if (t != LUA_TNUMBER) return false;
+    if (lua_isinteger(L, idx)) *out = std::to_string(lua_tointeger(L, idx));
+    else {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", lua_tonumber(L, idx));
+      *out = text;
+    }
+    return true;
+  }
+
+  Json Value(int idx, int depth) {
+    switch (lua_type(L, idx)) {
+      case LUA_TNUMBER:
+        if (lua_isinteger(L, idx)) return Json(static_cast<long long>(lua_tointeger(L, idx)));
+        return Json(lua_tonumber(L, idx));
+      case LUA_TBOOLEAN:
+        return Json(lua_toboolean(L, idx) != 0);
+      case LUA_TSTRING: {
+        size_t n = 0;
+        const char* s = lua_tolstring(L, idx, &n);
+        std::string text(s, std::min(n, limits.string_chars));
+        return Json(n > limits.string_chars ? text + "..." : text);
+      }
+      case LUA_TTABLE:
+        return depth >= limits.depth ? Json("{...}") : Table(idx, depth + 1, false);
+      default:
+        return Json(lua_typename(L, lua_type(L, idx)));
+    }
+  }
+
+  Json Table(int idx, int depth, bool globals) {
+    Json out = Json::object();
+    if (!lua_checkstack(L, 4)) return out;
+    idx = lua_absindex(L, idx);
+    int shown = 0, more = 0;
+    std::string key;
+    lua_pushnil(L);
+    while (lua_next(L, idx) != 0) {
+      bool skip = lua_type(L, -1) == LUA_TFUNCTION || !KeyText(L, -2, &key) ||
+                  (globals && IsLibraryGlobal(key.c_str()));
+      if (!skip && (shown >= limits.per_table || budget <= 0)) {
+        ++more;
+      } else if (!skip) {
+        --budget;
+        ++shown;
+        out[key] = Value(-1, depth);
+      }
+      lua_pop(L, 1);
+    }
+    if (more > 0) out["..."] = std::to_string(more) + " more";
+    return out;
+  }
+};
+
+}  // namespace
+
+Json LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits) {
+  if (!L) return Json::object();
+  TreeWalk walk{L, limits, limits.total};
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  Json out = walk.Table(-1, 1, true);
+  lua_pop(L, 1);
+  return out;
+}
+
+Json LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits) {
+  if (!L) return Json();
+  TreeWalk walk{L, limits, limits.total};
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushstring(L, name);
+  lua_rawget(L, -2);
+  Json out = lua_type(L, -1) == LUA_TTABLE ? walk.Table(-1, 1, false) : Json();
+  lua_pop(L, 2);
+  return out;
+}
+
+std::vector<std::string> RequiredModuleFiles(lua_State* L) {
+  std::vector<std::string> files;
+  if (!L || !lua_checkstack(L, 8)) return files;
+  lua_getglobal(L, "package");
+  if (lua_type(L, -1) != LUA_TTABLE) {
+    lua_pop(L, 1);
+    return files;
+  }
+  lua_getfield(L, -1, "loaded");
+  lua_getfield(L, -2, "searchpath");
+  lua_getfield(L, -3, "path");
+  const int loaded = lua_absindex(L, -3), searchpath = lua_absindex(L, -2), path = lua_absindex(L, -1);
+  if (lua_type(L, loaded) == LUA_TTABLE && lua_type(L, searchpath) == LUA_TFUNCTION && lua_type(L, path) == LUA_TSTRING) {
+    lua_pushnil(L);
+    while (lua_next(L, loaded) != 0) {
+      if (lua_type(L, -2) == LUA_TSTRING) {
+        lua_pushvalue(L, searchpath);
+        lua_pushvalue(L, -3);
+        lua_pushvalue(L, path);
+        if (lua_pcall(L, 2, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING) files.push_back(lua_tostring(L, -1));
+        lua_pop(L, 1);
+      }
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 4);
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace essaim

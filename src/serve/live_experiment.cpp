@@ -1,0 +1,205 @@
+#include "serve/live_experiment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/error_list.h"
+#include "core/json.h"
+#include "lua/lua_inspect.h"
+#include "output/recording.h"
+
+namespace essaim {
+
+namespace {
+double Round(double v, double unit) { return std::isfinite(v) ? std::round(v / unit) * unit : 0.0; }
+
+Json Rgb(const Color& c) { return Json::array({c.r, c.g, c.b}); }
+
+Json LedOrNull(const Color& c) { return c.IsBlack() ? Json() : Rgb(c); }
+
+// The first lit LED, as the replay page shows a robot or an obstacle.
+Color FirstLit(const Color* leds, size_t n) {
+  for (size_t i = 0; i < n; ++i)
+    if (!leds[i].IsBlack()) return leds[i];
+  return Color{0, 0, 0, 255};
+}
+
+Color ObstacleLed(const ObstacleDef& o) {
+  for (const LedDef& l : o.leds)
+    if (!l.color.IsBlack()) return l.color;
+  return Color{0, 0, 0, 255};
+}
+
+Json RobotJson(const World& w, size_t i) {
+  const RobotState& r = w.robots[i];
+  Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
+  Json j = Json::object();
+  j["id"] = w.model.robots[i].id;
+  j["x"] = Round(pose.x, 1e-4);
+  j["y"] = Round(pose.y, 1e-4);
+  j["yaw"] = Round(pose.yaw, 1e-4);
+  j["led"] = LedOrNull(FirstLit(r.leds, footbot::kLedCount));
+  j["alive"] = r.alive;
+  j["ok"] = r.controller_ok;
+  return j;
+}
+
+std::string Base64(const std::string& in) {
+  static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  size_t i = 0;
+  for (; i + 2 < in.size(); i += 3) {
+    unsigned v = (static_cast<unsigned char>(in[i]) << 16) | (static_cast<unsigned char>(in[i + 1]) << 8) |
+                 static_cast<unsigned char>(in[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63];
+  }
+  if (i < in.size()) {
+    unsigned v = static_cast<unsigned char>(in[i]) << 16;
+    if (i + 1 < in.size()) v |= static_cast<unsigned char>(in[i + 1]) << 8;
+    out += kAlphabet[v >> 18];
+    out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < in.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+}  // namespace
+
+Json FrameJson(const World& w, const FrameInfo& info) {
+  Json f = Json::object();
+  f["tick"] = w.tick;
+  f["run"] = info.run;
+  f["paused"] = info.paused;
+  f["speed"] = info.speed;
+  f["error"] = info.error;
+  Json robots = Json::array();
+  for (size_t i = 0; i < w.robots.size(); ++i) robots.push_back(RobotJson(w, i));
+  f["robots"] = std::move(robots);
+  Json movable = Json::array();
+  for (size_t k = 0; k < w.model.obstacles.size(); ++k) {
+    const ObstacleDef& o = w.model.obstacles[k];
+    if (!o.movable) continue;
+    Pose2 p = w.physics.ObstaclePose(static_cast<int>(k));
+    movable.push_back(Json::array({k, Round(p.x, 1e-4), Round(p.y, 1e-4), Round(p.yaw, 1e-4), LedOrNull(ObstacleLed(o))}));
+  }
+  f["movable"] = std::move(movable);
+  f["obstacles"] = w.model.obstacles.size();
+  f["series_rows"] = info.series_rows;
+  f["log_lines"] = info.log_lines;
+  return f;
+}
+
+Json SceneJson(const World& w) {
+  RecordingScene s = SceneOf(w, 1);
+  Json j = Json::object();
+  j["experiment"] = s.experiment;
+  j["seed"] = s.seed;
+  j["tps"] = s.ticks_per_second;
+  j["length"] = s.length_ticks;
+  j["minX"] = s.arena_min.x();
+  j["minY"] = s.arena_min.y();
+  j["sizeX"] = s.arena_size.x();
+  j["sizeY"] = s.arena_size.y();
+  j["radius"] = s.robot_radius;
+  j["ids"] = s.robot_ids;
+  Json obstacles = Json::array();
+  for (const RecordedObstacle& o : s.obstacles)
+    obstacles.push_back({{"id", o.id}, {"cylinder", o.cylinder}, {"movable", o.movable}, {"x", o.pose.x},
+                         {"y", o.pose.y}, {"yaw", o.pose.yaw}, {"sx", o.size_x}, {"sy", o.size_y}, {"r", o.radius},
+                         {"led", LedOrNull(o.led)}});
+  j["obstacles"] = std::move(obstacles);
+  Json lights = Json::array();
+  for (const RecordedLight& l : s.lights)
+    lights.push_back({{"id", l.id}, {"x", l.position.x()}, {"y", l.position.y()}, {"r", l.color.r}, {"g", l.color.g},
+                      {"b", l.color.b}, {"intensity", l.intensity}});
+  j["lights"] = std::move(lights);
+  j["floor"] = s.floor_png.empty() ? std::string() : Base64(s.floor_png);
+  return j;
+}
+
+LiveExperiment::LiveExperiment(std::string file, LoadOptions load, LogSink log_sink)
+    : file_(std::move(file)), load_(std::move(load)), log_sink_(std::move(log_sink)) {}
+
+LiveExperiment::~LiveExperiment() = default;
+
+uint64_t LiveExperiment::seed() const { return model_ ? model_->experiment.seed : 0; }
+
+bool LiveExperiment::Load() {
+  ErrorList errors;
+  std::unique_ptr<Model> model = LoadExperimentFile(file_, load_, &errors);
+  std::string error;
+  std::unique_ptr<World> world;
+  if (model) {
+    SimOptions opt;
+    opt.output_dir = "";
+    opt.log_sink = log_sink_;
+    world = World::Create(*model, opt, &error);
+  } else {
+    error = errors.Format();
+  }
+  while (!error.empty() && error.back() == '\n') error.pop_back();
+  if (!world) {
+    error_ = error.empty() ? "the experiment did not load" : error;
+    return false;
+  }
+  model_ = std::move(model);
+  world_ = std::move(world);
+  error_ = world_->failure;  // init() failed: shown, the world is not stepped
+  ++run_;
+  std::set<std::string> inputs = {model_->file};
+  for (const ControllerDef& c : model_->controllers)
+    if (!c.script.empty()) inputs.insert(c.script);
+  if (!model_->loop_functions.script.empty()) inputs.insert(model_->loop_functions.script);
+  if (model_->floor.source == FloorSource::Image && !model_->floor.path.empty()) inputs.insert(model_->floor.path);
+  std::set<int> seen;  // one state per controller type knows its modules
+  for (size_t i = 0; i < world_->controllers.size(); ++i)
+    if (world_->controllers[i] && seen.insert(model_->robots[i].controller).second)
+      for (const std::string& f : RequiredModuleFiles(world_->controllers[i]->State())) inputs.insert(f);
+  for (const std::string& f : RequiredModuleFiles(world_->loop_functions.State())) inputs.insert(f);
+  inputs_.assign(inputs.begin(), inputs.end());
+  return true;
+}
+
+bool LiveExperiment::Reset(std::optional<uint64_t> seed) {
+  if (seed) load_.seed = seed;
+  return Load();
+}
+
+StepStatus LiveExperiment::Step() {
+  if (!world_ || !world_->failure.empty()) return StepStatus::Failed;
+  if (LengthReached(*world_)) return StepStatus::Finished;
+  StepStatus status = essaim::Step(*world_);
+  if (status == StepStatus::Failed) error_ = world_->failure;
+  return status;
+}
+
+std::vector<std::string> LiveExperiment::InputFiles() const {
+  std::vector<std::string> files = inputs_;
+  if (std::find(files.begin(), files.end(), file_) == files.end()) files.push_back(file_);
+  return files;
+}
+
+Json LiveExperiment::Inspect(int robot) const {
+  if (!world_ || robot < 0 || static_cast<size_t>(robot) >= world_->robots.size()) return Json();
+  const World& w = *world_;
+  const RobotState& r = w.robots[robot];
+  const RobotDef& def = w.model.robots[robot];
+  Pose2 pose = w.physics.RobotPose(robot);
+  Json j = Json::object();
+  j["index"] = robot;
+  j["id"] = def.id;
+  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw_deg", pose.yaw * 180 / M_PI}};
+  j["alive"] = r.alive;
+  j["controller_ok"] = r.controller_ok;
+  j["battery"] = def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0;
+  Json leds = Json::array();
+  for (const Color& c : r.leds) leds.push_back(Rgb(c));
+  j["actuators"] = {{"wheels_m_per_s", {r.wheel_left, r.wheel_right}}, {"leds", leds}};
+  lua_State* L = w.controllers[robot] ? w.controllers[robot]->State() : nullptr;
+  j["readings"] = LuaGlobalTree(L, "robot");
+  j["globals"] = LuaGlobalsTree(L);
+  return j;
+}
+
+}  // namespace essaim

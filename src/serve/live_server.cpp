@@ -1,0 +1,424 @@
+#include "serve/live_server.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <future>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "core/json.h"
+#include "serve/access.h"
+#include "serve/control.h"
+#include "serve/file_watcher.h"
+#include "serve/frame_mailbox.h"
+#include "serve/http_server.h"
+#include "serve/live_experiment.h"
+
+namespace essaim {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // at most 30 frames per second
+constexpr auto kWatchInterval = std::chrono::milliseconds(100);
+constexpr size_t kLogKept = 2000;
+
+struct LogLine {
+  uint64_t number = 0, tick = 0;
+  int robot = -1;
+  char stream = 'O';
+  std::string text;
+};
+
+struct Inspection {
+  int robot = -1;
+  std::promise<std::string> answer;
+};
+
+HttpResponse JsonAnswer(int status, const Json& body) { return {status, "application/json", DumpJsonLine(body)}; }
+HttpResponse ErrorAnswer(int status, const std::string& message) { return JsonAnswer(status, {{"error", message}}); }
+}  // namespace
+
+struct LiveServer::Impl {
+  ServeOptions options;
+  AccessPolicy access;
+  HttpServer http;
+  FileWatcher watcher;
+  FrameMailbox frames;
+  std::unique_ptr<LiveExperiment> experiment;
+  int port = 0;
+  std::thread http_thread;
+
+  // Shared with the HTTP threads, under `mutex`.
+  std::mutex mutex;
+  std::condition_variable wake;  // a command or an inspection arrived
+  std::deque<ControlCommand> commands;
+  std::vector<std::shared_ptr<Inspection>> inspections;
+  std::deque<LogLine> log;
+  uint64_t log_total = 0;
+  std::string scene = "null";
+  std::vector<std::string> robot_ids;  // of the experiment loaded, for log lines
+  Json series_columns = Json::array();
+  std::vector<std::vector<double>> series_rows;
+  uint64_t series_run = 0;
+
+  // The simulation thread's own.
+  bool playing = false;
+  uint64_t ticks_left = 0;  // a step or run N in progress
+  double speed = 1;         // multiple of real time; 0: max
+  Clock::time_point pace_start;
+  uint64_t pace_tick = 0;
+  size_t series_copied = 0;
+  Clock::time_point last_frame, last_watch;
+
+  void AddLog(char stream, const std::string& text, const LogOrigin& from);
+  void Routes();
+  HttpResponse Gate(const HttpRequest& req);
+  HttpResponse Control(const HttpRequest& req);
+  HttpResponse Inspect(const HttpRequest& req);
+  HttpResponse Log(const HttpRequest& req);
+  HttpResponse Series(const HttpRequest& req);
+  HttpServer::NextChunk Events();
+
+  bool ApplyCommands();
+  void Apply(const ControlCommand& c);
+  void AnswerInspections();
+  void AfterLoad(bool ok, const char* what);
+  bool WatchFiles();
+  void StepOnce();
+  void CopySeries();
+  void Pace();
+  void Publish();
+  void Loop(const std::atomic<int>& stop);
+};
+
+void LiveServer::Impl::AddLog(char stream, const std::string& text, const LogOrigin& from) {
+  std::lock_guard<std::mutex> lock(mutex);
+  log.push_back({++log_total, from.tick, from.robot, stream, text});
+  if (log.size() > kLogKept) log.pop_front();
+}
+
+HttpResponse LiveServer::Impl::Gate(const HttpRequest& req) {
+  std::string why;
+  int status = CheckAccess(access, req.host, req.origin, req.Param("token"), req.authorization, &why);
+  if (status == 0) return {0, "", ""};
+  return ErrorAnswer(status, why);
+}
+
+HttpResponse LiveServer::Impl::Control(const HttpRequest& req) {
+  ControlCommand command;
+  std::string error;
+  if (!ParseControl(req.body, &command, &error)) return ErrorAnswer(400, error);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    commands.push_back(command);
+  }
+  wake.notify_all();
+  return JsonAnswer(200, {{"ok", true}});
+}
+
+HttpResponse LiveServer::Impl::Inspect(const HttpRequest& req) {
+  auto inspection = std::make_shared<Inspection>();
+  std::optional<long long> index = ParseIndex(req.Param("robot"));
+  if (!index) return ErrorAnswer(400, "robot=N needs the robot's index (0, 1, ...)");
+  inspection->robot = static_cast<int>(*index);
+  std::future<std::string> answer = inspection->answer.get_future();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    inspections.push_back(inspection);
+  }
+  wake.notify_all();
+  // A controller stuck in a long call keeps the simulation thread: answer "busy", not hang.
+  if (answer.wait_for(std::chrono::seconds(3)) != std::future_status::ready)
+    return ErrorAnswer(503, "the simulation is busy (a long step); try again");
+  std::string body = answer.get();
+  if (body == "null") return ErrorAnswer(404, "no robot " + std::to_string(*index));
+  return {200, "application/json", body};
+}
+
+HttpResponse LiveServer::Impl::Log(const HttpRequest& req) {
+  uint64_t from = static_cast<uint64_t>(ParseIndex(req.Param("from")).value_or(0));
+  Json lines = Json::array();
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const LogLine& l : log) {
+    if (l.number <= from) continue;
+    std::string who = l.robot >= 0 && static_cast<size_t>(l.robot) < robot_ids.size()
+                          ? robot_ids[l.robot]
+                          : (l.robot == kLogLoopFunctions ? "loop_functions" : "essaim");
+    lines.push_back({{"n", l.number}, {"tick", l.tick}, {"robot", l.robot}, {"who", who},
+                     {"error", l.stream == 'E'}, {"text", l.text}});
+  }
+  return JsonAnswer(200, {{"total", log_total}, {"lines", std::move(lines)}});
+}
+
+HttpResponse LiveServer::Impl::Series(const HttpRequest& req) {
+  size_t from = static_cast<size_t>(ParseIndex(req.Param("from")).value_or(0));
+  std::lock_guard<std::mutex> lock(mutex);
+  Json rows = Json::array();
+  for (size_t i = from; i < series_rows.size(); ++i) rows.push_back(series_rows[i]);
+  return JsonAnswer(200, {{"run", series_run}, {"columns", series_columns}, {"from", from}, {"rows", std::move(rows)}});
+}
+
+HttpServer::NextChunk LiveServer::Impl::Events() {
+  struct Client {
+    uint64_t seq = 0;
+    Clock::time_point last_sent;
+  };
+  auto client = std::make_shared<Client>();
+  return [this, client](std::string* chunk) {
+    // At most one frame per interval per client; the latest one when it is time.
+    auto next = client->last_sent + kFrameInterval;
+    if (Clock::now() < next) std::this_thread::sleep_until(next);
+    FrameMailbox::Frame frame;
+    if (!frames.WaitNewer(&client->seq, &frame, std::chrono::seconds(10))) {
+      if (frames.Closed()) return false;
+      *chunk = ": still here\n\n";  // a comment: finds clients that left
+      return true;
+    }
+    client->last_sent = Clock::now();
+    *chunk = SseEvent("frame", *frame);
+    return true;
+  };
+}
+
+void LiveServer::Impl::Routes() {
+  http.SetGate([this](const HttpRequest& req) { return Gate(req); });
+  http.Get("/", [this](const HttpRequest&) { return HttpResponse{200, "text/html; charset=utf-8", options.page}; });
+  http.Get("/api/state", [this](const HttpRequest&) {
+    FrameMailbox::Frame f = frames.Latest();
+    return HttpResponse{200, "application/json", f ? *f : "null"};
+  });
+  http.Get("/api/scene", [this](const HttpRequest&) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return HttpResponse{200, "application/json", scene};
+  });
+  http.Get("/api/robot", [this](const HttpRequest& req) { return Inspect(req); });
+  http.Get("/api/log", [this](const HttpRequest& req) { return Log(req); });
+  http.Get("/api/series", [this](const HttpRequest& req) { return Series(req); });
+  http.Post("/api/control", [this](const HttpRequest& req) { return Control(req); });
+  http.EventStream("/api/events", [this](const HttpRequest&) { return Events(); });
+}
+
+// ---- the simulation thread ---------------------------------------------------------------
+
+bool LiveServer::Impl::ApplyCommands() {
+  std::deque<ControlCommand> todo;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    todo.swap(commands);
+  }
+  for (const ControlCommand& c : todo) Apply(c);
+  return !todo.empty();
+}
+
+void LiveServer::Impl::Apply(const ControlCommand& c) {
+  switch (c.kind) {
+    case ControlKind::Play:
+      playing = true;
+      ticks_left = 0;
+      break;
+    case ControlKind::Pause:
+      playing = false;
+      ticks_left = 0;
+      break;
+    case ControlKind::Step:
+      playing = false;
+      ticks_left = c.ticks;
+      break;
+    case ControlKind::Speed:
+      speed = c.speed;
+      break;
+    case ControlKind::Reset: {
+      std::optional<uint64_t> seed = c.seed;
+      if (c.new_seed) seed = std::random_device()() % 1000000;
+      playing = false;
+      ticks_left = 0;
+      AfterLoad(experiment->Reset(seed), "reset");
+      break;
+    }
+  }
+  pace_start = Clock::now();
+  pace_tick = experiment->world() ? experiment->world()->tick : 0;
+}
+
+void LiveServer::Impl::AnswerInspections() {
+  std::vector<std::shared_ptr<Inspection>> todo;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    todo.swap(inspections);
+  }
+  for (auto& in : todo) {
+    Json j = experiment->Inspect(in->robot);
+    if (!j.is_null()) {
+      Json lines = Json::array();
+      std::lock_guard<std::mutex> lock(mutex);
+      for (const LogLine& l : log)
+        if (l.robot == in->robot) lines.push_back({{"tick", l.tick}, {"error", l.stream == 'E'}, {"text", l.text}});
+      while (lines.size() > 50) lines.erase(lines.begin());
+      j["log"] = std::move(lines);
+    }
+    in->answer.set_value(DumpJsonLine(j));
+  }
+}
+
+/// After a load, reload or reset: the new scene and an empty series (ok), or the error,
+/// the last good experiment staying (not ok). Said on stderr too.
+void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
+  if (!ok) {
+    std::fprintf(stderr, "essaim serve: %s failed, the last good experiment stays loaded:\n%s\n", what,
+                 experiment->Error().c_str());
+    return;
+  }
+  std::string scene_json = experiment->world() ? DumpJsonLine(SceneJson(*experiment->world())) : "null";
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    scene = std::move(scene_json);
+    robot_ids.clear();
+    if (const World* w = experiment->world())
+      for (const RobotDef& r : w->model.robots) robot_ids.push_back(r.id);
+    series_columns = Json::array();
+    series_rows.clear();
+    series_run = experiment->run();
+  }
+  series_copied = 0;
+  CopySeries();
+  if (!experiment->Error().empty()) std::fprintf(stderr, "essaim serve: %s\n", experiment->Error().c_str());
+  else if (experiment->run() > 1) std::fprintf(stderr, "essaim serve: %s, run %llu\n", what,
+                                               static_cast<unsigned long long>(experiment->run()));
+}
+
+/// On a change to a watched file: reload, reset, pause.
+bool LiveServer::Impl::WatchFiles() {
+  last_watch = Clock::now();
+  std::vector<std::string> changed;
+  if (!watcher.WaitForChange(0, &changed)) return false;
+  std::fprintf(stderr, "essaim serve: %s changed, reloading\n", changed.front().c_str());
+  playing = false;
+  ticks_left = 0;
+  AfterLoad(experiment->Load(), "reload");
+  watcher.Watch(experiment->InputFiles());  // a new require, a new floor image...
+  return true;
+}
+
+void LiveServer::Impl::CopySeries() {
+  const World* w = experiment->world();
+  if (!w) return;
+  const Timeseries& ts = w->loop_functions.Series();
+  if (ts.rows.size() == series_copied) return;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (series_columns.size() != ts.columns.size()) series_columns = ts.columns;
+  for (size_t i = series_copied; i < ts.rows.size(); ++i) series_rows.push_back(ts.rows[i]);
+  series_copied = ts.rows.size();
+}
+
+void LiveServer::Impl::StepOnce() {
+  StepStatus status = experiment->Step();
+  if (ticks_left > 0 && --ticks_left == 0) last_frame = {};  // the last tick of a step is shown
+  if (status != StepStatus::Running) {
+    playing = false;
+    ticks_left = 0;
+    last_frame = {};
+  }
+  CopySeries();
+}
+
+/// Below max speed, waits until the tick is due (a command cuts the wait short).
+void LiveServer::Impl::Pace() {
+  const World* w = experiment->world();
+  if (speed <= 0 || !w) return;
+  double rate = speed * w->model.experiment.ticks_per_second;
+  auto due = pace_start + std::chrono::duration_cast<Clock::duration>(
+                              std::chrono::duration<double>((w->tick - pace_tick) / rate));
+  auto now = Clock::now();
+  if (due < now - std::chrono::milliseconds(250)) {  // far behind: do not try to catch up
+    pace_start = now;
+    pace_tick = w->tick;
+    return;
+  }
+  std::unique_lock<std::mutex> lock(mutex);
+  wake.wait_until(lock, due, [this] { return !commands.empty() || !inspections.empty(); });
+}
+
+void LiveServer::Impl::Publish() {
+  last_frame = Clock::now();
+  FrameInfo info;
+  info.run = experiment->run();
+  info.paused = !playing && ticks_left == 0;
+  info.speed = speed;
+  info.error = experiment->Error();
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    info.series_rows = series_rows.size();
+    info.log_lines = log_total;
+  }
+  const World* w = experiment->world();
+  Json frame = w ? FrameJson(*w, info) : Json{{"tick", 0}, {"run", info.run}, {"paused", true}, {"speed", speed},
+                                               {"error", info.error}, {"robots", Json::array()}};
+  frames.Publish(DumpJsonLine(frame));
+}
+
+void LiveServer::Impl::Loop(const std::atomic<int>& stop) {
+  Publish();
+  while (!stop) {
+    bool changed = ApplyCommands();
+    AnswerInspections();
+    if (Clock::now() - last_watch >= kWatchInterval) changed |= WatchFiles();
+    bool running = (playing || ticks_left > 0) && experiment->world();
+    if (running) {
+      StepOnce();
+      Pace();
+    } else {
+      std::unique_lock<std::mutex> lock(mutex);
+      wake.wait_for(lock, kWatchInterval, [this] { return !commands.empty() || !inspections.empty(); });
+    }
+    if (changed || (running && Clock::now() - last_frame >= kFrameInterval)) Publish();
+  }
+}
+
+LiveServer::LiveServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = std::move(options);
+}
+
+LiveServer::~LiveServer() {
+  impl_->frames.Close();
+  impl_->http.Stop();
+  if (impl_->http_thread.joinable()) impl_->http_thread.join();
+}
+
+bool LiveServer::Start(std::string* error) {
+  Impl& s = *impl_;
+  if (!s.watcher.Ok()) {
+    *error = s.watcher.Error();
+    return false;
+  }
+  s.experiment = std::make_unique<LiveExperiment>(
+      s.options.file, s.options.load,
+      [&s](char stream, const std::string& line, const LogOrigin& from) { s.AddLog(stream, line, from); });
+  s.AfterLoad(s.experiment->Load(), "load");
+  s.watcher.Watch(s.experiment->InputFiles());
+  s.access.token = s.options.token.empty() ? NewToken() : s.options.token;
+  s.Routes();
+  if (!s.http.Bind(s.options.host, s.options.port, &s.port, error)) return false;
+  s.access.hosts = OwnHosts(s.options.host, s.port);
+  s.http_thread = std::thread([&s] { s.http.Run(); });
+  return true;
+}
+
+std::string LiveServer::Url() const {
+  const std::string& host = impl_->options.host;
+  std::string shown = host == "0.0.0.0" ? "127.0.0.1" : host.find(':') != std::string::npos ? "[" + host + "]" : host;
+  return "http://" + shown + ":" + std::to_string(impl_->port) + "/?token=" + impl_->access.token;
+}
+
+void LiveServer::Run(const std::atomic<int>& stop) {
+  impl_->Loop(stop);
+  impl_->frames.Close();
+  impl_->http.Stop();
+  if (impl_->http_thread.joinable()) impl_->http_thread.join();
+}
+
+}  // namespace essaim

@@ -1,0 +1,42 @@
+// `essaim serve`: the simulation on the calling thread, an HTTP server on its own threads,
+// and between them a queue of commands, the latest frame (FrameMailbox), the log and the
+// time series. Pages and scripts never touch the World: the simulation thread answers
+// them between ticks, and never waits for them.
+#pragma once
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include "model/xml_loader.h"
+
+namespace essaim {
+
+struct ServeOptions {
+  std::string file;
+  LoadOptions load;
+  std::string host = "127.0.0.1";
+  int port = 8765;
+  std::string token;  // "" : a fresh random one
+  /// The page's HTML, with the drawing and chart code already in it.
+  std::string page;
+};
+
+class LiveServer {
+ public:
+  explicit LiveServer(ServeOptions options);
+  ~LiveServer();
+  /// Loads the experiment (an error is shown on the page, not fatal), starts watching its
+  /// files and listening. False with `error` when the port cannot be bound or inotify
+  /// cannot be used.
+  bool Start(std::string* error);
+  /// http://HOST:PORT/?token=TOKEN
+  std::string Url() const;
+  /// Runs the simulation loop until `stop` is non-zero, then stops the server.
+  void Run(const std::atomic<int>& stop);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace essaim
