@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/json.h"
+#include "lua/lua_math_types.h"
 
 namespace essaim {
 
@@ -61,9 +62,22 @@ struct TreeWalk {
       }
       case LUA_TTABLE:
         return depth >= limits.depth ? Json("{...}") : Table(idx, depth + 1, false);
+      case LUA_TUSERDATA:
+        return MathValue(idx);
       default:
         return Json(lua_typename(L, lua_type(L, idx)));
     }
+  }
+
+  // A vector or quaternion as its components; other userdata by type name.
+  Json MathValue(int idx) {
+    const char* names[4];
+    double values[4];
+    int n = MathTypeFields(L, idx, names, values);
+    if (n == 0) return Json("userdata");
+    Json out = Json::object();
+    for (int i = 0; i < n; ++i) out[names[i]] = values[i];
+    return out;
   }
 
   Json Table(int idx, int depth, bool globals) {

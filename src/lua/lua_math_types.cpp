@@ -337,4 +337,19 @@ void PushVector3(lua_State* L, double x, double y, double z) { *NewV3(L) = {x, y
 void PushVector2(lua_State* L, double x, double y) { *NewV2(L) = {x, y}; }
 void PushQuaternion(lua_State* L, double w, double x, double y, double z) { *NewQ(L) = {w, x, y, z}; }
 
+int MathTypeFields(lua_State* L, int idx, const char** names, double* values) {
+  static const char* const kXyz[] = {"x", "y", "z"};
+  static const char* const kWxyz[] = {"w", "x", "y", "z"};
+  int n = 0;
+  const double* v = nullptr;
+  if (auto* a = static_cast<V2*>(luaL_testudata(L, idx, kV2))) n = 2, v = &a->x;
+  else if (auto* b = static_cast<V3*>(luaL_testudata(L, idx, kV3))) n = 3, v = &b->x;
+  else if (auto* q = static_cast<Q*>(luaL_testudata(L, idx, kQ))) n = 4, v = &q->w;
+  for (int i = 0; i < n; ++i) {
+    names[i] = n == 4 ? kWxyz[i] : kXyz[i];
+    values[i] = v[i];
+  }
+  return n;
+}
+
 }  // namespace essaim

@@ -9,5 +9,8 @@ void OpenMathTypes(lua_State* L);
 void PushVector3(lua_State* L, double x, double y, double z);
 void PushQuaternion(lua_State* L, double w, double x, double y, double z);
 void PushVector2(lua_State* L, double x, double y);
+/// The components of the vector2, vector3 or quaternion at `idx` (names "x", "y"[, "z"] or
+/// "w", "x", "y", "z" into `names`, at most 4); 0 when it is none of these. Reads only.
+int MathTypeFields(lua_State* L, int idx, const char** names, double* values);
 
 }  // namespace essaim

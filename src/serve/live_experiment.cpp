@@ -12,7 +12,13 @@
 namespace essaim {
 
 namespace {
-double Round(double v, double unit) { return std::isfinite(v) ? std::round(v / unit) * unit : 0.0; }
+// Rounded to `digits` decimals (dividing by a power of ten gives the shortest decimal text).
+double Round(double v, int digits) {
+  const double scale = std::pow(10.0, digits);
+  return std::isfinite(v) ? std::round(v * scale) / scale : 0.0;
+}
+// Physics keeps the turns a body made; a page wants the heading, in (-pi, pi].
+double Heading(double yaw) { return std::isfinite(yaw) ? std::remainder(yaw, 2 * M_PI) : 0.0; }
 
 Json Rgb(const Color& c) { return Json::array({c.r, c.g, c.b}); }
 
@@ -36,9 +42,9 @@ Json RobotJson(const World& w, size_t i) {
   Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
   Json j = Json::object();
   j["id"] = w.model.robots[i].id;
-  j["x"] = Round(pose.x, 1e-4);
-  j["y"] = Round(pose.y, 1e-4);
-  j["yaw"] = Round(pose.yaw, 1e-4);
+  j["x"] = Round(pose.x, 4);
+  j["y"] = Round(pose.y, 4);
+  j["yaw"] = Round(Heading(pose.yaw), 4);
   j["led"] = LedOrNull(FirstLit(r.leds, footbot::kLedCount));
   j["alive"] = r.alive;
   j["ok"] = r.controller_ok;
@@ -81,7 +87,7 @@ Json FrameJson(const World& w, const FrameInfo& info) {
     const ObstacleDef& o = w.model.obstacles[k];
     if (!o.movable) continue;
     Pose2 p = w.physics.ObstaclePose(static_cast<int>(k));
-    movable.push_back(Json::array({k, Round(p.x, 1e-4), Round(p.y, 1e-4), Round(p.yaw, 1e-4), LedOrNull(ObstacleLed(o))}));
+    movable.push_back(Json::array({k, Round(p.x, 4), Round(p.y, 4), Round(Heading(p.yaw), 4), LedOrNull(ObstacleLed(o))}));
   }
   f["movable"] = std::move(movable);
   f["obstacles"] = w.model.obstacles.size();
@@ -189,7 +195,7 @@ Json LiveExperiment::Inspect(int robot) const {
   Json j = Json::object();
   j["index"] = robot;
   j["id"] = def.id;
-  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw_deg", pose.yaw * 180 / M_PI}};
+  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw_deg", Heading(pose.yaw) * 180 / M_PI}};
   j["alive"] = r.alive;
   j["controller_ok"] = r.controller_ok;
   j["battery"] = def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0;

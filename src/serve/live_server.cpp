@@ -103,6 +103,7 @@ void LiveServer::Impl::AddLog(char stream, const std::string& text, const LogOri
 }
 
 HttpResponse LiveServer::Impl::Gate(const HttpRequest& req) {
+  if (req.path == "/favicon.ico") return {204, "image/x-icon", ""};  // browsers ask, without the token
   std::string why;
   int status = CheckAccess(access, req.host, req.origin, req.Param("token"), req.authorization, &why);
   if (status == 0) return {0, "", ""};
