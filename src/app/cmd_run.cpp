@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "app/cli_support.h"
@@ -26,6 +27,8 @@
 #include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
+#include "serve/experiment_inputs.h"
+#include "serve/file_watcher.h"
 #include "sim/step.h"
 
 namespace essaim {
@@ -51,6 +54,7 @@ struct RunArgs {
   std::string record;  // --record's value: "" or every=N
   LoadOptions load;
   bool quiet = false, strict = false, sandbox = false;
+  bool watch = false;       // --watch: run again whenever an input file changes
   bool log_prefix = false;  // --log-prefix: "[t=120 fb7] " before each log line
   std::string log_dir;      // --log-dir: one file per robot
   uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
@@ -234,7 +238,8 @@ static int Check(RunArgs& r) {
   return kExitOk;
 }
 
-static int Run(RunArgs& r) {
+/// One run. `inputs` receives the files it read (to watch) as soon as they are known.
+static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
@@ -242,6 +247,7 @@ static int Run(RunArgs& r) {
   }
   auto model = LoadOrReport(r, &error);
   if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
+  *inputs = ExperimentInputs(*model, nullptr);
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
   if (!PrepareOutFolder(out, &error)) {  // before any script runs: a wrong --out is bad input
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
@@ -264,6 +270,7 @@ static int Run(RunArgs& r) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return FailedBeforeRun(r, out, model.get(), error, kExitBadInput);
   }
+  *inputs = ExperimentInputs(*model, world.get());
   if (!SetAsideEarlierOutputsAndSay(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
@@ -358,6 +365,37 @@ static int Run(RunArgs& r) {
   return kExitOk;
 }
 
+/// --watch: run, then wait for a change to a file the run read, and run again, until
+/// Ctrl-C (exit 0; a run it interrupts still leaves whole outputs).
+static int WatchAndRun(const RunArgs& args) {
+  FileWatcher watcher;
+  if (!watcher.Ok()) {
+    std::fprintf(stderr, "essaim run: --watch: %s\n", watcher.Error().c_str());
+    return kExitBadInput;
+  }
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
+  // Every file any run read: a run that failed on a broken module no longer lists it, and
+  // its fix must still be seen.
+  std::set<std::string> watched = {args.file};
+  while (true) {
+    RunArgs r = args;  // each run applies --set-file and the options afresh
+    std::vector<std::string> inputs;
+    Run(r, &inputs);
+    std::fflush(stdout);
+    if (g_interrupted) return kExitOk;
+    watched.insert(inputs.begin(), inputs.end());
+    watcher.Watch({watched.begin(), watched.end()});
+    if (!watcher.Error().empty()) std::fprintf(stderr, "essaim run: --watch: %s\n", watcher.Error().c_str());
+    std::fprintf(stderr, "essaim run: watching %zu file(s) for changes (Ctrl-C ends)\n", watcher.Files().size());
+    std::vector<std::string> changed;
+    while (!g_interrupted && !watcher.WaitForChange(1000, &changed)) {
+    }
+    if (g_interrupted) return kExitOk;
+    std::fprintf(stderr, "essaim run: %s changed, running again\n", changed.front().c_str());
+  }
+}
+
 CommandMain AddCheckCommand(CLI::App& app) {
   auto r = std::make_shared<RunArgs>();
   CLI::App* sub = app.add_subcommand("check", "validate an experiment and its scripts, list every error");
@@ -401,6 +439,8 @@ CommandMain AddRunCommand(CLI::App& app) {
       ->type_name("[every=N]")
       ->expected(0, 1)
       ->check(RecordEvery());
+  sub->add_flag("--watch", r->watch,
+                "run again whenever the experiment's files (arena, scripts, modules, floor image) change; Ctrl-C ends");
   sub->add_option("--memory-log", r->memory_log_every,
                   "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
       ->type_name("N")
@@ -410,7 +450,9 @@ CommandMain AddRunCommand(CLI::App& app) {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
     r->record_every = 0;
     if (sub->count("--record") > 0) r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
-    return Run(*r);
+    if (r->watch) return WatchAndRun(*r);
+    std::vector<std::string> inputs;
+    return Run(*r, &inputs);
   };
 }
 

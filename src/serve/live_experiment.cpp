@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "core/error_list.h"
 #include "core/json.h"
 #include "lua/lua_inspect.h"
+#include "serve/experiment_inputs.h"
 #include "output/recording.h"
 
 namespace essaim {
@@ -147,23 +147,16 @@ bool LiveExperiment::Load() {
   while (!error.empty() && error.back() == '\n') error.pop_back();
   if (!world) {
     error_ = error.empty() ? "the experiment did not load" : error;
+    if (model)  // a script it names now (a new controller file) is watched too
+      for (const std::string& f : ExperimentInputs(*model, nullptr))
+        if (std::find(inputs_.begin(), inputs_.end(), f) == inputs_.end()) inputs_.push_back(f);
     return false;
   }
   model_ = std::move(model);
   world_ = std::move(world);
   error_ = world_->failure;  // init() failed: shown, the world is not stepped
   ++run_;
-  std::set<std::string> inputs = {model_->file};
-  for (const ControllerDef& c : model_->controllers)
-    if (!c.script.empty()) inputs.insert(c.script);
-  if (!model_->loop_functions.script.empty()) inputs.insert(model_->loop_functions.script);
-  if (model_->floor.source == FloorSource::Image && !model_->floor.path.empty()) inputs.insert(model_->floor.path);
-  std::set<int> seen;  // one state per controller type knows its modules
-  for (size_t i = 0; i < world_->controllers.size(); ++i)
-    if (world_->controllers[i] && seen.insert(model_->robots[i].controller).second)
-      for (const std::string& f : RequiredModuleFiles(world_->controllers[i]->State())) inputs.insert(f);
-  for (const std::string& f : RequiredModuleFiles(world_->loop_functions.State())) inputs.insert(f);
-  inputs_.assign(inputs.begin(), inputs.end());
+  inputs_ = ExperimentInputs(*model_, world_.get());
   return true;
 }
 

@@ -228,3 +228,36 @@ def test_live_page_plays_inspects_and_reloads_on_save(served, browser, tmp_path)
     page.wait_for_function("document.getElementById('error').textContent === ''", timeout=10000)
     assert errors == []
     page.close()
+
+
+def test_run_watch_reruns_on_save_until_ctrl_c(essaim, tmp_path):
+    import threading
+    ctrl, loop, helper = tmp_path / "ctrl.lua", tmp_path / "loop.lua", tmp_path / "helper.lua"
+    helper.write_text("return {speed = 10}\n")
+    ctrl.write_text("local h = require('helper')\nfunction step() robot.wheels.set_velocity(h.speed, h.speed) end\n")
+    loop.write_text(LOOP)
+    argos = tmp_path / "w.argos"
+    argos.write_text(experiment(ctrl, loop).replace('length="0"', 'length="3"'))
+    out = tmp_path / "out"
+    proc = subprocess.Popen([essaim, "run", str(argos), "--watch", "--out", str(out)], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    lines = {"out": [], "err": []}
+    for name, stream in (("out", proc.stdout), ("err", proc.stderr)):
+        threading.Thread(target=lambda n=name, s=stream: [lines[n].append(x) for x in s], daemon=True).start()
+    try:
+        waiting = lambda k: sum("watching" in x for x in lines["err"]) >= k
+        wait_for(lambda: waiting(1), timeout=60)
+        assert len(lines["out"]) == 1 and "30 ticks" in lines["out"][0]
+        first = json.loads((out / "summary.json").read_text())
+        save(helper, "return {speed = \n")  # a broken module: that run fails, watching goes on
+        wait_for(lambda: waiting(2), timeout=60)
+        assert any("helper.lua:2:" in x for x in lines["err"]), lines["err"]
+        save(helper, "return {speed = 3}\n")  # the fix is seen: the module is still watched
+        wait_for(lambda: waiting(3), timeout=60)
+        assert len(lines["out"]) == 2, lines["out"]
+    finally:
+        proc.send_signal(signal.SIGINT)
+        rc = proc.wait(timeout=30)
+    assert rc == 0, lines["err"]
+    last = json.loads((out / "summary.json").read_text())
+    assert last["status"] == "ok" and last["ticks"] == first["ticks"] == 30
