@@ -261,3 +261,26 @@ def test_run_watch_reruns_on_save_until_ctrl_c(essaim, tmp_path):
     assert rc == 0, lines["err"]
     last = json.loads((out / "summary.json").read_text())
     assert last["status"] == "ok" and last["ticks"] == first["ticks"] == 30
+
+
+def test_replay_page_charts_the_runs_time_series(essaim, browser, tmp_path):
+    ctrl, loop = tmp_path / "ctrl.lua", tmp_path / "loop.lua"
+    ctrl.write_text(FORWARD)
+    loop.write_text(LOOP)
+    argos = tmp_path / "r.argos"
+    argos.write_text(experiment(ctrl, loop).replace('length="0"', 'length="10"'))
+    out = tmp_path / "run"
+    subprocess.run([essaim, "run", str(argos), "--record", "--quiet", "--out", str(out)], check=True, timeout=120)
+    subprocess.run([essaim, "replay", str(out)], check=True, capture_output=True, timeout=60)
+    page = browser.new_page(viewport={"width": 1000, "height": 760})
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto((out / "replay.html").as_uri())
+    page.wait_for_function("window.essaimReplay && essaimReplay.ready", timeout=30000)
+    assert page.evaluate("essaimReplay.series()") == {"columns": ["tick", "wave"], "rows": 20}
+    assert "wave" in page.text_content("#charts .legend")
+    # The legend gives the value at the tick shown.
+    page.evaluate("essaimReplay.setFrame(50)")
+    assert page.text_content("#charts .legend b") == str(round(math.sin(5), 3))
+    assert errors == []
+    page.close()
