@@ -24,6 +24,15 @@ std::vector<std::string> OwnHosts(const std::string& bind_host, int port) {
   return hosts;
 }
 
+AccessPolicy PolicyFor(const std::string& token, const std::string& bind_host, int port) {
+  AccessPolicy p;
+  p.token = token;
+  p.hosts = OwnHosts(bind_host, port);
+  p.any_address = bind_host == "0.0.0.0" || bind_host == "::";
+  p.port = port;
+  return p;
+}
+
 namespace {
 // Compares in time independent of where the strings first differ.
 bool SameSecret(const std::string& a, const std::string& b) {
@@ -33,8 +42,24 @@ bool SameSecret(const std::string& a, const std::string& b) {
   return diff == 0;
 }
 
+// "1.2.3.4:PORT" or "[v6]:PORT" with the server's port.
+bool IsAddressWithPort(const std::string& host, int port) {
+  const std::string suffix = ":" + std::to_string(port);
+  if (host.size() <= suffix.size() || host.compare(host.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+  std::string address = host.substr(0, host.size() - suffix.size());
+  if (address.size() > 2 && address.front() == '[' && address.back() == ']')
+    return address.find_first_not_of("0123456789abcdefABCDEF:.", 1) == address.size() - 1;
+  int dots = 0;
+  for (char c : address) {
+    if (c == '.') ++dots;
+    else if (c < '0' || c > '9') return false;
+  }
+  return dots == 3;
+}
+
 bool IsOwnHost(const AccessPolicy& policy, const std::string& host) {
-  return std::find(policy.hosts.begin(), policy.hosts.end(), host) != policy.hosts.end();
+  if (std::find(policy.hosts.begin(), policy.hosts.end(), host) != policy.hosts.end()) return true;
+  return policy.any_address && IsAddressWithPort(host, policy.port);
 }
 }  // namespace
 

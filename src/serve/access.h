@@ -14,7 +14,14 @@ struct AccessPolicy {
   std::string token;
   /// Host header values that name this server ("127.0.0.1:8080", "localhost:8080", ...).
   std::vector<std::string> hosts;
+  /// Listening on every address (0.0.0.0, ::): any IP address with this port names the
+  /// server too. Names other than localhost never do (DNS rebinding uses names).
+  bool any_address = false;
+  int port = 0;
 };
+
+/// The policy of a server bound to `bind_host`:`port` with this token.
+AccessPolicy PolicyFor(const std::string& token, const std::string& bind_host, int port);
 
 /// The Host values a server bound to `bind_host`:`port` answers to: loopback names always,
 /// the bound address when it is another one.

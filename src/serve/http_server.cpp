@@ -25,6 +25,7 @@ HttpRequest Convert(const httplib::Request& r) {
 void Send(const HttpResponse& answer, httplib::Response* res) {
   res->status = answer.status;
   res->set_header("Cache-Control", "no-store");
+  res->set_header("Referrer-Policy", "no-referrer");  // the page's address holds the token
   res->set_content(answer.body, answer.content_type);
 }
 

@@ -239,6 +239,7 @@ void LiveServer::Impl::Apply(const ControlCommand& c) {
       playing = false;
       ticks_left = 0;
       AfterLoad(experiment->Reset(seed), "reset");
+      if (seed) AddLog('O', "reset with seed " + std::to_string(*seed), {0, kLogHost});
       break;
     }
   }
@@ -401,17 +402,19 @@ bool LiveServer::Start(std::string* error) {
       [&s](char stream, const std::string& line, const LogOrigin& from) { s.AddLog(stream, line, from); });
   s.AfterLoad(s.experiment->Load(), "load");
   s.watcher.Watch(s.experiment->InputFiles());
-  s.access.token = s.options.token.empty() ? NewToken() : s.options.token;
+  const std::string token = s.options.token.empty() ? NewToken() : s.options.token;
   s.Routes();
   if (!s.http.Bind(s.options.host, s.options.port, &s.port, error)) return false;
-  s.access.hosts = OwnHosts(s.options.host, s.port);
+  s.access = PolicyFor(token, s.options.host, s.port);
   s.http_thread = std::thread([&s] { s.http.Run(); });
   return true;
 }
 
 std::string LiveServer::Url() const {
   const std::string& host = impl_->options.host;
-  std::string shown = host == "0.0.0.0" ? "127.0.0.1" : host.find(':') != std::string::npos ? "[" + host + "]" : host;
+  std::string shown = host == "0.0.0.0" || host == "::" ? "127.0.0.1"
+                      : host.find(':') != std::string::npos ? "[" + host + "]"
+                                                              : host;
   return "http://" + shown + ":" + std::to_string(impl_->port) + "/?token=" + impl_->access.token;
 }
 

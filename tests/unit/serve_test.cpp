@@ -64,6 +64,18 @@ TEST(ServeAccess, AnotherBoundAddressIsItsOwnHost) {
   EXPECT_NE(std::find(hosts.begin(), hosts.end(), "127.0.0.1:80"), hosts.end());
 }
 
+TEST(ServeAccess, EveryAddressAcceptsIpAddressesButNotNames) {
+  AccessPolicy p = PolicyFor("0123456789abcdef", "0.0.0.0", 8765);
+  std::string why;
+  EXPECT_EQ(CheckAccess(p, "10.1.2.3:8765", "http://10.1.2.3:8765", p.token, "", &why), 0);
+  EXPECT_EQ(CheckAccess(p, "[fe80::1]:8765", "", p.token, "", &why), 0);
+  EXPECT_EQ(CheckAccess(p, "10.1.2.3:8766", "", p.token, "", &why), 403);
+  EXPECT_EQ(CheckAccess(p, "rebind.example:8765", "", p.token, "", &why), 403);
+  EXPECT_EQ(CheckAccess(p, "1.2.3.example:8765", "", p.token, "", &why), 403);
+  AccessPolicy local = PolicyFor("0123456789abcdef", "127.0.0.1", 8765);
+  EXPECT_EQ(CheckAccess(local, "10.1.2.3:8765", "", local.token, "", &why), 403);
+}
+
 TEST(ServeControl, CommandsAndTheirErrors) {
   ControlCommand c;
   std::string error;
@@ -244,6 +256,19 @@ TEST(ServeLiveExperiment, AScriptErrorKeepsTheLastGoodWorldAndAFixClearsIt) {
   ASSERT_TRUE(live.Reset(7));
   EXPECT_EQ(live.seed(), 7u);
   EXPECT_EQ(live.run(), 3u);
+}
+
+TEST(ServeLiveExperiment, StepsAsARunDoes) {
+  TempDir d;
+  d.Write("ctrl.lua", "function step() robot.wheels.set_velocity(3 + robot.random.uniform(), 4) end\n");
+  std::string argos = d.Write("experiment.argos", TwoRobots());
+  LiveExperiment live(argos, {}, nullptr);
+  ASSERT_TRUE(live.Load()) << live.Error();
+  for (int i = 0; i < 30; ++i) live.Step();
+  Scene run = Load(d, TwoRobots());
+  ASSERT_TRUE(run.ok()) << run.error;
+  RunTicks(*run.world, 30);
+  EXPECT_EQ(PoseHash(*live.world()), PoseHash(*run.world));
 }
 
 }  // namespace
