@@ -473,8 +473,9 @@ def option_words(argv: list[str]) -> list[str]:
     return words
 
 
-def plan_runs(sweep: Sweep, runs: list[Run], essaim: str, version: str | None):
-    """The runs to do, and {cause: number of finished runs redone for it}."""
+def plan_runs(sweep: Sweep, runs: list[Run], essaim: str, version):
+    """The runs to do, and {cause: number of finished runs redone for it}. `version` is
+    essaim's version, or a function giving it (asked only when a finished run is judged)."""
     hashes, causes, todo = InputHashes(), Counter(), []
     for r in runs:
         run_dir = sweep.out / "runs" / r.key
@@ -485,6 +486,8 @@ def plan_runs(sweep: Sweep, runs: list[Run], essaim: str, version: str | None):
                 causes[change] += 1
             todo.append(r)
             continue
+        if callable(version):
+            version = version()
         why = stale_causes(read_json(run_dir / "summary.json"), sweep.experiment, version, hashes)
         causes.update(why)
         if why:
@@ -502,7 +505,7 @@ def finished_any(run_dir: Path, strict: bool) -> bool:
 def essaim_version(essaim: str) -> str | None:
     """`essaim --version`'s number; None when it cannot be asked (then not compared)."""
     try:
-        r = subprocess.run([essaim, "--version"], capture_output=True, text=True, timeout=30)
+        r = subprocess.run([essaim, "--version"], capture_output=True, text=True, timeout=10)
     except (OSError, subprocess.TimeoutExpired):
         return None
     words = r.stdout.split()
@@ -906,7 +909,7 @@ def main(argv=None) -> int:
         return 2
 
     local = not args.scheduler or shutil.which(essaim)
-    todo, causes = plan_runs(sweep, runs, essaim, essaim_version(essaim) if local else None)
+    todo, causes = plan_runs(sweep, runs, essaim, (lambda: essaim_version(essaim)) if local else None)
     for cause, n in causes.most_common():
         print(f"sweep: {cause}: redoing {n} run{'s' if n != 1 else ''}", file=sys.stderr)
     skipped = len(runs) - len(todo)
