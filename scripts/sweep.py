@@ -5,7 +5,9 @@
 
 Every (point, seed) of the sweep is one `essaim run ... --quiet --out <out>/runs/<run-key>`
 process. The runs' summary.json and metrics.json are gathered into one table, one row per
-run, written as <out>/results.parquet and <out>/results.csv. See docs/sweeps.md.
+run, written as <out>/results.parquet and <out>/results.csv; their timeseries.csv into
+<out>/timeseries.parquet. A rerun reuses the finished runs that still stand (same files
+read, same essaim, same settings) and redoes the others, saying why. See docs/sweeps.md.
 
 Exit status: 0 every run succeeded; 1 some runs failed (they are rows with status "failed");
 2 bad sweep file or command line, or essaim not found; 130 interrupted (finished runs kept,
