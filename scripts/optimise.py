@@ -34,6 +34,10 @@ from pathlib import Path
 STUDY_KEYS = {"experiment", "workdir", "out", "ticks", "seeds", "eval_seeds", "set", "params", "essaim"}
 STUDY_NAME = "essaim"
 
+# The run-identity check is sweep.py's (same hash, same causes).
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from sweep import InputHashes, stale_causes  # noqa: E402
+
 
 class StudyError(Exception):
     """Bad study file or command line (exit 2)."""
@@ -113,7 +117,8 @@ def format_value(v) -> str:
 
 
 def run_once(experiment: str, workdir: str, overrides: dict, seed: int, ticks, essaim_bin) -> dict:
-    """Runs one experiment; returns {'trips': mean trips per robot, 'deaths': dead robots}.
+    """Runs one experiment; returns {'trips': mean trips per robot, 'deaths': dead robots,
+    'identity': what the run read (essaim version, input files and their hashes)}.
 
     A plain function of plain values, so Dask can ship it to a worker."""
     over = {k: format_value(v) for k, v in overrides.items()}
@@ -127,6 +132,7 @@ def run_once(experiment: str, workdir: str, overrides: dict, seed: int, ticks, e
             with essaim.Simulation(experiment, seed=seed, threads=1, overrides=over) as sim:
                 sim.step(ticks) if ticks else sim.run()
                 m = sim.finish()
+                summary = sim.summary
         except essaim.Error as e:
             raise RunFailed(str(e)) from None
     else:
@@ -141,9 +147,22 @@ def run_once(experiment: str, workdir: str, overrides: dict, seed: int, ticks, e
             if p.returncode != 0:
                 raise RunFailed(f"exit {p.returncode}: {p.stderr.strip()[-500:]}")
             m = json.loads((Path(out) / "metrics.json").read_text())
+            summary = json.loads((Path(out) / "summary.json").read_text())
     if "trips_per_robot_mean" not in m or "dead_count" not in m:
         raise RunFailed("metrics.json lacks trips_per_robot_mean/dead_count: not the foraging loop functions?")
-    return {"trips": float(m["trips_per_robot_mean"]), "deaths": float(m["dead_count"])}
+    return {"trips": float(m["trips_per_robot_mean"]), "deaths": float(m["dead_count"]),
+            "identity": run_identity(summary, experiment)}
+
+
+def run_identity(summary: dict, experiment: str) -> dict:
+    """The part of a run's summary that says what it read: kept with its trial, so that a
+    resumed study can tell whether the trial still stands."""
+    inputs = summary.get("inputs")
+    if not isinstance(inputs, list):  # an essaim that does not list them: the experiment file
+        inputs = [{"path": os.path.abspath(summary.get("experiment") or experiment),
+                   "hash": summary.get("experiment_hash")}]
+    return {"essaim_version": summary.get("essaim_version"),
+            "inputs": [{"path": i.get("path"), "hash": i.get("hash")} for i in inputs]}
 
 
 class Runner:
@@ -193,8 +212,74 @@ def make_objective(study_cfg: dict, runner: Runner, seeds: list[int], multi: boo
         trips, deaths = mean([r["trips"] for r in results]), mean([r["deaths"] for r in results])
         trial.set_user_attr("trips_per_robot", trips)
         trial.set_user_attr("deaths", deaths)
+        trial.set_user_attr("identity", merged_identity([r["identity"] for r in results]))
+        trial.set_user_attr("settings", settings)
         return (trips, deaths) if multi else trips
+    settings = trial_settings(study_cfg, runner.ticks, seeds)
     return objective
+
+
+def trial_settings(study_cfg: dict, ticks, seeds) -> dict:
+    """What else defines a trial's result besides its parameters."""
+    return {"ticks": ticks, "seeds": list(seeds), "set": dict(study_cfg["set"]),
+            "experiment": str(study_cfg["experiment"])}
+
+
+def merged_identity(identities: list[dict]) -> dict:
+    """One identity for a trial's runs (the same files, a module only some seeds loaded)."""
+    inputs = {}
+    for ident in identities:
+        for i in ident["inputs"]:
+            inputs.setdefault(i["path"], i)
+    return {"essaim_version": identities[0]["essaim_version"], "inputs": list(inputs.values())}
+
+
+def trial_causes(trial, settings: dict, version: str | None, hashes) -> list[str]:
+    """Why a stored trial no longer stands: files it read changed or are gone, another
+    essaim, other settings (ticks, seeds, fixed overrides). [] when it stands, and for
+    trials stored before optimise.py kept this (they are reported apart)."""
+    ident = trial.user_attrs.get("identity")
+    if not isinstance(ident, dict):
+        return []
+    causes = stale_causes(ident, Path(settings["experiment"]), version, hashes)
+    stored = trial.user_attrs.get("settings")
+    if isinstance(stored, dict):
+        changed = [k for k in ("ticks", "seeds", "set", "experiment") if stored.get(k) != settings[k]]
+        if changed:
+            causes.append(f"study settings changed ({', '.join(changed)})")
+    return causes
+
+
+def refresh_study(out: Path, study, settings: dict, version: str | None, multi: bool, seed: int):
+    """Redo the stored trials that no longer stand: the study is started again in a new
+    study.db (the old one kept as study-stale-N.db), with the trials that stand copied and
+    the others queued to run first with their parameters. Prints one line per cause."""
+    import optuna
+    from collections import Counter
+    hashes, causes, stale, kept, unknown = InputHashes(), Counter(), [], [], 0
+    for t in study.trials:
+        if t.state != optuna.trial.TrialState.COMPLETE:
+            continue
+        why = trial_causes(t, settings, version, hashes)
+        unknown += "identity" not in t.user_attrs
+        causes.update(why)
+        (stale if why else kept).append(t)
+    if unknown:
+        print(f"optimise.py: {unknown} stored trial(s) have no record of the files they read "
+              "(made by an older optimise.py): reused as they are")
+    if not stale:
+        return study
+    for cause, n in causes.most_common():
+        print(f"optimise.py: {cause}: redoing {n} trial{'s' if n != 1 else ''}")
+    n = 1
+    while (out / f"study-stale-{n}.db").exists():
+        n += 1
+    (out / "study.db").rename(out / f"study-stale-{n}.db")
+    fresh = open_study(out, multi, seed)
+    fresh.add_trials(kept)
+    for t in stale:
+        fresh.enqueue_trial(t.params)
+    return fresh
 
 
 def open_study(out: Path, multi: bool, seed: int):
@@ -253,6 +338,21 @@ def evaluate(study_cfg: dict, runner: Runner, best: dict, seeds: list[int], out:
     return rows
 
 
+def current_version(essaim_bin: str | None) -> str | None:
+    """The version the runs will report: the module's, or the executable's."""
+    if not essaim_bin:
+        try:
+            import essaim
+            return essaim.__version__
+        except ImportError:
+            pass
+    exe = essaim_bin or shutil.which("essaim")
+    if not exe:
+        return None
+    from sweep import essaim_version
+    return essaim_version(exe)
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(prog="optimise.py", description=__doc__.split("\n\n")[0],
                                  epilog="Exit status: 0 done, 1 runs failed, 2 bad input, 130 interrupted.")
@@ -296,6 +396,9 @@ def main(argv=None) -> int:
         print(f"optimise.py: {e}", file=sys.stderr)
         return 2
     runner = Runner(cfg, ticks, args.jobs, args.scheduler, essaim_bin)
+    settings = trial_settings(cfg, ticks, cfg["seeds"])
+    study = refresh_study(out, study, settings, current_version(essaim_bin), args.multi,
+                          args.sampler_seed)
     done = [t for t in study.trials if t.state == optuna.trial.TrialState.COMPLETE]
     todo = max(0, args.trials - len(done))
     print(f"optimise.py: {len(done)} trial(s) stored in {out / 'study.db'}, running {todo} more "

@@ -5,7 +5,9 @@
 
 Every (point, seed) of the sweep is one `essaim run ... --quiet --out <out>/runs/<run-key>`
 process. The runs' summary.json and metrics.json are gathered into one table, one row per
-run, written as <out>/results.parquet and <out>/results.csv. See docs/sweeps.md.
+run, written as <out>/results.parquet and <out>/results.csv; their timeseries.csv into
+<out>/timeseries.parquet. A rerun reuses the finished runs that still stand (same files
+read, same essaim, same settings) and redoes the others, saying why. See docs/sweeps.md.
 
 Exit status: 0 every run succeeded; 1 some runs failed (they are rows with status "failed");
 2 bad sweep file or command line, or essaim not found; 130 interrupted (finished runs kept,
@@ -381,6 +383,137 @@ def finished(run_dir: Path, argv_record: list[str], strict: bool = False) -> boo
     return record.get("returncode") == 0
 
 
+# ----------------------------------------------------------------------------------------
+# Run identity: is a finished run still the run this sweep would make?
+
+FNV_OFFSET, FNV_PRIME, MASK64 = 0xcbf29ce484222325, 0x100000001b3, (1 << 64) - 1
+
+
+def fnv1a64(data: bytes) -> str:
+    """FNV-1a 64 of a file's bytes, written as essaim writes it in summary.json."""
+    h = FNV_OFFSET
+    for b in data:
+        h = ((h ^ b) * FNV_PRIME) & MASK64
+    return f"fnv1a64:{h:016x}"
+
+
+class InputHashes:
+    """The current content hash of each input file, computed once per sweep; None when the
+    file is missing or unreadable."""
+
+    def __init__(self):
+        self._hashes: dict[str, str | None] = {}
+
+    def __call__(self, path: str) -> str | None:
+        if path not in self._hashes:
+            try:
+                self._hashes[path] = fnv1a64(Path(path).read_bytes())
+            except OSError:
+                self._hashes[path] = None
+        return self._hashes[path]
+
+
+def shown_path(path: str) -> str:
+    """A path as the user knows it: relative to the current folder when under it."""
+    try:
+        return str(Path(path).resolve().relative_to(Path.cwd()))
+    except ValueError:
+        return path
+
+
+def stale_causes(summary: dict, experiment: Path, version: str | None,
+                 hashes: InputHashes) -> list[str]:
+    """Why a finished run no longer stands for this sweep: each input file of its
+    summary.json (arena, controllers, loop functions, required modules, floor images) that
+    changed or is gone, and another essaim version. Seed and overrides are in the sweep's
+    own record of the command line (checked before). A summary without an input list
+    (older essaim) is judged by its experiment file alone."""
+    causes = []
+    stored = summary.get("essaim_version")
+    if version is not None and stored != version:
+        causes.append(f"essaim version changed ({stored} -> {version})")
+    inputs = summary.get("inputs")
+    if not isinstance(inputs, list):
+        inputs = [{"path": summary.get("experiment") or str(experiment),
+                   "hash": summary.get("experiment_hash")}]
+    for item in inputs:
+        path = item.get("path") if isinstance(item, dict) else None
+        if not isinstance(path, str):
+            causes.append("summary.json lists an input without a path")
+            continue
+        now = hashes(path)
+        if now is None:
+            causes.append(f"{shown_path(path)} is missing")
+        elif now != item.get("hash"):
+            causes.append(f"{shown_path(path)} changed")
+    return causes
+
+
+def command_change(run_dir: Path, argv_record: list[str]) -> str | None:
+    """'settings changed (...)' when the run's recorded command line is not this sweep's."""
+    record = read_json(run_dir / RUN_RECORD)
+    old = record.get("argv") if isinstance(record, dict) else None
+    if not isinstance(old, list) or old == argv_record:
+        return None
+    was, now = option_words(old), option_words(argv_record)
+    gone, added = [w for w in was if w not in now], [w for w in now if w not in was]
+    what = "; ".join(part for part in (f"now {', '.join(added)}" if added else "",
+                                       f"was {', '.join(gone)}" if gone else "") if part)
+    return f"sweep settings changed ({what or 'argument order'})"
+
+
+def option_words(argv: list[str]) -> list[str]:
+    """A command line as its options with their values: ['--ticks 20', '--set a=1', ...]."""
+    words, i = [], 0
+    while i < len(argv):
+        if argv[i].startswith("--") and i + 1 < len(argv) and not argv[i + 1].startswith("--"):
+            words.append(f"{argv[i]} {argv[i + 1]}")
+            i += 2
+        else:
+            words.append(argv[i])
+            i += 1
+    return words
+
+
+def plan_runs(sweep: Sweep, runs: list[Run], essaim: str, version):
+    """The runs to do, and {cause: number of finished runs redone for it}. `version` is
+    essaim's version, or a function giving it (asked only when a finished run is judged)."""
+    hashes, causes, todo = InputHashes(), Counter(), []
+    for r in runs:
+        run_dir = sweep.out / "runs" / r.key
+        argv = record_argv(sweep.argv(r, essaim, ""))
+        if not finished(run_dir, argv, sweep.strict):
+            change = command_change(run_dir, argv) if (run_dir / "summary.json").is_file() else None
+            if change and finished_any(run_dir, sweep.strict):
+                causes[change] += 1
+            todo.append(r)
+            continue
+        if callable(version):
+            version = version()
+        why = stale_causes(read_json(run_dir / "summary.json"), sweep.experiment, version, hashes)
+        causes.update(why)
+        if why:
+            todo.append(r)
+    return todo, causes
+
+
+def finished_any(run_dir: Path, strict: bool) -> bool:
+    """A run that succeeded, whatever command line made it."""
+    record = read_json(run_dir / RUN_RECORD)
+    argv = record.get("argv") if isinstance(record, dict) else None
+    return isinstance(argv, list) and finished(run_dir, argv, strict)
+
+
+def essaim_version(essaim: str) -> str | None:
+    """`essaim --version`'s number; None when it cannot be asked (then not compared)."""
+    try:
+        r = subprocess.run([essaim, "--version"], capture_output=True, text=True, timeout=10)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    words = r.stdout.split()
+    return words[-1] if r.returncode == 0 and words else None
+
+
 def record_argv(argv: list[str]) -> list[str]:
     """The part of a run's command line that defines its results (no binary, no --out)."""
     return argv[1:-2]
@@ -570,6 +703,34 @@ def write_table(df, out: Path) -> None:
         os.replace(tmp, out / name)
 
 
+def write_timeseries(runs: list[Run], rows: list[dict], out: Path) -> bool:
+    """<out>/timeseries.parquet: every ok run's timeseries.csv, one table, each row tagged
+    with its run, seed and parameters (long format: filter or group by `run`)."""
+    import pandas as pd
+
+    ok = {row["run"] for row in rows if row["status"] == "ok"}
+    frames = []
+    for r in runs:
+        csv = out / "runs" / r.key / "timeseries.csv"
+        if r.key not in ok or not csv.is_file():
+            continue
+        try:
+            ts = pd.read_csv(csv)
+        except (ValueError, OSError):
+            continue  # an empty series (no column)
+        tags = {"run": r.key, "seed": r.seed, **r.params}
+        ts = ts.drop(columns=[c for c in tags if c in ts.columns])
+        for i, (k, v) in enumerate(tags.items()):
+            ts.insert(i, k, v)
+        frames.append(ts)
+    if not frames:
+        return False
+    tmp = out / ".timeseries.parquet.tmp"
+    pd.concat(frames, ignore_index=True).to_parquet(tmp, index=False)
+    os.replace(tmp, out / "timeseries.parquet")
+    return True
+
+
 # ----------------------------------------------------------------------------------------
 # Executors
 
@@ -749,9 +910,10 @@ def main(argv=None) -> int:
         print(f"sweep: {e}", file=sys.stderr)
         return 2
 
-    todo = [r for r in runs
-            if not finished(sweep.out / "runs" / r.key,
-                            record_argv(sweep.argv(r, essaim, "")), sweep.strict)]
+    local = not args.scheduler or shutil.which(essaim)
+    todo, causes = plan_runs(sweep, runs, essaim, (lambda: essaim_version(essaim)) if local else None)
+    for cause, n in causes.most_common():
+        print(f"sweep: {cause}: redoing {n} run{'s' if n != 1 else ''}", file=sys.stderr)
     skipped = len(runs) - len(todo)
     n = min(args.jobs, max(1, len(todo)))
     where = args.scheduler or f"{n} local process{'es' if n > 1 else ''}"
@@ -816,6 +978,7 @@ def main(argv=None) -> int:
             rows.append(ok_row(r, run_dir))
     if rows:
         write_table(make_table(rows), sweep.out)
+        write_timeseries(runs, rows, sweep.out)
     ok = sum(1 for row in rows if row["status"] == "ok")
     print(f"sweep: {ok} runs ok, {len(failures)} failed, {len(runs) - len(rows)} not run; "
           f"table: {sweep.out / 'results.parquet'} ({len(rows)} rows)", file=sys.stderr)

@@ -1,6 +1,11 @@
 #include "lua/lua_copy.h"
 
+#include <algorithm>
+
 #include <lua.hpp>
+
+#include "core/json.h"
+#include "core/strings.h"
 
 namespace essaim {
 
@@ -126,6 +131,102 @@ void LuaTape::ReplayAt(lua_State* L, size_t* pos, int refs) const {
     }
     case Type::TableEnd: lua_pushnil(L); break;  // not reached: consumed by TableBegin
   }
+}
+
+bool LuaTape::ToJson(Json* out, std::string* error) const {
+  if (items_.empty()) return *out = Json(), true;
+  std::vector<Json> tables(static_cast<size_t>(tables_));
+  size_t pos = 0;
+  return JsonAt(&pos, &tables, out, error);
+}
+
+bool LuaTape::JsonAt(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const {
+  const Item& item = items_[(*pos)++];
+  switch (item.type) {
+    case Type::Nil: *out = Json(); return true;
+    case Type::False: *out = false; return true;
+    case Type::True: *out = true; return true;
+    case Type::Integer: *out = item.integer; return true;
+    case Type::Number: *out = item.number; return true;
+    case Type::String: *out = strings_[static_cast<size_t>(item.integer)]; return true;
+    case Type::TableRef:
+      *out = (*tables)[static_cast<size_t>(item.integer)];
+      if (out->is_null()) return *error = "a table that contains itself has no JSON form", false;
+      return true;
+    case Type::TableBegin: return JsonTable(pos, tables, out, error);
+    case Type::TableEnd: break;  // not reached: consumed by JsonTable
+  }
+  return *error = "malformed copy", false;
+}
+
+bool LuaTape::JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const {
+  const size_t id = static_cast<size_t>(items_[*pos - 1].integer);
+  Json object = Json::object();
+  std::vector<std::pair<int64_t, Json>> numbered;  // integer keys, to see whether it is an array
+  while (items_[*pos].type != Type::TableEnd) {
+    std::string key;
+    const Item& k = items_[*pos];
+    if (!JsonKey((*pos)++, &key, error)) return false;
+    Json value;
+    if (!JsonAt(pos, tables, &value, error)) return false;
+    if (k.type == Type::Integer) numbered.emplace_back(k.integer, value);
+    object[key] = std::move(value);
+  }
+  ++*pos;
+  std::sort(numbered.begin(), numbered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  bool array = !numbered.empty() && numbered.size() == object.size();
+  for (size_t i = 0; array && i < numbered.size(); ++i) array = numbered[i].first == static_cast<int64_t>(i + 1);
+  if (array) {
+    Json list = Json::array();
+    for (auto& kv : numbered) list.push_back(std::move(kv.second));
+    object = std::move(list);
+  }
+  (*tables)[id] = object;
+  *out = std::move(object);
+  return true;
+}
+
+bool LuaTape::JsonKey(size_t pos, std::string* key, std::string* error) const {
+  const Item& k = items_[pos];
+  switch (k.type) {
+    case Type::String: *key = strings_[static_cast<size_t>(k.integer)]; return true;
+    case Type::Integer: *key = std::to_string(k.integer); return true;
+    case Type::Number: *key = FormatDouble(k.number); return true;
+    case Type::False: *key = "false"; return true;
+    case Type::True: *key = "true"; return true;
+    default: return *error = "a table used as a key has no JSON form", false;
+  }
+}
+
+namespace {
+struct GlobalJob {
+  LuaTape* tape;
+  const char* name;
+  bool ok;
+};
+
+int RecordGlobal(lua_State* C) {
+  auto* job = static_cast<GlobalJob*>(lua_touserdata(C, 1));
+  lua_rawgeti(C, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushstring(C, job->name);
+  lua_rawget(C, -2);
+  job->ok = job->tape->Record(C, -1, false, nullptr);
+  return 0;
+}
+}  // namespace
+
+bool LuaGlobalToJson(lua_State* C, const std::string& name, Json* out, std::string* error) {
+  if (!C) return *error = "its controller is not running (no script, or stopped at its memory limit)", false;
+  LuaTape tape;
+  GlobalJob job{&tape, name.c_str(), false};
+  if (!lua_checkstack(C, 3)) return *error = "its Lua state is out of memory", false;
+  const int top = lua_gettop(C);
+  lua_pushcfunction(C, RecordGlobal);
+  lua_pushlightuserdata(C, &job);
+  const bool called = lua_pcall(C, 1, 0, 0) == LUA_OK;
+  lua_settop(C, top);
+  if (!called || !job.ok) return *error = "its Lua state is out of memory or the value is nested too deep", false;
+  return tape.ToJson(out, error);
 }
 
 }  // namespace essaim

@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/json_fwd.h"
+
 struct lua_State;
 
 namespace essaim {
@@ -25,6 +27,11 @@ class LuaTape {
   /// Pushes a copy of the recorded value onto `L` (raises on memory errors only).
   void Replay(lua_State* L) const;
 
+  /// The recorded value as JSON: a table whose keys are 1..n is an array, any other an
+  /// object (number and boolean keys as text). False with `error` for a cyclic table or a
+  /// table used as a key; a table shared twice is written twice.
+  bool ToJson(Json* out, std::string* error) const;
+
   static constexpr int kMaxDepth = 100;
 
  private:
@@ -36,6 +43,9 @@ class LuaTape {
   };
   bool RecordAt(lua_State* L, int idx, int depth);
   void ReplayAt(lua_State* L, size_t* pos, int refs) const;
+  bool JsonAt(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;
+  bool JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;
+  bool JsonKey(size_t pos, std::string* key, std::string* error) const;
   std::vector<Item> items_;
   std::vector<std::string> strings_;
   std::unordered_map<const void*, int64_t> seen_;  // table address → id
@@ -43,5 +53,10 @@ class LuaTape {
   bool plain_only_ = false;
   const char* bad_type_ = nullptr;
 };
+
+/// A controller's global `name` as JSON (what r:lua_global reads, for the Python module),
+/// copied under a protected call. False with `error` when the state is closed, out of
+/// memory, or the value has no JSON form.
+bool LuaGlobalToJson(lua_State* C, const std::string& name, Json* out, std::string* error);
 
 }  // namespace essaim

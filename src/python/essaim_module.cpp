@@ -10,14 +10,20 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "output/atomic_file.h"
 #include "core/paths.h"
+#include "lua/lua_copy.h"
 #include "output/out_folder.h"
 #include "model/xml_loader.h"
+#include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
 #include "sim/step.h"
+#ifdef ESSAIM_HAVE_CAIRO
+#include "app/render_cairo.h"
+#endif
 
 namespace py = pybind11;
 
@@ -26,11 +32,34 @@ namespace {
 
 // Ticks stepped between two checks for Ctrl-C (needs the GIL back briefly).
 constexpr uint64_t kSignalCheckTicks = 256;
+// Log lines held before they are handed to Python (stepping pauses for it).
+constexpr size_t kMaxHeldLogLines = 10000;
 
 py::object FromJson(const Json& j) {
   // Through Python's json module: the Json class stays an implementation detail.
   return py::module_::import("json").attr("loads")(DumpJson(j));
 }
+
+/// Yaw in (-pi, pi], as numpy users expect angles (Box2D's angle is unbounded).
+double WrapYaw(double yaw) {
+  double a = std::remainder(yaw, 2 * M_PI);
+  return a <= -M_PI ? a + 2 * M_PI : a;
+}
+
+/// A one-dimensional array of n items. Shape and strides are given: pybind11 2.10's
+/// array_t(count) under NumPy 2 gives an array whose items all share one address.
+template <class T>
+py::array_t<T> Vector(size_t n) {
+  return py::array_t<T>(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)},
+                        std::vector<py::ssize_t>{static_cast<py::ssize_t>(sizeof(T))});
+}
+
+/// A log line waiting for the GIL: the sink runs while stepping, without it.
+struct LogLine {
+  char stream;
+  std::string text;
+  LogOrigin from;
+};
 
 std::string ValueText(const py::handle& v) {
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
@@ -41,17 +70,67 @@ std::string ValueText(const py::handle& v) {
 class Simulation {
  public:
   Simulation(const std::string& path, std::optional<uint64_t> seed, std::optional<int> threads,
-             std::optional<py::dict> overrides, std::optional<std::string> out, bool strict) {
-    LoadOptions load;
-    load.strict = strict;
-    load.seed = seed;
-    load.threads = threads;
+             std::optional<py::dict> overrides, std::optional<std::string> out, bool strict)
+      : path_(path), strict_(strict), out_(out.value_or("")) {
+    load_.strict = strict;
+    load_.seed = seed;
+    load_.threads = threads;
     if (overrides)
-      for (auto item : *overrides) load.overrides.push_back(py::str(item.first).cast<std::string>() + "=" + ValueText(item.second));
+      for (auto item : *overrides) load_.overrides.push_back(py::str(item.first).cast<std::string>() + "=" + ValueText(item.second));
+    Load();
+  }
+
+  /// Starts the run again from tick 0, with `seed` if given (else the same seed): the
+  /// experiment file and its scripts are read again, so edits since are taken.
+  void Reset(std::optional<uint64_t> seed) {
+    if (seed) load_.seed = seed;
+    Close();
+    status_ = StepStatus::Running;
+    finished_ = false;
+    metrics_ = summary_ = py::none();
+    errors_ = py::list();
+    reported_errors_ = 0;
+    Load();
+  }
+
+  struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+  };
+
+ private:
+  void Load() {
     ErrorList errors, warnings;
-    model_ = LoadExperimentFile(path, load, &errors, &warnings);
+    model_ = LoadExperimentFile(path_, load_, &errors, &warnings);
     if (!model_) throw Error(errors.Format());
-    // The CLI's warnings (unknown attributes...) as Python warnings, one per line.
+    Warn(warnings);
+    std::string error;
+    if (!out_.empty() && !PrepareOutFolder(out_, &error)) throw Error(error);
+    t0_ = std::chrono::steady_clock::now();
+    {
+      py::gil_scoped_release nogil;
+      world_ = World::Create(*model_, Options(), &error);
+    }
+    if (!world_) throw Error(error);
+    Report();
+    if (!world_->failure.empty()) throw Error(world_->failure);  // an init() error
+    SetAside();
+    if (LengthReached(*world_)) status_ = StepStatus::Finished;
+  }
+
+  SimOptions Options() {
+    SimOptions opt;
+    opt.output_dir = out_;
+    opt.strict = strict_;
+    opt.lua.memory_limit = 64u << 20;  // the CLI's limits
+    opt.lua.instruction_limit = 100000000;
+    opt.log_sink = [this](char stream, const std::string& line, const LogOrigin& from) {
+      logs_.push_back({stream, line, from});
+    };
+    return opt;
+  }
+
+  // The CLI's warnings (unknown attributes...) as Python warnings, one per line.
+  static void Warn(const ErrorList& warnings) {
     for (const InputError& w : warnings.Items()) {
       ErrorList one;
       one.Add(w.file, w.line, w.element, w.message);
@@ -59,35 +138,49 @@ class Simulation {
       while (!text.empty() && text.back() == '\n') text.pop_back();
       py::module_::import("warnings").attr("warn")(text, py::module_::import("builtins").attr("UserWarning"), 2);
     }
-    out_ = out.value_or("");
-    std::string error;
-    if (!out_.empty() && !PrepareOutFolder(out_, &error)) throw Error(error);
-    SimOptions opt;
-    opt.output_dir = out_;
-    opt.lua.memory_limit = 64u << 20;  // the CLI's limits
-    opt.lua.instruction_limit = 100000000;
-    t0_ = std::chrono::steady_clock::now();
-    {
-      py::gil_scoped_release nogil;
-      world_ = World::Create(*model_, opt, &error);
-    }
-    if (!world_) throw Error(error);
-    if (!world_->failure.empty()) throw Error(world_->failure);  // an init() error
-    // As `essaim run`: the folder holds this run's outputs only; an earlier run's are moved.
-    std::vector<std::string> moved;
-    if (!out_.empty() && !SetAsideEarlierOutputs(out_, &moved, &error)) throw Error(error);
-    if (!moved.empty()) {
-      std::string names;
-      for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
-      py::module_::import("warnings").attr("warn")(out_ + " held an earlier run's outputs; moved them into " +
-                                                   JoinPath(out_, kPreviousRunFolder) + ": " + names);
-    }
-    if (LengthReached(*world_)) status_ = StepStatus::Finished;
   }
 
-  struct Error : std::runtime_error {
-    using std::runtime_error::runtime_error;
-  };
+  // As `essaim run`: the folder holds this run's outputs only; an earlier run's are moved.
+  void SetAside() {
+    std::vector<std::string> moved;
+    std::string error;
+    if (!out_.empty() && !SetAsideEarlierOutputs(out_, &moved, &error)) throw Error(error);
+    if (moved.empty()) return;
+    std::string names;
+    for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
+    py::module_::import("warnings").attr("warn")(out_ + " held an earlier run's outputs; moved them into " +
+                                                 JoinPath(out_, kPreviousRunFolder) + ": " + names);
+  }
+
+  /// Hands the log lines and controller errors gathered while stepping to Python: lines to
+  /// the `essaim` logger (log/print INFO, logerr WARNING, essaim's error messages ERROR),
+  /// errors to `errors`. Called with the GIL held.
+  void Report() {
+    if (!logs_.empty()) {
+      py::object logger = py::module_::import("logging").attr("getLogger")("essaim");
+      for (const LogLine& l : logs_) Log(logger, l);
+      logs_.clear();
+    }
+    const auto& all = world_->controller_errors;
+    for (; reported_errors_ < all.size(); ++reported_errors_) {
+      const ControllerError& e = all[reported_errors_];
+      py::dict d;
+      d["robot"] = e.robot, d["tick"] = e.tick, d["message"] = e.message;
+      errors_.append(d);
+    }
+  }
+
+  void Log(const py::object& logger, const LogLine& l) const {
+    const int level = l.from.robot == kLogHost ? 40 : l.stream == 'E' ? 30 : 20;
+    std::string who = l.from.robot >= 0 ? model_->robots[static_cast<size_t>(l.from.robot)].id
+                      : l.from.robot == kLogLoopFunctions ? std::string("loop functions") : std::string();
+    py::dict extra;
+    extra["robot"] = l.from.robot >= 0 ? py::object(py::str(who)) : py::object(py::none());
+    extra["tick"] = l.from.tick;
+    logger.attr("log")(level, "%s", who.empty() ? l.text : who + ": " + l.text, py::arg("extra") = extra);
+  }
+
+ public:
 
   /// Steps up to n ticks (fewer when the experiment ends); returns the ticks stepped.
   uint64_t StepN(uint64_t n) {
@@ -97,8 +190,10 @@ class Simulation {
       uint64_t chunk = std::min<uint64_t>(n - done, kSignalCheckTicks);
       {
         py::gil_scoped_release nogil;
-        for (uint64_t i = 0; i < chunk && status_ == StepStatus::Running; ++i, ++done) status_ = Step(w);
+        for (uint64_t i = 0; i < chunk && status_ == StepStatus::Running && logs_.size() < kMaxHeldLogLines; ++i, ++done)
+          status_ = Step(w);
       }
+      Report();
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
     if (status_ == StepStatus::Failed) throw Error(FailureText());
@@ -122,14 +217,14 @@ class Simulation {
     auto m = a.mutable_unchecked<2>();
     for (size_t i = 0; i < w.robots.size(); ++i) {
       Pose2 p = w.physics.RobotPose(static_cast<int>(i));
-      m(i, 0) = p.x, m(i, 1) = p.y, m(i, 2) = p.yaw;
+      m(i, 0) = p.x, m(i, 1) = p.y, m(i, 2) = WrapYaw(p.yaw);
     }
     return a;
   }
 
   py::array_t<bool> Alive() const {
     const World& w = Live();
-    py::array_t<bool> a(static_cast<py::ssize_t>(w.robots.size()));
+    py::array_t<bool> a = Vector<bool>(w.robots.size());
     auto m = a.mutable_unchecked<1>();
     for (size_t i = 0; i < w.robots.size(); ++i) m(i) = w.robots[i].alive;
     return a;
@@ -138,7 +233,7 @@ class Simulation {
   /// Charge left as a fraction of the full charge (the battery sensor's available_charge).
   py::array_t<double> Battery() const {
     const World& w = Live();
-    py::array_t<double> a(static_cast<py::ssize_t>(w.robots.size()));
+    py::array_t<double> a = Vector<double>(w.robots.size());
     auto m = a.mutable_unchecked<1>();
     for (size_t i = 0; i < w.robots.size(); ++i) {
       double full = model_->robots[i].battery.full_charge;
@@ -177,6 +272,7 @@ class Simulation {
     std::string error;
     info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     finished_ = true;
+    Report();
     summary_ = FromJson(BuildSummary(w, info));
     metrics_ = has_metrics ? FromJson(metrics) : py::dict();
     if (!out_.empty() && !WriteRunOutputs(out_, w, info, has_metrics ? &metrics : nullptr, &error)) throw Error(error);
@@ -184,9 +280,43 @@ class Simulation {
     return metrics_;
   }
 
+  /// summary.json's content; before finish(), the run so far (status "running").
   py::object Summary() const {
-    if (!finished_) throw Error("summary: call finish() first");
-    return summary_;
+    if (finished_) return summary_;
+    RunInfo info;
+    info.version = ESSAIM_VERSION;
+    info.status = status_ == StepStatus::Running ? "running" : status_ == StepStatus::Failed ? "failed" : "ok";
+    info.finished_by = status_ == StepStatus::Running ? "" : "not finished: call finish()";
+    info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    return FromJson(BuildSummary(Live(), info));
+  }
+
+  py::list Errors() const { return errors_; }
+
+  /// A robot's Lua global (plain data: numbers, strings, booleans, tables as lists/dicts).
+  py::object LuaGlobal(const py::object& robot, const std::string& name) const {
+    const World& w = Live();
+    const size_t i = RobotIndex(robot);
+    Json value;
+    std::string error;
+    if (!LuaGlobalToJson(w.controllers[i]->State(), name, &value, &error))
+      throw Error("lua_global: robot '" + model_->robots[i].id + "', '" + name + "': " + error);
+    return FromJson(value);
+  }
+
+  /// The arena now as a PNG, drawn as `essaim snapshot` draws a recorded tick: bytes, or
+  /// written to `path` (then None).
+  py::object Render(std::optional<std::string> path, int size) const {
+#ifndef ESSAIM_HAVE_CAIRO
+    throw Error("render: this essaim was built without Cairo (install libcairo2-dev and rebuild)");
+#else
+    if (size < 16 || size > 8192) throw Error("render: size must be 16..8192 px");
+    std::string png = RenderNow(size);
+    if (!path) return py::bytes(png);
+    std::string error;
+    if (!WriteFileAtomic(*path, png, &error)) throw Error("render: " + error);
+    return py::none();
+#endif
   }
 
   void Close() {
@@ -195,6 +325,42 @@ class Simulation {
   }
 
  private:
+  size_t RobotIndex(const py::object& robot) const {
+    const auto& robots = model_->robots;
+    if (py::isinstance<py::int_>(robot)) {
+      const long long i = robot.cast<long long>();
+      if (i < 0 || static_cast<size_t>(i) >= robots.size())
+        throw py::index_error("robot index " + std::to_string(i) + " out of range (" + std::to_string(robots.size()) + " robots)");
+      return static_cast<size_t>(i);
+    }
+    const std::string id = py::str(robot).cast<std::string>();
+    for (size_t i = 0; i < robots.size(); ++i)
+      if (robots[i].id == id) return i;
+    throw py::key_error("no robot '" + id + "' (robot_ids lists them)");
+  }
+
+#ifdef ESSAIM_HAVE_CAIRO
+  /// Through a one-frame recording: the snapshot renderer draws recordings only.
+  std::string RenderNow(int size) const {
+    py::object tempfile = py::module_::import("tempfile"), shutil = py::module_::import("shutil");
+    const std::string dir = tempfile.attr("mkdtemp")(py::arg("prefix") = "essaim-render-").cast<std::string>();
+    const std::string file = JoinPath(dir, kRecordingFile);
+    std::string png, error;
+    bool ok;
+    {
+      RecordingWriter writer;
+      Recording rec;
+      SnapshotOptions opt;
+      opt.size = size;
+      ok = writer.Open(file, Live(), 1, &error) && writer.Finish(Live(), &error) && Recording::Read(file, &rec, &error) &&
+           RenderSnapshotPng(rec, rec.FrameCount() - 1, opt, &png, &error);
+    }
+    shutil.attr("rmtree")(dir, py::arg("ignore_errors") = true);
+    if (!ok) throw Error("render: " + error);
+    return png;
+  }
+#endif
+
   World& Live() const {
     if (!world_) throw Error("this Simulation is closed");
     return *world_;
@@ -208,13 +374,72 @@ class Simulation {
     return text.empty() ? "the run failed" : text;
   }
 
+  std::string path_;
+  LoadOptions load_;
+  bool strict_ = false;
+  std::string out_;
   std::unique_ptr<Model> model_;
   std::unique_ptr<World> world_;
-  std::string out_;
+  std::vector<LogLine> logs_;
+  py::list errors_;
+  size_t reported_errors_ = 0;
   StepStatus status_ = StepStatus::Running;
   bool finished_ = false;
   py::object metrics_ = py::none(), summary_ = py::none();
   std::chrono::steady_clock::time_point t0_;
+};
+
+/// recording.bin read back (the replay's own parser): per-frame robot poses, alive flags and
+/// battery as numpy arrays, or one long pandas table.
+class RecordingData {
+ public:
+  explicit RecordingData(const std::string& path) {
+    std::string error;
+    Recording rec;
+    const bool folder = py::module_::import("os.path").attr("isdir")(path).cast<bool>();
+    if (!Recording::Read(folder ? JoinPath(path, kRecordingFile) : path, &rec, &error))
+      throw Simulation::Error(error);
+    const auto frames = static_cast<py::ssize_t>(rec.FrameCount()), robots = static_cast<py::ssize_t>(rec.RobotCount());
+    std::vector<uint64_t> ticks(static_cast<size_t>(frames));
+    py::array_t<double> poses({frames, robots, py::ssize_t{3}}), battery({frames, robots});
+    py::array_t<bool> alive({frames, robots});
+    auto p = poses.mutable_unchecked<3>();
+    auto b = battery.mutable_unchecked<2>();
+    auto a = alive.mutable_unchecked<2>();
+    for (py::ssize_t f = 0; f < frames; ++f) {
+      ticks[static_cast<size_t>(f)] = rec.Tick(static_cast<size_t>(f));
+      for (py::ssize_t r = 0; r < robots; ++r) {
+        const RecordedRobot robot = rec.Robot(static_cast<size_t>(f), static_cast<size_t>(r));
+        p(f, r, 0) = robot.x, p(f, r, 1) = robot.y, p(f, r, 2) = WrapYaw(robot.yaw);
+        b(f, r) = robot.battery, a(f, r) = robot.alive;
+      }
+    }
+    ticks_ = py::module_::import("numpy").attr("array")(py::cast(ticks), "uint64");
+    poses_ = poses, battery_ = battery, alive_ = alive;
+    for (const std::string& id : rec.scene().robot_ids) robot_ids_.append(id);
+    ticks_per_second_ = rec.scene().ticks_per_second;
+    seed_ = rec.scene().seed;
+  }
+
+  /// One row per (recorded tick, robot): tick, robot, x, y, yaw, alive, battery.
+  py::object ToPandas() const {
+    py::module_ np = py::module_::import("numpy");
+    const auto robots = static_cast<py::ssize_t>(py::len(robot_ids_));
+    py::object poses = poses_.attr("reshape")(-1, 3);
+    py::dict columns;
+    columns["tick"] = np.attr("repeat")(ticks_, robots);
+    columns["robot"] = np.attr("tile")(np.attr("array")(robot_ids_, py::arg("dtype") = "object"), py::len(ticks_));
+    const char* names[] = {"x", "y", "yaw"};
+    for (int k = 0; k < 3; ++k) columns[names[k]] = poses[py::make_tuple(py::slice(py::none(), py::none(), py::none()), k)];
+    columns["alive"] = alive_.attr("reshape")(-1);
+    columns["battery"] = battery_.attr("reshape")(-1);
+    return py::module_::import("pandas").attr("DataFrame")(columns);
+  }
+
+  py::object ticks_, poses_, battery_, alive_;
+  py::list robot_ids_;
+  uint32_t ticks_per_second_ = 0;
+  uint64_t seed_ = 0;
 };
 
 }  // namespace
@@ -242,8 +467,30 @@ PYBIND11_MODULE(essaim, m) {
       .def("battery", &Simulation::Battery, "float64 array: charge left / full charge")
       .def("led_colors", &Simulation::LedColors, "robots x 13 x 3 uint8 array (RGB)")
       .def("finish", &Simulation::Finish, "Ends the run; returns post_experiment's table (metrics.json) as a dict.")
-      .def_property_readonly("summary", &Simulation::Summary, "summary.json's content, after finish()")
+      .def_property_readonly("summary", &Simulation::Summary,
+                             "summary.json's content; before finish(), the run so far (status 'running')")
+      .def_property_readonly("errors", &Simulation::Errors,
+                             "controller errors so far: [{'robot', 'tick', 'message'}] (also logged to the 'essaim' logger)")
+      .def("reset", &Simulation::Reset, py::arg("seed") = py::none(),
+           "Starts again from tick 0 (files read again), with this seed or the same one.")
+      .def("lua_global", &Simulation::LuaGlobal, py::arg("robot"), py::arg("name"),
+           "A robot's (id or index) Lua global as Python data: numbers, strings, booleans, lists, dicts; None if unset.")
+      .def("render", &Simulation::Render, py::arg("path") = py::none(), py::arg("size") = 800,
+           "The arena now as PNG (as `essaim snapshot`): bytes, or written to path.")
       .def("close", &Simulation::Close)
       .def("__enter__", [](Simulation& s) -> Simulation& { return s; }, py::return_value_policy::reference)
-      .def("__exit__", [](Simulation& s, py::object, py::object, py::object) { s.Close(); });
+      .def("__exit__", [](Simulation& s, py::object, py::object, py::object) { s.Close(); })
+      .def("_repr_png_", [](const Simulation& s) { return s.Render(std::nullopt, 800); });
+  using essaim::RecordingData;
+  py::class_<RecordingData>(m, "Recording")
+      .def_readonly("ticks", &RecordingData::ticks_, "uint64 (frames,): the tick of each frame")
+      .def_readonly("robot_ids", &RecordingData::robot_ids_)
+      .def_readonly("poses", &RecordingData::poses_, "float64 (frames, robots, 3): x, y (m), yaw in (-pi, pi]")
+      .def_readonly("alive", &RecordingData::alive_, "bool (frames, robots)")
+      .def_readonly("battery", &RecordingData::battery_, "float64 (frames, robots): charge / full (1/255 steps)")
+      .def_readonly("ticks_per_second", &RecordingData::ticks_per_second_)
+      .def_readonly("seed", &RecordingData::seed_)
+      .def("to_pandas", &RecordingData::ToPandas, "One row per (frame, robot): tick, robot, x, y, yaw, alive, battery.");
+  m.def("read_recording", [](const std::string& path) { return RecordingData(path); }, py::arg("path"),
+        "Reads a run's recording.bin (the file, or the run folder holding it).");
 }

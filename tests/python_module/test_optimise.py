@@ -88,3 +88,47 @@ def test_plot_study_draws_history_importances_and_pareto(tmp_path):
     p = subprocess.run([sys.executable, str(ROOT / "scripts" / "plot_study.py"), str(tmp_path / "none")],
                        capture_output=True, text=True)
     assert p.returncode == 2 and "no study database" in p.stderr
+
+
+def test_a_resumed_study_redoes_the_trials_whose_files_or_settings_changed(tmp_path):
+    pytest.importorskip("essaim")
+    import shutil
+    for d in ("arenas", "controllers"):
+        shutil.copytree(ROOT / d, tmp_path / d)
+    argos = tmp_path / "arenas" / "foraging.argos"
+    study = tmp_path / "s.toml"
+    study.write_text(write_study(tmp_path / "x.toml").read_text()
+                     .replace(f'"{FORAGING}"', f'"{argos}"').replace(f'"{ROOT}"', f'"{tmp_path}"'))
+    out = tmp_path / "out"
+
+    def run(*extra):
+        p = subprocess.run([sys.executable, str(ROOT / "scripts" / "optimise.py"), str(study),
+                            "--trials", "2", "--ticks", "30", "--out", str(out), "--no-eval",
+                            *extra], capture_output=True, text=True, cwd=tmp_path)
+        assert p.returncode == 0, p.stderr
+        return p.stdout
+
+    import optuna
+
+    def trials():
+        st = optuna.load_study(study_name="essaim", storage=f"sqlite:///{out / 'study.db'}")
+        return [t for t in st.trials if t.state == optuna.trial.TrialState.COMPLETE]
+
+    run()
+    first = trials()
+    assert len(first) == 2 and all("identity" in t.user_attrs for t in first)
+    listed = {i["path"] for i in first[0].user_attrs["identity"]["inputs"]}
+    assert str(argos) in listed
+    assert "redoing" not in run()  # nothing changed: both trials stand
+
+    argos.write_text(argos.read_text() + "<!-- edited -->\n")
+    text = run()
+    assert "arenas/foraging.argos changed: redoing 2 trials" in text, text
+    assert (out / "study-stale-1.db").is_file()
+    again = trials()
+    assert [t.params for t in again] == [t.params for t in first]  # the same points, rerun
+    assert "running 2 more" in text
+
+    text = run("--ticks", "40")
+    assert "study settings changed (ticks): redoing 2 trials" in text, text
+    assert (out / "study-stale-2.db").is_file() and len(trials()) == 2

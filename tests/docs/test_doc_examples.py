@@ -1,0 +1,99 @@
+"""Every example in README.md and docs/*.md runs as written (doc_examples.py says what an
+example is and how a block is marked illustrative or shortened). Each file's examples run
+in order, in a fresh copy of the repository's arenas, controllers, scripts and docs, with
+`essaim` on PATH and `build/` and `.venv/` pointing at the ones under test, so a command
+may use what an earlier one made. docs/tutorial.md is one of them."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from doc_examples import examples
+
+ROOT = Path(__file__).resolve().parents[2]
+DOCS = ["README.md"] + sorted(str(p.relative_to(ROOT)) for p in (ROOT / "docs").glob("*.md"))
+COPIED = ("arenas", "controllers", "scripts", "docs", "bench")
+TIMEOUT = 300  # seconds per block
+
+
+@pytest.fixture(scope="module")
+def essaim():
+    path = os.environ.get("ESSAIM")
+    if not path or not os.access(path, os.X_OK):
+        pytest.skip("ESSAIM is not set to the essaim executable (ctest sets it)")
+    return Path(path).resolve()
+
+
+def sandbox(tmp: Path, essaim: Path) -> dict:
+    """The copy the examples run in; returns their environment."""
+    import shutil
+    for d in COPIED:
+        shutil.copytree(ROOT / d, tmp / d, symlinks=True)
+    (tmp / "build").symlink_to(essaim.parent)
+    (tmp / ".venv").symlink_to(Path(sys.prefix))
+    (tmp / "bin").mkdir()
+    (tmp / "bin" / "essaim").symlink_to(essaim)
+    env = dict(os.environ, PATH=f"{tmp / 'bin'}:{os.environ.get('PATH', '')}", MPLBACKEND="Agg")
+    env.pop("ESSAIM", None)  # as a user's shell has it
+    return env
+
+
+def run_block(ex, cwd: Path, env: dict, n: int) -> None:
+    text = ex.runnable()
+    for cmd in ex.before:
+        run_checked(["bash", "-e", "-o", "pipefail", "-c", cmd], ex, cmd, cwd, env)
+    if ex.lang == "python":
+        script = cwd / f".example-{n}.py"
+        script.write_text(text)
+        argv = [sys.executable, str(script)]
+    else:
+        argv = ["bash", "-e", "-o", "pipefail", "-c", text]
+    run_checked(argv, ex, text, cwd, env)
+
+
+def run_checked(argv, ex, text, cwd, env):
+    try:
+        r = subprocess.run(argv, cwd=cwd, env=env, capture_output=True, text=True,
+                           timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"{ex.where}: still running after {TIMEOUT} s:\n{text}")
+    if r.returncode != 0:
+        pytest.fail(f"{ex.where}: exit {r.returncode}:\n{text}\n--- stdout\n{r.stdout[-3000:]}"
+                    f"\n--- stderr\n{r.stderr[-3000:]}")
+
+
+@pytest.mark.parametrize("doc", DOCS)
+def test_examples_run_as_written(doc, tmp_path, essaim):
+    found = examples(ROOT / doc, ROOT)
+    if not found:
+        pytest.skip(f"{doc} has no example")
+    env = sandbox(tmp_path, essaim)
+    for n, ex in enumerate(found):
+        if not ex.skip:
+            run_block(ex, tmp_path, env, n)
+
+
+def test_few_examples_are_left_out_and_each_says_why():
+    skipped = [ex for doc in DOCS for ex in examples(ROOT / doc, ROOT) if ex.skip]
+    assert len(skipped) <= 10, [ex.where for ex in skipped]
+    for ex in skipped:
+        assert len(ex.skip) > 15, f"{ex.where}: say why it is not run"
+
+
+def test_the_extractor_tells_examples_from_output_and_synopses(tmp_path):
+    (tmp_path / "d.md").write_text(
+        "```\nessaim run a.argos\n```\n"
+        "```\nsweep: 4 runs ok\n```\n"
+        "```\nessaim run FILE.argos [--ticks N]\n```\n"
+        "<!-- doc-test: skip: needs a Dask cluster running -->\n```\nessaim devices\n```\n"
+        "<!-- doc-test: replace --ticks 5000 => --ticks 5 -->\n"
+        "<!-- doc-test: before: echo hi -->\n```sh\nessaim run b.argos --ticks 5000\n```\n"
+        "```python\nprint(1)\n```\n```toml\nx = 1\n```\n")
+    found = examples(tmp_path / "d.md", tmp_path)
+    assert [(e.line, e.lang) for e in found] == [(1, "shell"), (11, "shell"), (16, "shell"),
+                                                 (19, "python")]
+    assert found[1].skip == "needs a Dask cluster running"
+    assert found[2].runnable() == "essaim run b.argos --ticks 5\n"
+    assert found[2].before == ["echo hi"]
