@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "app/set_file.h"
 #include "app/web_pages.h"
+#include "core/paths.h"
 #include "lua/lua_guard.h"
 #include "serve/live_server.h"
 
@@ -35,6 +36,12 @@ bool IsLoopback(const std::string& host) {
 
 int Serve(ServeArgs& a) {
   std::string error;
+  // A file with errors is served (the page shows them until it is fixed); no file at all is
+  // a mistyped command.
+  if (!FileExists(a.serve.file)) {
+    std::fprintf(stderr, "essaim serve: %s: no such file\n", a.serve.file.c_str());
+    return kExitBadInput;
+  }
   if (a.seed) a.serve.load.seed = static_cast<uint64_t>(*a.seed);
   if (!a.set_file.empty()) {
     std::vector<std::string> from_file;

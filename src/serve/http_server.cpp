@@ -43,6 +43,9 @@ HttpServer::HttpServer() : impl_(std::make_unique<Impl>()) {
     return httplib::Server::HandlerResponse::Handled;
   });
   impl_->server.set_payload_max_length(1 << 20);  // control commands are small
+  // Each open page holds a worker for its event stream, and browsers keep connections
+  // open: more workers than the default 8, so a few pages never starve the API.
+  impl_->server.new_task_queue = [] { return new httplib::ThreadPool(32); };
 }
 
 HttpServer::~HttpServer() { Stop(); }

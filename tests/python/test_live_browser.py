@@ -284,3 +284,13 @@ def test_replay_page_charts_the_runs_time_series(essaim, browser, tmp_path):
     assert page.text_content("#charts .legend b") == str(round(math.sin(5), 3))
     assert errors == []
     page.close()
+
+
+def test_serve_refuses_a_missing_file_and_a_bad_port(essaim, tmp_path):
+    missing = subprocess.run([essaim, "serve", str(tmp_path / "nope.argos")], capture_output=True, text=True,
+                             timeout=30)
+    assert missing.returncode == 2 and "no such file" in missing.stderr
+    (tmp_path / "x.argos").write_text("<argos-configuration>")
+    bad = subprocess.run([essaim, "serve", str(tmp_path / "x.argos"), "--port", "70000"], capture_output=True,
+                         text=True, timeout=30)
+    assert bad.returncode == 2 and "--port" in bad.stderr
