@@ -110,7 +110,10 @@ class Simulation {
       py::gil_scoped_release nogil;
       world_ = World::Create(*model_, Options(), &error);
     }
-    if (!world_) throw Error(error);
+    if (!world_) {
+      logs_.clear();  // lines of a World that was not made: its error says what went wrong
+      throw Error(error);
+    }
     Report();
     if (!world_->failure.empty()) throw Error(world_->failure);  // an init() error
     SetAside();
@@ -181,7 +184,6 @@ class Simulation {
   }
 
  public:
-
   /// Steps up to n ticks (fewer when the experiment ends); returns the ticks stepped.
   uint64_t StepN(uint64_t n) {
     World& w = Live();
