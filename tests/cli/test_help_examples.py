@@ -1,8 +1,11 @@
 """Every example printed by `essaim COMMAND --help` runs as written, in the order the
 commands are listed (the snapshot example draws the run example's recording), from a folder
-that holds the repository's arenas/, controllers/ and bench/ like a checkout does."""
+that holds the repository's arenas/, controllers/ and bench/ like a checkout does. An example
+that runs until interrupted says "Ctrl-C" on its line: it must still be running after a few
+seconds, and end cleanly on SIGINT."""
 import os
 import re
+import signal
 import subprocess
 
 import pytest
@@ -47,6 +50,18 @@ def checkout(tmp_path_factory):
     return folder, env
 
 
+def run_until_interrupted(example, folder, env):
+    p = subprocess.Popen(["bash", "-c", "exec " + example.split("#")[0]], cwd=folder, env=env,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL)
+    try:
+        out, err = p.communicate(timeout=3)
+        pytest.fail(f"{example}: ended at once (exit {p.returncode})\n{out[-2000:]}\n{err[-2000:]}")
+    except subprocess.TimeoutExpired:
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=30)
+        assert p.returncode in (0, 130), f"{example}: exit {p.returncode} on SIGINT\n{err[-2000:]}"
+
+
 def test_every_command_has_an_example():
     for command in commands():
         assert examples(help_text(command)), f"essaim {command} --help shows no example"
@@ -58,9 +73,12 @@ def test_every_help_example_runs_as_written(checkout):
     for command in commands():
         for example in examples(help_text(command)):
             assert re.match(r"(source <\()?essaim ", example), example
-            r = subprocess.run(["bash", "-c", "set -o pipefail; " + example], cwd=folder, env=env,
-                               capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
-            assert r.returncode == 0, f"{example}\n{r.stdout[-2000:]}\n{r.stderr[-2000:]}"
+            if "Ctrl-C" in example:
+                run_until_interrupted(example, folder, env)
+            else:
+                r = subprocess.run(["bash", "-c", "set -o pipefail; " + example], cwd=folder, env=env,
+                                   capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+                assert r.returncode == 0, f"{example}\n{r.stdout[-2000:]}\n{r.stderr[-2000:]}"
             ran.append(example)
     assert any(e.startswith("essaim run ") for e in ran)
     assert (folder / "runs/foraging-7/summary.json").exists() and (folder / "tick500.png").exists()
