@@ -242,8 +242,8 @@ CommandMain AddBenchCommand(CLI::App& app) {
       ->check(IntegerIn(1, 100))
       ->capture_default_str();
   sub->add_option("--dir", a->dir, "the folder holding the scenario files")->type_name("DIR")->capture_default_str();
-  sub->footer("Example:\n  essaim bench --only avoidance-1000,rab-1000 --threads 1,2\n"
-              "  essaim bench --floor --only foraging-100 --ticks 300 --repeat 3");
+  sub->footer("Example:\n  essaim bench --only avoidance-100,foraging-30 --threads 1,2\n"
+              "  essaim bench --floor --only foraging-30 --ticks 100 --repeat 3");
   return [a] { return Bench(*a); };
 }
 

@@ -8,7 +8,22 @@
 namespace essaim {
 
 namespace {
+// What every controller has beside its devices (docs/compatibility.md).
+const char* kAlwaysThere =
+    "ALWAYS THERE (every controller, nothing to declare in the XML)\n"
+    "  robot.id  -> the robot's id, a string (\"fb0\")\n"
+    "  robot.params  -> the <params> attributes, all strings (tonumber() them); a key that no script\n"
+    "      reads is warned about at the end of the run, with the closest key read (--strict: an error)\n"
+    "  robot.random  -> this robot's generator, seeded from the experiment's random_seed:\n"
+    "      uniform() in [0,1), uniform(max), uniform(min, max), uniform_int(max), uniform_int(min, max),\n"
+    "      gaussian(sd [, mean]), exponential(mean), poisson(mean), bernoulli([p])\n"
+    "  log(...), logerr(...)  -> one line on stdout / stderr, arguments separated by tabs (as print);\n"
+    "      print(...) and io.write(...) go the same way (--log-prefix, --log-dir)\n"
+    "  vector2, vector3, quaternion  -> ARGoS's math types\n"
+    "\n";
+
 int Devices() {
+  std::fputs(kAlwaysThere, stdout);
   for (int sensors = 0; sensors < 2; ++sensors) {
     std::printf("%s (inside <%s>)\n", sensors ? "SENSORS" : "ACTUATORS", sensors ? "sensors" : "actuators");
     for (const DeviceRow& row : DeviceTable()) {

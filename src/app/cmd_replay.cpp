@@ -95,7 +95,7 @@ CommandMain AddReplayCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("replay", "write a self-contained replay page (HTML) of a recorded run");
   sub->add_option("RUN_DIR", a->run, "a run folder (or its recording.bin), from essaim run --record")->required();
   sub->add_option("-o,--out", a->out, "the page to write (default RUN_DIR/replay.html)")->type_name("FILE.html");
-  sub->footer("Example:\n  essaim run arenas/foraging.argos --record --out runs/f && essaim replay runs/f");
+  sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 300 --record --out runs/f && essaim replay runs/f");
   return [a] { return Replay(a->run, a->out); };
 }
 

@@ -1,6 +1,7 @@
 // `essaim run` and `essaim check`.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/log_printer.h"
+#include "app/run_report.h"
 #include "app/set_file.h"
 #include "core/paths.h"
 #include "core/strings.h"
@@ -29,6 +31,7 @@
 #include "output/summary.h"
 #include "serve/experiment_inputs.h"
 #include "serve/file_watcher.h"
+#include "sim/error_groups.h"
 #include "sim/step.h"
 
 namespace essaim {
@@ -188,11 +191,11 @@ static bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* er
 /// the message) where the output goes, when that is known and usable, with an earlier
 /// run's outputs set aside so the summary is not read beside them; returns `code`.
 static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
-                    int code) {
+                           int code, const InputFiles* inputs = nullptr) {
   std::string error;
   if (out.empty()) return code;
   if (!PrepareOutFolder(out, &error) || !SetAsideEarlierOutputsAndSay(out, &error) ||
-      !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, message, &error))
+      !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, inputs, message, &error))
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
   return code;
 }
@@ -211,6 +214,46 @@ static int FailedRun(World& world, const std::string& out, const std::string& me
   return kExitRunFailed;
 }
 
+namespace {
+constexpr uint64_t kCheckTicks = 10;
+constexpr size_t kCheckRobots = 20;
+
+/// The robots `check` steps: the first of every distinct controller and params, then the
+/// first others, up to kCheckRobots (all of them when fewer).
+Model CheckSample(const Model& m) {
+  Model sample = m;
+  if (m.robots.size() <= kCheckRobots) return sample;
+  std::vector<bool> keep(m.robots.size(), false);
+  std::set<std::pair<int, AttrMap>> seen;
+  size_t kept = 0;
+  for (size_t i = 0; i < m.robots.size(); ++i)
+    if (seen.insert({m.robots[i].controller, m.robots[i].params}).second) keep[i] = true, ++kept;
+  for (size_t i = 0; i < m.robots.size() && kept < kCheckRobots; ++i)
+    if (!keep[i]) keep[i] = true, ++kept;
+  sample.robots.clear();
+  for (size_t i = 0; i < m.robots.size(); ++i)
+    if (keep[i]) sample.robots.push_back(m.robots[i]);
+  return sample;
+}
+
+/// Steps the sample as `run` would, quietly; every problem goes into `problems` (one per line).
+void CheckSteps(World& world, uint64_t ticks, std::string* problems) {
+  size_t reported = 0;
+  auto report = [&] {
+    for (const std::string& e : GroupControllerErrors(world.controller_errors, reported)) *problems += e + "\n";
+    reported = world.controller_errors.size();
+  };
+  report();  // init()
+  StepStatus status = world.failure.empty() ? StepStatus::Running : StepStatus::Failed;
+  while (status == StepStatus::Running && world.tick < ticks) {
+    status = Step(world);
+    report();
+  }
+  if (!world.failure.empty()) *problems += world.failure + "\n";
+  if (status != StepStatus::Failed) *problems += FormatUnreadParams(FindUnreadParams(world), true);
+}
+}  // namespace
+
 static int Check(RunArgs& r) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
@@ -219,22 +262,31 @@ static int Check(RunArgs& r) {
   }
   auto model = LoadOrReport(r);
   if (!model) return kExitBadInput;
-  // Scripts too: load every controller and the loop functions without stepping.
+  // The scripts too: load every controller and the loop functions, run init() and a few
+  // ticks on a sample of the robots, as a run would, with no output.
+  const Model sample = CheckSample(*model);
   SimOptions opt;
   opt.output_dir = "";
   opt.lua = WatchdogOptions(*model, r);
-  std::string err;
-  auto world = World::Create(*model, opt, &err);
+  auto world = World::Create(sample, opt, &error);
   if (!world) {
-    std::fprintf(stderr, "%s\n", err.c_str());
+    std::fprintf(stderr, "%s\n", error.c_str());
     return kExitBadInput;
   }
-  if (!world->failure.empty()) {  // a runtime error in init(): as `run` would report it
-    std::fprintf(stderr, "essaim check: %s\n", world->failure.c_str());
-    return kExitRunFailed;
+  uint64_t length = model->experiment.length_ticks;
+  uint64_t ticks = r.ticks ? length : (length == 0 ? kCheckTicks : std::min(length, kCheckTicks));
+  std::string problems;
+  CheckSteps(*world, ticks, &problems);
+  if (!problems.empty()) {
+    std::fputs(problems.c_str(), stderr);
+    std::fprintf(stderr, "essaim check: %s: problems found in init() and %llu ticks of %zu robots\n", r.file.c_str(),
+                 static_cast<unsigned long long>(world->tick), sample.robots.size());
+    return kExitBadInput;
   }
-  std::printf("%s: ok (%zu robots, %zu obstacles, %llu ticks)\n", r.file.c_str(), model->robots.size(),
-              model->obstacles.size(), static_cast<unsigned long long>(model->experiment.length_ticks));
+  std::printf("%s: ok (%zu robots, %zu obstacles, %llu ticks; init() and %llu ticks run on %zu robots)\n",
+              r.file.c_str(), model->robots.size(), model->obstacles.size(),
+              static_cast<unsigned long long>(model->experiment.length_ticks),
+              static_cast<unsigned long long>(world->tick), sample.robots.size());
   return kExitOk;
 }
 
@@ -258,6 +310,7 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   opt.output_dir = out;
   opt.strict = r.strict;
   opt.lua = WatchdogOptions(*model, r);
+  opt.inputs = std::make_shared<InputFiles>();  // kept when a script fails to load
   auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
   if (!logs->Prepare(&error)) {
     std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
@@ -268,7 +321,7 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   auto world = World::Create(*model, opt, &error);
   if (!world) {
     std::fprintf(stderr, "%s\n", error.c_str());
-    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput);
+    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput, opt.inputs.get());
   }
   *inputs = ExperimentInputs(*model, world.get());
   if (!SetAsideEarlierOutputsAndSay(out, &error)) {
@@ -347,6 +400,7 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
   if (!all_written) unwritten.push_back(error);  // metrics, time series or summary
   if (!world->failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world->failure.c_str());
+  if (!r.quiet || r.strict) std::fputs(FormatUnreadParams(world->unread_params, r.strict).c_str(), stderr);
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
     std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", out.c_str(),
@@ -361,7 +415,7 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   }
   if (info.status == "interrupted") return 128 + (g_interrupted ? g_interrupted.load() : SIGINT);
   if (status == StepStatus::Failed || info.status == "failed") return kExitRunFailed;
-  if (r.strict && !world->controller_errors.empty()) return kExitRunFailed;
+  if (r.strict && (!world->controller_errors.empty() || !world->unread_params.empty())) return kExitRunFailed;
   return kExitOk;
 }
 
@@ -413,7 +467,8 @@ CommandMain AddRunCommand(CLI::App& app) {
   sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
   sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
   sub->add_flag("--strict", r->strict,
-                "unknown attributes in the file are errors (exit 2); the first controller error ends the run (exit 1)");
+                "unknown attributes in the file are errors (exit 2); the first controller error ends the run, "
+                "a parameter no script read fails it (exit 1)");
   sub->add_flag("--log-prefix", r->log_prefix, "start each log line with its tick and robot: [t=120 fb7] ...");
   sub->add_option("--log-dir", r->log_dir, "write each robot's log lines to DIR/<robot id>.log instead")
       ->type_name("DIR");
@@ -445,7 +500,7 @@ CommandMain AddRunCommand(CLI::App& app) {
                   "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
       ->type_name("N")
       ->check(IntegerIn(1, kMaxTicks));
-  sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 3000 --seed 7 --set controllers.ctrl.params.EPSILONGREED=0.3");
+  sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 600 --seed 7 --record --set controllers.foraging.params.EPSILONGREED=0.3");
   return [r, sub, budget] {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
     r->record_every = 0;

@@ -24,6 +24,7 @@ struct SnapshotArgs {
   long long tick = -1;  // -1: the last recorded tick
   long long trail = 0;
   long long size = 1024;
+  bool no_labels = false;
 };
 
 }  // namespace
@@ -62,6 +63,7 @@ static int Snapshot(SnapshotArgs s) {
   SnapshotOptions opt;
   opt.size = static_cast<int>(s.size);
   opt.trail_ticks = static_cast<int>(std::min<long long>(s.trail, 0x7FFFFFFF));
+  opt.labels = !s.no_labels;
   std::string png;
   if (!RenderSnapshotPng(rec, frame, opt, &png, &error) || !WriteFileAtomic(s.out, png, &error)) {
     std::fprintf(stderr, "essaim snapshot: %s\n", error.c_str());
@@ -91,7 +93,9 @@ CommandMain AddSnapshotCommand(CLI::App& app) {
       ->type_name("PX")
       ->check(IntegerIn(16, 8192))
       ->capture_default_str();
-  sub->footer("Example:\n  essaim snapshot runs/foraging-7 --tick 500 --trail 100 -o tick500.png");
+  sub->add_flag("--no-labels", s->no_labels, "leave out the tick (top left) and the robots' ids");
+  sub->footer("Example: (runs/foraging-7 is the recording made by the example of essaim run --help)\n"
+              "  essaim snapshot runs/foraging-7 --tick 500 --trail 100 -o tick500.png");
   return [s] { return Snapshot(*s); };
 }
 

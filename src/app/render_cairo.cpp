@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -119,6 +120,38 @@ void DrawRobot(cairo_t* cr, const RecordedRobot& r, double radius, double px) {
   cairo_stroke(cr);
 }
 
+// Text in pixels, on a pale box so it reads on any floor: the tick in the top-left corner,
+// each robot's id to the upper right of its body.
+void DrawLabel(cairo_t* cr, const std::string& text, double x, double y) {
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, text.c_str(), &ext);
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.75);
+  cairo_rectangle(cr, x - 1, y + ext.y_bearing - 1, ext.x_advance + 2, ext.height + 2);
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_move_to(cr, x, y);
+  cairo_show_text(cr, text.c_str());
+}
+
+void DrawLabels(cairo_t* cr, const Recording& rec, size_t frame, double radius, int height) {
+  const double font = std::max(10.0, std::min(14.0, height / 50.0));
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  std::vector<std::pair<double, double>> at(rec.RobotCount());
+  for (size_t i = 0; i < rec.RobotCount(); ++i) {  // world to pixels, while the world frame is set
+    RecordedRobot r = rec.Robot(frame, i);
+    double x = r.x + radius, y = r.y + radius;
+    cairo_user_to_device(cr, &x, &y);
+    at[i] = {x, y};
+  }
+  cairo_identity_matrix(cr);
+  cairo_set_font_size(cr, font);
+  for (size_t i = 0; i < rec.RobotCount(); ++i) DrawLabel(cr, rec.scene().robot_ids[i], at[i].first, at[i].second);
+  const uint64_t tick = rec.Tick(frame);
+  char text[64];
+  std::snprintf(text, sizeof text, "tick %llu (%.1f s)", static_cast<unsigned long long>(tick),
+                static_cast<double>(tick) / rec.scene().ticks_per_second);
+  DrawLabel(cr, text, font * 0.5, font * 1.3);
+}
 }  // namespace
 
 void SnapshotImageSize(const RecordingScene& s, int size, int* width, int* height) {
@@ -175,6 +208,7 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   if (opt.trail_ticks > 0) DrawTrails(cr, rec, frame, opt.trail_ticks, px);
   const double radius = std::max(s.robot_radius, 2 * px);
   for (size_t i = 0; i < rec.RobotCount(); ++i) DrawRobot(cr, rec.Robot(frame, i), radius, px);
+  if (opt.labels) DrawLabels(cr, rec, frame, radius, height);
 
   cairo_destroy(cr);
   cairo_surface_flush(surface);

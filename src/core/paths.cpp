@@ -17,6 +17,12 @@ bool FileExists(const std::string& path) {
   return fs::is_regular_file(path, ec);
 }
 
+std::string CanonicalPath(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? fs::absolute(path, ec).lexically_normal().string() : p.string();
+}
+
 bool ReadFile(const std::string& path, std::string* out) {
   if (!FileExists(path)) return false;  // an ifstream "reads" a folder as an empty file
   std::ifstream in(path, std::ios::binary);

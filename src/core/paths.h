@@ -11,6 +11,8 @@ std::string DirName(const std::string& path);
 std::string JoinPath(const std::string& dir, const std::string& rel);
 /// A regular file (after following symlinks); false for folders and missing paths.
 bool FileExists(const std::string& path);
+/// Absolute, with symlinks, "." and ".." resolved (as far as the path exists).
+std::string CanonicalPath(const std::string& path);
 /// The whole file; false when it is missing, unreadable or not a regular file.
 bool ReadFile(const std::string& path, std::string* out);
 

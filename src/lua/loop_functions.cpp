@@ -10,7 +10,9 @@
 #include "core/paths.h"
 #include "core/strings.h"
 #include "lua/lua_math_types.h"
+#include "lua/lua_params.h"
 #include "lua/lua_random.h"
+#include "lua/lua_require.h"
 #include "lua/loop_handles.h"
 
 namespace essaim {
@@ -219,6 +221,7 @@ int LoopLog(lua_State* L) {
   *log += stream;
   int n = lua_gettop(L);
   for (int i = 1; i <= n; ++i) {
+    if (i > 1) *log += '\t';  // as print() and the controllers' log()
     if (lua_type(L, i) == LUA_TNUMBER) {
       char buf[32];
       std::snprintf(buf, sizeof buf, "%g", lua_tonumber(L, i));
@@ -357,6 +360,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   }
   lua_State* L = L_;
   OpenGuardedLibraries(L, limits_.sandbox);
+  RecordRequiredFiles(L, limits_.inputs);
   *static_cast<LoopFunctions**>(lua_getextraspace(L)) = this;  // LoopFunctionsOf
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -414,6 +418,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
     }
     lua_setfield(L, -2, child.first.c_str());
   }
+  PushTrackedParams(L, &params_);
   lua_setfield(L, -2, "params");
   lua_newtable(L);
   const std::pair<const char*, double> arena[] = {{"size_x", model.arena.size.x()}, {"size_y", model.arena.size.y()},
@@ -453,6 +458,10 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
     return false;
   }
   return PCall(0, 0, "top level", error);
+}
+
+void LoopFunctions::ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const {
+  ListParamReads(L_, params_, unread, read);
 }
 
 void LoopFunctions::SetTick(uint64_t tick) {

@@ -10,6 +10,7 @@
 #include "devices/robot_state.h"
 #include "lua/lua_copy.h"
 #include "lua/lua_guard.h"
+#include "lua/lua_params.h"
 #include "lua/lua_state.h"
 #include "model/model.h"
 #include "physics/physics_world.h"
@@ -54,6 +55,8 @@ class LoopFunctions {
   const LuaGuard& Memory() const { return guard_; }
   std::string& LogBuffer() { return log_; }
   ::lua_State* State() { return L_; }
+  /// experiment.params attributes never read so far, and the keys read.
+  void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
 
  private:
   bool PCall(int nargs, int nresults, const char* what, std::string* error);
@@ -62,6 +65,7 @@ class LoopFunctions {
   LuaOptions limits_;
   std::string script_;
   int traceback_ref_ = -1;
+  TrackedParams params_;     // experiment.params
   int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
   std::string log_;
   Timeseries series_;

@@ -19,6 +19,8 @@ struct lua_State;
 
 namespace essaim {
 
+class InputFiles;
+
 /// The watchdog's limits, on by default (--lua-budget, --lua-memory, <system lua_budget>).
 /// A call running this long gets the count hook (and, after a signal, is interrupted).
 constexpr double kArmAfterSeconds = 0.1;
@@ -28,6 +30,7 @@ struct LuaOptions {
   size_t memory_limit = size_t{256} << 20;    // bytes per state; 0 = unlimited
   long long instruction_limit = 1000000000;   // per call into Lua; 0 = unlimited
   double wall_seconds = 60;                   // per call, backstop for time in C functions; 0 = off
+  InputFiles* inputs = nullptr;               // where `require` lists the files it loads; null: nowhere
 };
 
 /// One state's accounting. Its address is the allocator's user data: never moved.

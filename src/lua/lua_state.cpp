@@ -10,7 +10,9 @@
 #include "core/strings.h"
 #include "lua/lua_devices.h"
 #include "lua/lua_math_types.h"
+#include "lua/lua_params.h"
 #include "lua/lua_random.h"
+#include "lua/lua_require.h"
 
 namespace essaim {
 
@@ -25,7 +27,7 @@ int Traceback(lua_State* L) {
   return 1;
 }
 
-// ARGoS's log(): arguments concatenated without separator; numbers as C++ streams print
+// ARGoS's log(): numbers as C++ streams print
 // them (6 significant digits), booleans 1/0, other types by name.
 void AppendArgs(lua_State* L, std::string* out, const char* sep) {
   int n = lua_gettop(L);
@@ -46,14 +48,31 @@ void AppendArgs(lua_State* L, std::string* out, const char* sep) {
 }
 
 int LogTo(lua_State* L, char stream) {
+  // Arguments separated by tabs, as print() does (ARGoS joins them with nothing, which
+  // makes log("x", 1, 2) read "x12").
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
   *log += stream;
-  AppendArgs(L, log, "");
+  AppendArgs(L, log, "\t");
   *log += '\n';
   return 0;
 }
 int Log(lua_State* L) { return LogTo(L, 'O'); }
 int LogErr(lua_State* L) { return LogTo(L, 'E'); }
+// io.write, routed through the robot's log buffer like print(): whole lines become log
+// lines (robot order, --log-prefix, --log-dir); a line left open is ended with the call.
+// Returns io.stdout, as io.write does.
+int IoWrite(lua_State* L) {
+  auto* self = static_cast<LuaController*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    size_t len = 0;
+    const char* text = luaL_checklstring(L, i, &len);  // numbers as io.write formats them
+    self->WriteText(text, len);
+  }
+  lua_pushvalue(L, lua_upvalueindex(2));
+  return 1;
+}
+
 int Print(lua_State* L) {
   // Lua's print, routed through the buffer so output keeps robot order under threads.
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
@@ -96,6 +115,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   constexpr int kMinorMultiplier = 50, kMajorMultiplier = 300;
   lua_gc(L, LUA_GCGEN, kMinorMultiplier, kMajorMultiplier);
   OpenGuardedLibraries(L, options.sandbox);
+  RecordRequiredFiles(L, options.inputs);
   // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
   {
     uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index);
@@ -113,6 +133,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     lua_pushcclosure(L, fn, 1);
     lua_setglobal(L, name);
   }
+  RouteIoWrite(L);
   OpenMathTypes(L);
 
   // The robot table, in ARGoS's order: id, random, actuators, sensors, params.
@@ -127,6 +148,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     lua_pushstring(L, kv.second.c_str());
     lua_setfield(L, -2, kv.first.c_str());
   }
+  PushTrackedParams(L, &params_);
   lua_setfield(L, -2, "params");
   lua_setglobal(L, "robot");
   if (!PushReadings(error)) return false;
@@ -178,6 +200,10 @@ int PushProtected(lua_State* L) {
 }
 }  // namespace
 
+void LuaController::ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const {
+  ListParamReads(L_, params_, unread, read);
+}
+
 bool LuaController::PushReadings(std::string* error) {
   lua_State* L = L_;
   if (!L) return true;
@@ -191,6 +217,42 @@ bool LuaController::PushReadings(std::string* error) {
   BeginGuardedCall(&guard_);
   const int status = lua_pcall(L, 1, 0, 0);
   return Finish(status, "filling its sensor readings", "", error);
+}
+
+void LuaController::RouteIoWrite(lua_State* L) {
+  if (lua_getglobal(L, "io") != LUA_TTABLE) {  // the sandbox has no io
+    lua_pop(L, 1);
+    return;
+  }
+  lua_pushlightuserdata(L, this);
+  lua_getfield(L, -2, "stdout");
+  lua_pushcclosure(L, IoWrite, 2);
+  lua_setfield(L, -2, "write");
+  lua_pop(L, 1);
+}
+
+void LuaController::WriteText(const char* text, size_t len) {
+  for (size_t i = 0; i < len; ++i) {
+    if (text[i] != '\n') {
+      write_ += text[i];
+      continue;
+    }
+    EndWrittenLine();
+  }
+}
+
+void LuaController::EndWrittenLine() {
+  log_ += 'O';
+  log_ += write_;
+  log_ += '\n';
+  write_.clear();
+}
+
+bool LuaController::HasFunction(const char* name) {
+  if (!L_ || controller_->script.empty()) return false;
+  const bool found = lua_getglobal(L_, name) == LUA_TFUNCTION;
+  lua_pop(L_, 1);
+  return found;
 }
 
 bool LuaController::Call(const char* fn, bool required, std::string* error) {
@@ -215,6 +277,7 @@ bool LuaController::Call(const char* fn, bool required, std::string* error) {
 
 bool LuaController::Finish(int status, const char* where, const char* name, std::string* error) {
   lua_State* L = L_;
+  if (!write_.empty()) EndWrittenLine();
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);

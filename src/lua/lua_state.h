@@ -4,10 +4,12 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "devices/robot_state.h"
 #include "lua/lua_device_refs.h"
 #include "lua/lua_guard.h"
+#include "lua/lua_params.h"
 #include "model/model.h"
 
 struct lua_State;
@@ -35,11 +37,17 @@ class LuaController {
   bool CallStep(std::string* error) { return Call("step", true, error); }
   bool CallReset(std::string* error) { return Call("reset", false, error); }
   bool CallDestroy(std::string* error) { return Call("destroy", false, error); }
+  /// io.write's text: each completed line goes to the log buffer as a print() line.
+  void WriteText(const char* text, size_t len);
+  /// The script defines global function `name` (false without a script or a state).
+  bool HasFunction(const char* name);
 
   /// log()/logerr() output since the last take, in call order ("" if none). Buffered so
   /// robots stepped on several threads still print in robot order.
   std::string& LogBuffer() { return log_; }
   const LuaGuard& Memory() const { return guard_; }
+  /// robot.params keys never read so far and those read (nothing once the state is closed).
+  void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
   ::lua_State* State() { return L_; }
 
  private:
@@ -48,6 +56,8 @@ class LuaController {
   /// closed if it ran out of memory; true if the call went through. The error ends with
   /// " (" where name ")", e.g. " (in step)".
   bool Finish(int status, const char* where, const char* name, std::string* error);
+  void RouteIoWrite(::lua_State* L);
+  void EndWrittenLine();
 
   ::lua_State* L_ = nullptr;
   LuaGuard guard_;
@@ -55,8 +65,10 @@ class LuaController {
   const RobotDef* def_ = nullptr;
   const ControllerDef* controller_ = nullptr;
   std::string log_;
+  std::string write_;  // io.write's open line
   int traceback_ref_ = -1;
   LuaDeviceRefs refs_;  // device tables refreshed each tick
+  TrackedParams params_;  // robot.params
 };
 
 }  // namespace essaim

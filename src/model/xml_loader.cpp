@@ -376,13 +376,27 @@ void Loader::LoadControllers(const XMLElement* e) {
   }
 }
 
+// "unknown sensor", with the closest name of that kind, or where the name belongs.
+static std::string UnknownDevice(const std::string& name, bool sensor) {
+  const char* kind = sensor ? "sensor" : "actuator";
+  if (FindDevice(name, !sensor))
+    return std::string("'") + name + "' is " + (sensor ? "an actuator" : "a sensor") + ", not " +
+           (sensor ? "a sensor" : "an actuator") + ": it goes inside <" + (sensor ? "actuators" : "sensors") + ">";
+  std::vector<std::string> names;
+  for (const DeviceRow& row : DeviceTable())
+    if (row.is_sensor == sensor) names.push_back(row.xml_name);
+  std::string hint = ClosestName(name, names);
+  return std::string("unknown ") + kind + (hint.empty() ? "" : "; did you mean <" + hint + ">?") +
+         " (see `essaim devices`)";
+}
+
 void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c) {
   std::vector<DeviceConfig>& out = sensors ? c->sensors : c->actuators;
   ledger_.Visit(list);
   for (auto* d = list->FirstChildElement(); d; d = d->NextSiblingElement()) {
     const DeviceRow* row = FindDevice(d->Name(), sensors);
     if (!row) {
-      Error(d, std::string("unknown ") + (sensors ? "sensor" : "actuator") + " (see `essaim devices`)");
+      Error(d, UnknownDevice(d->Name(), sensors));
       continue;
     }
     if (!row->supported) {

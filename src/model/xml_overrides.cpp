@@ -32,6 +32,17 @@ tinyxml2::XMLElement* FindChild(tinyxml2::XMLElement* parent, const std::string&
   }
   return nullptr;
 }
+
+// The names a segment could have meant: the children's tags and ids.
+std::string ClosestChild(const tinyxml2::XMLElement* parent, const std::string& segment) {
+  std::vector<std::string> names;
+  for (auto* c = parent->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    names.push_back(c->Name());
+    if (const char* id = c->Attribute("id")) names.push_back(id);
+  }
+  std::string hint = ClosestName(segment.substr(0, segment.find('[')), names);
+  return hint.empty() ? "" : "; did you mean '" + hint + "'?";
+}
 }  // namespace
 
 bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment, std::string* error,
@@ -55,11 +66,12 @@ bool ApplyXmlOverride(tinyxml2::XMLDocument& doc, const std::string& assignment,
   std::string walked;
   for (size_t i = 0; i + 1 < segments.size(); ++i) {
     walked += (i ? "." : "") + segments[i];
-    node = FindChild(node, segments[i]);
-    if (!node) {
-      *error = "--set " + assignment + ": no element at '" + walked + "'";
+    tinyxml2::XMLElement* child = FindChild(node, segments[i]);
+    if (!child) {
+      *error = "--set " + assignment + ": no element at '" + walked + "'" + ClosestChild(node, segments[i]);
       return false;
     }
+    node = child;
   }
   node->SetAttribute(segments.back().c_str(), value.c_str());
   if (target) *target = {node, segments.back()};

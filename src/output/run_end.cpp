@@ -16,6 +16,8 @@ void EndRun(World& world, StepStatus last, RunInfo* info, Json* metrics, bool* h
     info->status = "failed";
   }
   if (info->status == "ok" && !world.controller_errors.empty()) info->status = "controller_error";
+  // A run cut short may not have reached the code that reads a parameter: no guesses then.
+  if (info->status == "ok" || info->status == "controller_error") world.unread_params = FindUnreadParams(world);
 }
 
 }  // namespace essaim

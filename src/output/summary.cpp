@@ -8,12 +8,23 @@
 
 namespace essaim {
 
+namespace {
+// The run's identity and the files it read (docs/cli.md: summary.json).
+void AddInputs(Json& s, const std::string& version, const Model& m, const InputFiles& inputs) {
+  s["run_identity"] = inputs.Identity(version, m.overrides, m.experiment.length_ticks, m.experiment.seed);
+  s["inputs"] = Json::array();
+  for (const InputFile& f : inputs.List())
+    s["inputs"].push_back(Json::object({{"path", f.path}, {"role", f.role}, {"hash", f.hash}}));
+}
+}  // namespace
+
 Json BuildSummary(const World& w, const RunInfo& info) {
   const Model& m = w.model;
   Json s = Json::object();
   s["essaim_version"] = info.version;
   s["experiment"] = m.file;
   s["experiment_hash"] = "fnv1a64:" + m.file_hash;
+  if (w.inputs) AddInputs(s, info.version, m, *w.inputs);
   s["overrides"] = Json::array();
   for (const std::string& o : m.overrides) s["overrides"].push_back(o);
   s["seed"] = static_cast<uint64_t>(m.experiment.seed);
@@ -48,6 +59,12 @@ Json BuildSummary(const World& w, const RunInfo& info) {
   std::string failure = w.failure;
   for (const std::string& e : info.output_errors) failure += (failure.empty() ? "" : "; ") + e;
   if (!failure.empty()) s["failure"] = failure;
+  s["unread_params"] = Json::array();
+  for (const UnreadParam& u : w.unread_params) {
+    Json one = Json::object({{"path", u.path}});
+    if (!u.did_you_mean.empty()) one["did_you_mean"] = u.did_you_mean;
+    s["unread_params"].push_back(one);
+  }
   s["outputs"] = info.outputs;
   return s;
 }
@@ -79,12 +96,13 @@ std::string TimeseriesCsv(const Timeseries& series) {
 }
 
 bool WriteFailureSummary(const std::string& dir, const std::string& version, const std::string& experiment,
-                         const std::vector<std::string>& overrides, const Model* model, const std::string& message,
-                         std::string* error) {
+                         const std::vector<std::string>& overrides, const Model* model, const InputFiles* inputs,
+                         const std::string& message, std::string* error) {
   Json s = Json::object();
   s["essaim_version"] = version;
   s["experiment"] = model ? model->file : experiment;
   if (model) s["experiment_hash"] = "fnv1a64:" + model->file_hash;
+  if (model && inputs) AddInputs(s, version, *model, *inputs);
   s["overrides"] = overrides;
   if (model) {
     s["seed"] = static_cast<uint64_t>(model->experiment.seed);

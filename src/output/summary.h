@@ -27,10 +27,11 @@ Json BuildSummary(const World& world, const RunInfo& info);
 std::string TimeseriesCsv(const Timeseries& series);
 /// summary.json of a run that ended before its world existed: bad input (the file, a --set,
 /// a floor image) or a script that does not load. Status "failed", finished_by "error", 0
-/// ticks, `message` as "failure"; `model` is null when the file itself did not load.
+/// ticks, `message` as "failure"; `model` is null when the file itself did not load;
+/// `inputs` (may be null) lists the files read so far, with the run's identity.
 bool WriteFailureSummary(const std::string& dir, const std::string& version, const std::string& experiment,
-                         const std::vector<std::string>& overrides, const Model* model, const std::string& message,
-                         std::string* error);
+                         const std::vector<std::string>& overrides, const Model* model, const InputFiles* inputs,
+                         const std::string& message, std::string* error);
 /// Writes metrics.json and timeseries.csv (when there is something to write), then
 /// summary.json last, so a folder with summary.json holds a finished run. One that cannot
 /// be written does not stop the others: summary.json is still attempted, with status

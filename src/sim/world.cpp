@@ -41,6 +41,23 @@ bool BuildFloor(World& w, std::string* error) {
   }
   return true;
 }
+
+// A controller with no step() after init() would stand still all run: the run fails
+// instead (ARGoS logs it once per robot and goes on). Checked after init(), which may
+// define step().
+std::string MissingStep(World& w) {
+  std::string first;
+  size_t count = 0;
+  for (size_t i = 0; i < w.controllers.size(); ++i) {
+    const std::string& script = w.model.controllers[w.model.robots[i].controller].script;
+    if (script.empty() || !w.robots[i].controller_ok || w.controllers[i]->HasFunction("step")) continue;
+    if (count++ == 0) first = "robot " + w.model.robots[i].id + ": " + script;
+  }
+  if (count == 0) return {};
+  return first + ": no global function 'step' after init()" +
+         (count > 1 ? " (nor in " + std::to_string(count - 1) + " more robots)" : "") +
+         "; a controller defines init() and step()";
+}
 }  // namespace
 
 std::unique_ptr<World> World::Create(const Model& source, const SimOptions& options, std::string* error) {
@@ -64,8 +81,11 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   if (w->threads < 1) w->threads = 1;
   w->pool = std::make_unique<ThreadPool>(w->threads);
 
+  w->inputs = options.inputs ? options.inputs : std::make_shared<InputFiles>();
+  ListModelInputs(model, w->inputs.get());
+  w->options.lua.inputs = w->inputs.get();
   // Loop functions load first so the floor exists before anything senses it.
-  w->loop_functions.SetLimits(options.lua);
+  w->loop_functions.SetLimits(w->options.lua);
   if (!w->loop_functions.Load(w->model, &w->robots, &w->physics, &w->entities, &w->controllers, options.output_dir, error))
     return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
@@ -73,7 +93,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   w->controllers.reserve(n);
   for (size_t i = 0; i < n; ++i) {
     auto c = std::make_unique<LuaController>();
-    if (!c->Load(model, model.robots[i], &w->robots[i], seed, options.lua, error)) return nullptr;
+    if (!c->Load(model, model.robots[i], &w->robots[i], seed, w->options.lua, error)) return nullptr;
     w->controllers.push_back(std::move(c));
   }
   for (size_t i = 0; i < n; ++i) {
@@ -88,6 +108,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
     }
   }
   for (size_t i = 0; i < n; ++i) FlushLog(*w, w->controllers[i]->LogBuffer(), static_cast<int>(i));
+  if (w->failure.empty()) w->failure = MissingStep(*w);
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)
     for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text, {0, kLogHost});
@@ -97,6 +118,17 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   if (w->failure.empty() && !w->loop_functions.Call("init", &err)) w->failure = err;
   FlushLog(*w, w->loop_functions.LogBuffer(), kLogLoopFunctions);
   return w;
+}
+
+void ListModelInputs(const Model& model, InputFiles* inputs) {
+  inputs->Add(model.file, "arena");
+  std::vector<bool> used(model.controllers.size(), false);
+  for (const RobotDef& r : model.robots)
+    if (r.controller >= 0) used[static_cast<size_t>(r.controller)] = true;
+  for (size_t i = 0; i < model.controllers.size(); ++i)
+    if (used[i] && !model.controllers[i].script.empty()) inputs->Add(model.controllers[i].script, "controller");
+  if (!model.loop_functions.script.empty()) inputs->Add(model.loop_functions.script, "loop_functions");
+  if (model.floor.source == FloorSource::Image) inputs->Add(model.floor.path, "floor_image");
 }
 
 void FlushLog(World& w, std::string& buffer, int robot) {

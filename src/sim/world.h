@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_files.h"
 #include "devices/entity_store.h"
 #include "devices/floor.h"
 #include "devices/media.h"
@@ -47,6 +48,23 @@ struct SimOptions {
   /// Receives log()/logerr() lines in robot order ('O' stdout, 'E' stderr, 'P' print) with
   /// who wrote them. Null: dropped.
   std::function<void(char stream, const std::string& line, const LogOrigin& from)> log_sink;
+  /// Where the files the run reads are listed; null: the World makes its own. Given by a
+  /// caller that must still list them when the World cannot be made (a module that fails).
+  std::shared_ptr<InputFiles> inputs;
+};
+
+/// The files a model names: the .argos file, the scripts of the controllers robots use,
+/// the loop functions, the floor image.
+void ListModelInputs(const Model& model, InputFiles* inputs);
+
+/// A parameter given in the XML or by --set that nothing read during the run.
+struct UnreadParam {
+  std::string path;          // as --set names it: controllers.<id>.params.<key>, loop_functions.<key>
+  std::string key;
+  std::string did_you_mean;  // the closest key that was read, or ""
+  std::string script;        // the script that never read it
+  std::string set_by;        // the --set that gave it, or ""
+  SourceLoc loc;             // the <lua_controller> or <loop_functions> element
 };
 
 class ThreadPool;
@@ -76,6 +94,10 @@ class World {
   FloorRaster floor;
   StageTimes times;
   std::vector<ControllerError> controller_errors;
+  /// Filled when the run ends (EndRun), or by `essaim check`: see FindUnreadParams.
+  std::vector<UnreadParam> unread_params;
+  /// Every file the run read, modules loaded by `require` included.
+  std::shared_ptr<InputFiles> inputs;
   std::string failure;         // set when the run must stop (strict, loop-function error)
   bool finished_by_loop_functions = false;
   int threads = 1;
@@ -91,6 +113,10 @@ class World {
  private:
   World(const Model& m, const SimOptions& o);
 };
+
+/// robot.params keys (per controller, over all its robots) and experiment.params attributes
+/// that no script read so far; `script` itself is never listed. Main thread, between steps.
+std::vector<UnreadParam> FindUnreadParams(const World& w);
 
 /// Hands a Lua state's buffered log lines to options.log_sink (from robot index `robot`, or
 /// kLogLoopFunctions) and empties the buffer.

@@ -66,7 +66,7 @@ function step()
     local b = robot.range_and_bearing[i].data[1]
     if b > have then have = b end
   end
-  if have == 42 and not told then told = true; log(robot.id, " has it at step ", n) end
+  if have == 42 and not told then told = true; log(robot.id, "has it at step", n) end
   robot.range_and_bearing.set_data(1, have)
 end
 )");
@@ -76,7 +76,7 @@ end
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   RunTicks(*run->s.world, 6);
   EXPECT_TRUE(run->s.world->controller_errors.empty());
-  EXPECT_EQ(run->lines, std::vector<std::string>({"A has it at step 1", "B has it at step 2", "C has it at step 3"}));
+  EXPECT_EQ(run->lines, std::vector<std::string>({"A\thas it at step\t1", "B\thas it at step\t2", "C\thas it at step\t3"}));
   // C never hears A directly.
   for (const RabPacket& p : run->s.world->robots[2].rd.rab) EXPECT_NE(p.sender, 0);
 }
@@ -103,7 +103,7 @@ function step()
     local key = b.color.red .. "," .. b.color.green .. "," .. b.color.blue
     if not seen and key == "255,0,255" then
       seen = true
-      log("magenta at step ", n, " angle ", string.format("%.3f", b.angle), " blobs ", #robot.colored_blob_omnidirectional_camera)
+      log("magenta at step", n, "angle", string.format("%.3f", b.angle), "blobs", #robot.colored_blob_omnidirectional_camera)
     end
   end
 end
@@ -116,7 +116,7 @@ end
   // Seen one step later. From (0,0), the painter at (0.3, 0.3) shows its ring LEDs 5..11
   // (those facing the watcher; its body hides the rest) and its beacon: 8 blobs, the first
   // one LED 5 at atan2 = 0.9945 rad.
-  EXPECT_EQ(run->lines, std::vector<std::string>({"magenta at step 6 angle 0.995 blobs 8"}));
+  EXPECT_EQ(run->lines, std::vector<std::string>({"magenta at step\t6\tangle\t0.995\tblobs\t8"}));
 }
 
 // Brute force for the crowd tests below, one test per (pair, body): the pair's ray runs

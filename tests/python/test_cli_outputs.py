@@ -219,8 +219,8 @@ def test_an_error_in_loop_function_init_is_a_failed_run_exit_1_with_a_summary(tm
     assert "loop functions (init): " in r.stderr and "loop.lua:2: no food here" in r.stderr
     s = summary(tmp_path / "o")
     assert s["status"] == "failed" and s["ticks"] == 0 and "no food here" in s["failure"]
-    c = run("check", exp, cwd=tmp_path)
-    assert c.returncode == 1 and "no food here" in c.stderr
+    c = run("check", exp, cwd=tmp_path)  # check: anything wrong is exit 2
+    assert c.returncode == 2 and "no food here" in c.stderr
     # A syntax error is still bad input (exit 2): nothing ran, and the summary says why.
     exp = loop_experiment(tmp_path, "function init(\n")
     r = run("run", exp, "--ticks", 5, "--quiet", "--out", tmp_path / "p", cwd=tmp_path)

@@ -151,7 +151,7 @@ TEST(Camera, BlackLedsAndDisabledCameraSeeNothing) {
           "n = 0\nfunction init() robot.colored_blob_omnidirectional_camera.enable() end\n"
           "function step() n = n + 1; local cam = robot.colored_blob_omnidirectional_camera\n"
           "  local b = cam[1]\n"
-          "  log(#cam, ' ', b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. math.type(b.color.green)) or 'nil')\n"
+          "  log(#cam, b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. math.type(b.color.green)) or 'nil')\n"
           "  if n == 2 then cam.disable() end end\n");
   d.Write("look.lua", kLook);
   std::vector<std::string> lines;
@@ -170,7 +170,7 @@ TEST(Camera, BlackLedsAndDisabledCameraSeeNothing) {
   EXPECT_TRUE(Rgb(Blobs(s, 0)[0].color, 0, 255, 0));
   EXPECT_TRUE(Blobs(s, 2).empty());   // never enabled
   EXPECT_TRUE(Blobs(s, 3).empty());
-  EXPECT_EQ(lines, std::vector<std::string>({"1 0,255,0 integer", "1 0,255,0 integer", "0 nil", "0 nil"}));
+  EXPECT_EQ(lines, std::vector<std::string>({"1\t0,255,0 integer", "1\t0,255,0 integer", "0\tnil", "0\tnil"}));
 }
 
 TEST(Camera, NoiseIsDeterministic) {

@@ -35,7 +35,7 @@ function init()
     assert(math.type(robot.random.poisson(2)) == "integer")
   end
   assert(robot.wheels.axis_length == 14)
-  log("init ok ", 3, " ", 0.5, " ", true)
+  log("init ok", 3, 0.5, true)
 end
 function step() end
 )");
@@ -45,7 +45,7 @@ function step() end
   EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
   RunTicks(*s.world, 1);
   ASSERT_FALSE(log.lines.empty());
-  EXPECT_EQ(log.lines[0].second, "init ok 3 0.5 1");
+  EXPECT_EQ(log.lines[0].second, "init ok\t3\t0.5\t1");  // tabs between arguments, as print()
 }
 
 TEST(LuaHost, PositioningGivesPositionAndQuaternionWithAngleAxisFields) {
@@ -338,15 +338,26 @@ TEST(LoopFunctions, FloorColorMustReturnAColour) {
   EXPECT_NE(f.find("define no floor_color(x, y)"), std::string::npos) << f;
 }
 
-TEST(LuaHost, AScriptWithoutStepIsAControllerError) {
+TEST(LuaHost, AScriptWithoutStepFailsTheRun) {
+  // It would stand still all run: the run fails (ARGoS logs it and goes on).
   TempDir d;
   d.Write("c.lua", "function init() end");
+  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c"), WheelsController("c", "c.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  EXPECT_NE(s.world->failure.find("robot fb0: "), std::string::npos) << s.world->failure;
+  EXPECT_NE(s.world->failure.find("c.lua: no global function 'step' after init() (nor in 1 more robots)"),
+            std::string::npos)
+      << s.world->failure;
+}
+
+TEST(LuaHost, StepMayBeDefinedByInit) {
+  TempDir d;
+  d.Write("c.lua", "function init() step = function() robot.wheels.set_velocity(1, 1) end end");
   Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
+  EXPECT_EQ(s.world->failure, "");
   Step(*s.world);
-  ASSERT_EQ(s.world->controller_errors.size(), 1u);
-  EXPECT_NE(s.world->controller_errors[0].message.find("no global function 'step'"), std::string::npos)
-      << s.world->controller_errors[0].message;
+  EXPECT_TRUE(s.world->controller_errors.empty());
 }
 
 }  // namespace

@@ -191,16 +191,16 @@ TEST(RangeAndBearing, ClearDataAndLuaTables) {
   d.Write("recv.lua",
           "function init() end\n"
           "function step() local m = robot.range_and_bearing[1]\n"
-          "  log(#robot.range_and_bearing, ' ', #m.data, ' ', math.type(m.data[1]), ' ', table.concat(m.data, ','), ' ',\n"
+          "  log(#robot.range_and_bearing, #m.data, math.type(m.data[1]), table.concat(m.data, ','),\n"
           "      math.type(m.range)) end\n");
   auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
                                         RabController("send", "send.lua") + RabController("recv", "recv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 3);
   // Bytes are Lua integers; 300 wraps to 44, -1 to 255, 2.9 truncates (C++ cast).
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"1 10 integer 7,44,255,2,0,0,0,0,0,255 float",
-                                                 "1 10 integer 7,44,255,2,0,0,0,0,0,255 float",
-                                                 "1 10 integer 0,0,0,0,0,0,0,0,0,0 float"}));
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"1\t10\tinteger\t7,44,255,2,0,0,0,0,0,255\tfloat",
+                                                 "1\t10\tinteger\t7,44,255,2,0,0,0,0,0,255\tfloat",
+                                                 "1\t10\tinteger\t0,0,0,0,0,0,0,0,0,0\tfloat"}));
 }
 
 TEST(RangeAndBearing, AKeptMessageStillHoldsItsOwnTick) {
@@ -220,9 +220,9 @@ function step()
   if kept then
     local keys = 0
     for _ in pairs(kept) do keys = keys + 1 end
-    log(tostring(kept ~= m), ' ', tostring(kept_data ~= m.data), ' ', kept.data[1], ' ', kept_data[1], ' ',
-        tostring(kept.range == kept_range), ' ', tostring(getmetatable(kept)), ' ', tostring(getmetatable(kept.data)), ' ',
-        keys, ' ', #kept.data, ' ', m.data[1], ' ', m.data[2])
+    log(tostring(kept ~= m), tostring(kept_data ~= m.data), kept.data[1], kept_data[1],
+        tostring(kept.range == kept_range), tostring(getmetatable(kept)), tostring(getmetatable(kept.data)),
+        keys, #kept.data, m.data[1], m.data[2])
   end
   kept, kept_data, kept_range = m, m.data, m.range
 end
@@ -232,9 +232,9 @@ end
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 4);
   // Step t hears the sender's step t-1 (init: 100); the kept one is step t-2's.
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"true true 100 100 true nil nil 4 10 1 2",
-                                                 "true true 1 1 true nil nil 4 10 2 4",
-                                                 "true true 2 2 true nil nil 4 10 3 6"}));
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"true\ttrue\t100\t100\ttrue\tnil\tnil\t4\t10\t1\t2",
+                                                 "true\ttrue\t1\t1\ttrue\tnil\tnil\t4\t10\t2\t4",
+                                                 "true\ttrue\t2\t2\ttrue\tnil\tnil\t4\t10\t3\t6"}));
 }
 
 TEST(RangeAndBearing, KeptMessagesSurviveTheCollectorsOwnCycles) {
@@ -261,14 +261,14 @@ function step()
     checked = checked + 1
     if kept[k].data[1] ~= first[k] or kept[k].data[2] ~= second[k] or #kept[k].data ~= 10 then wrong = wrong + 1 end
   end
-  if #kept == 150 then log(checked, ' ', wrong, ' ', tostring(kept[1] ~= kept[2]), ' ', tostring(kept[1].data ~= kept[2].data)) end
+  if #kept == 150 then log(checked, wrong, tostring(kept[1] ~= kept[2]), tostring(kept[1].data ~= kept[2].data)) end
 end
 )");
   auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
                                         RabController("send", "send.lua") + RabController("recv", "recv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 152);
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"11325 0 true true"}));  // 1 + 2 + ... + 150 checks
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"11325\t0\ttrue\ttrue"}));  // 1 + 2 + ... + 150 checks
 }
 
 TEST(RangeAndBearing, SetDataErrors) {
@@ -318,7 +318,7 @@ function init()
   local proxy = setmetatable({}, {__index = function(_, i) reads = reads + 1; return 3 * i end,
                                   __len = function() return 10 end})
   rab.set_data(proxy)
-  log(reads, ' ', math.type(2^53 + 1), ' ', math.type(9007199254740993))
+  log(reads, math.type(2^53 + 1), math.type(9007199254740993))
   rab.set_data({9007199254740993, -9007199254740995, math.mininteger, math.maxinteger, 255.0, -0.5, 1e300,
                 2^53, -300, 44.7})
 end
@@ -326,7 +326,7 @@ function step() end
 )");
   auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "conv"), RabController("conv", "conv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"10 float integer"}));
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"10\tfloat\tinteger"}));
   const double as_read[] = {9007199254740993.0, -9007199254740995.0, -9223372036854775808.0, 9223372036854775807.0,
                             255.0, -0.5, 1e300, 9007199254740992.0, -300.0, 44.7};
   std::vector<int> want;
@@ -373,15 +373,15 @@ TEST(RangeAndBearing, StaleEntriesBecomeNil) {
   d.Write("go.lua", "function init() robot.wheels.set_velocity(20, 20) end\nfunction step() end\n");
   d.Write("recv.lua",
           "function init() end\n"
-          "function step() log(#robot.range_and_bearing, ' ', tostring(robot.range_and_bearing[2] == nil)) end\n");
+          "function step() log(#robot.range_and_bearing, tostring(robot.range_and_bearing[2] == nil)) end\n");
   // r hears a (still) and b, which drives away at 20 cm/s from 0.9 m: out of 1 m in < 1 s.
   auto ls = LoadLogged(d, RabExperiment(Bot("r", 0, 0, 0, "recv", "rab_range=\"1\"") + Bot("a", 0, 0.5, 0, "s", "rab_range=\"1\"") +
                                             Bot("b", 0.9, 0, 0, "go", "rab_range=\"1\""),
                                         RabController("recv", "recv.lua") + RabController("s", "s.lua") + RabController("go", "go.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 15);
-  EXPECT_EQ(ls->lines.front(), "2 false");
-  EXPECT_EQ(ls->lines.back(), "1 true");
+  EXPECT_EQ(ls->lines.front(), "2\tfalse");
+  EXPECT_EQ(ls->lines.back(), "1\ttrue");
 }
 
 TEST(RangeAndBearing, PacketDropStatistics) {

@@ -79,10 +79,11 @@ class Snapshot : public ::testing::Test {
     ASSERT_TRUE(Recording::Read(dir_.path() + "/recording.bin", &rec_, &error)) << error;
   }
 
-  Image Render(size_t frame, int trail, int size = 400) {
+  Image Render(size_t frame, int trail, int size = 400, bool labels = false) {
     SnapshotOptions opt;
     opt.size = size;
     opt.trail_ticks = trail;
+    opt.labels = labels;
     std::string png, error;
     Image img;
     EXPECT_TRUE(RenderSnapshotPng(rec_, frame, opt, &png, &error)) << error;
@@ -103,6 +104,27 @@ bool Near(Color c, int r, int g, int b, int tol = 2) {
 }
 std::string Str(Color c) {
   return "(" + std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b) + ")";
+}
+
+/// Pixels of the text (black, anti-aliased) in a box of the image: darker than mid-grey.
+int DarkPixels(const Image& img, double x0, double y0, double x1, double y1) {
+  int dark = 0;
+  for (double y = y0; y < y1; y += 0.5 / img.px_per_m)
+    for (double x = x0; x < x1; x += 0.5 / img.px_per_m) dark += Near(img.At(x, y), 0, 0, 0, 128);
+  return dark;
+}
+
+TEST_F(Snapshot, LabelsShowTheTickTopLeftAndEachRobotsIdBesideIt) {
+  size_t last = rec_.FrameCount() - 1;
+  RecordedRobot ghost = rec_.Robot(last, 1);
+  Image plain = Render(last, 0, 800, false), labelled = Render(last, 0, 800, true);
+  // The tick: the top-left corner (white floor there) holds text only with labels.
+  EXPECT_EQ(DarkPixels(plain, -1.0, 1.3, -0.3, 1.5), 0);
+  EXPECT_GT(DarkPixels(labelled, -1.0, 1.3, -0.3, 1.5), 20);
+  // The ghost's id, up and to the right of its body.
+  const double r = rec_.scene().robot_radius;
+  EXPECT_EQ(DarkPixels(plain, ghost.x + r, ghost.y + r, ghost.x + 5 * r, ghost.y + 2.5 * r), 0);
+  EXPECT_GT(DarkPixels(labelled, ghost.x + r, ghost.y + r, ghost.x + 5 * r, ghost.y + 2.5 * r), 10);
 }
 
 TEST_F(Snapshot, ImageKeepsTheArenaAspect) {

@@ -1,0 +1,15 @@
+// `require` reports the files it loads, so a run's inputs include every module its
+// controllers and loop functions use (summary.json's "inputs").
+#pragma once
+
+struct lua_State;
+
+namespace essaim {
+
+class InputFiles;
+
+/// Wraps package.searchers[2] (Lua files on package.path, the sandbox's text-only one
+/// included): each module file it finds is added to `inputs` as a "module". Null: nothing.
+void RecordRequiredFiles(lua_State* L, InputFiles* inputs);
+
+}  // namespace essaim
