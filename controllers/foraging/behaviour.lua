@@ -203,6 +203,41 @@ local function color_of(st)
   return M.COLORS.to_source
 end
 
+-- Battery bookkeeping at the nest and away from it (report 6.2.2, listings 6.2, 6.13).
+--
+-- mu is judged at every return to the nest, as the report's text has it ("constamment
+-- réévalué": lower after a surplus, higher after a deficit), not only after the battery forced
+-- the return, as its listing 6.13 does: a robot that only mines the near source never runs its
+-- battery low, so its mu would stay at the too cautious INIT_BATT_SEC and send it home halfway
+-- to every far source it tries (the far source then scores nothing).
+local function track_battery(st, p, place, dist_nest)
+  local cfg = st.cfg
+  if place == "nest" then
+    if st.back_for_battery or st.away then
+      -- The nest may already have refilled the battery this step: judge the return on the
+      -- lower of this step's and the previous step's readings.
+      local leftover = math.min(p.battery, st.battery_prev or p.battery)
+      st.mu = battery.update_safety(st.mu, leftover, cfg.IDEAL_NEST_BATT,
+                                    cfg.BATT_GAIN_DOWN, cfg.BATT_GAIN_UP, cfg.MIN_SAFETY)
+      st.back_for_battery = false
+    end
+    st.battery_leave = p.battery
+    st.away = false
+    return
+  end
+  if dist_nest > cfg.nest_radius + cfg.SOURCE_MARGIN then
+    st.away = true           -- clear of the nest: the next arrival is a return
+  end
+  local was = st.back_for_battery
+  st.back_for_battery = was
+    or battery.must_go_home(p.battery, st.mu, cfg.BATT_BY_STEP, dist_nest, cfg.BASE_SPEED,
+                            cfg.IDEAL_NEST_BATT)
+  -- a miner's return is noted where its source is given up (mine)
+  if st.back_for_battery and not was and st.mode == "explore" then
+    M.note_decision(st, "battery")
+  end
+end
+
 --- One control step: percepts in, actions out.
 function M.step(st, p)
   local cfg = st.cfg
@@ -214,26 +249,7 @@ function M.step(st, p)
   local dist_nest = geometry.distance(p.x, p.y, cfg.nest_x, cfg.nest_y)
   local see, inside = ground.read(p.ground)
   local place = ground.classify(see, dist_nest, cfg.nest_radius, cfg.NEST_MARGIN, cfg.SOURCE_MARGIN)
-
-  if place == "nest" then
-    -- mu is judged at every return to the nest, as the report's text has it ("constamment
-    -- réévalué": lower after a surplus, higher after a deficit), not only after the battery
-    -- forced the return, as its listing 6.13 does: a robot that only mines the near source
-    -- never runs its battery low, so its mu would stay at the too cautious INIT_BATT_SEC and
-    -- send it home halfway to every far source it tries (the far source then scores nothing).
-    if st.back_for_battery or st.away then
-      -- The nest may already have refilled the battery this step: judge the return on the
-      -- lower of this step's and the previous step's readings.
-      local leftover = math.min(p.battery, st.battery_prev or p.battery)
-      st.mu = battery.update_safety(st.mu, leftover, cfg.IDEAL_NEST_BATT,
-                                    cfg.BATT_GAIN_DOWN, cfg.BATT_GAIN_UP, cfg.MIN_SAFETY)
-      st.back_for_battery = false
-    end
-    st.battery_leave = p.battery
-    st.away = false
-  elseif dist_nest > cfg.nest_radius + cfg.SOURCE_MARGIN then
-    st.away = true           -- clear of the nest: the next arrival is a return
-  end
+  track_battery(st, p, place, dist_nest)
 
   local found = detect_source(st, p, place, inside)
   local got = listen(st, p.messages)
@@ -241,17 +257,6 @@ function M.step(st, p)
   local message = nil
   local k = comm.index_to_broadcast(p.tick, #st.sources)
   if k then message = comm.encode(st.sources[k].x, st.sources[k].y) end
-
-  if place ~= "nest" then
-    local was = st.back_for_battery
-    st.back_for_battery = was
-      or battery.must_go_home(p.battery, st.mu, cfg.BATT_BY_STEP, dist_nest, cfg.BASE_SPEED,
-                              cfg.IDEAL_NEST_BATT)
-    -- a miner's return is noted where its source is given up (mine)
-    if st.back_for_battery and not was and st.mode == "explore" then
-      M.note_decision(st, "battery")
-    end
-  end
 
   -- speed: slower random speed after a hit (annex 4.B)
   local prox, prox_angle = motion.strongest(p.proximity)
