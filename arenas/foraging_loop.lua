@@ -17,13 +17,23 @@
 --   mining_led="255,255,0"                     optional: the LED colour a controller shows while
 --       it heads to a source it means to mine; a robot showing it before it ever touched a source
 --       must have been told where one is (range-and-bearing): it is listed in informed_robots.
+--   decisions="off"                            optional: "series" watches the decisions of a
+--       controller that publishes them (controllers/foraging.lua: globals decision_count and
+--       decision) and adds them to the timeseries and the metrics; "log" also logs one line per
+--       decision: "decision TICK ROBOT SOURCE WHY battery=B mu=M" (SOURCE: the source headed for,
+--       "nest" when going home). Off, nothing is read from the controllers.
 --
 -- Metrics (post_experiment, written as metrics.json):
 --   ticks, robots, trips_total, trips_per_source {name: n}, trips_per_robot {id: n},
 --   trips_per_robot_mean, sources [{name, x, y, radius, trips, discovered_tick, discovered_by}],
 --   discovered_count, first_discovery_tick, all_discovered_tick,
 --   dead_robots [{robot, tick}], dead_count, dead_fraction,
---   first_touch_by_robot {id: {source, tick}}, informed_robots [id] (only with mining_led).
+--   first_touch_by_robot {id: {source, tick}}, informed_robots [id] (only with mining_led);
+--   with decisions on: chose_greedy {name: n}, chose_epsilon {name: n} (picks at the nest),
+--   started_found, started_message (explorers turned miners), battery_returns.
+-- Timeseries columns: tick, trips_<name>..., trips_total, alive; with decisions on also
+--   heading_<name>... (robots now heading for each source), chose_greedy_<name>...,
+--   chose_epsilon_<name>..., battery_returns (cumulative).
 -- A key that has no value is absent: an undiscovered source has no discovered_tick /
 -- discovered_by; first_discovery_tick is absent when nothing was discovered, all_discovered_tick
 -- when some source never was; a robot that never touched a source is absent from
@@ -39,6 +49,7 @@ local cfg = nil            -- parsed attributes, see setup()
 local robots_info = {}     -- by robot index: {touched, trips, first_touch, dead_tick, informed_tick}
 local deaths = {}          -- {robot, tick} in order of death
 local trips_total = 0
+local watch = nil          -- decisions seen, when the decisions attribute asks for them
 
 local function as_array(t) return setmetatable(t, { __jsontype = "array" }) end
 local function as_object(t) return setmetatable(t, { __jsontype = "object" }) end
@@ -96,6 +107,10 @@ local function setup()
   c.every = math.tointeger(tonumber(p.timeseries_every or "100") or 100) or 100
   c.robot_radius = tonumber(p.robot_radius or "") or FOOTBOT_RADIUS
   c.mining_led = parse_color(p.mining_led)
+  c.decisions = p.decisions or "off"
+  if c.decisions ~= "off" and c.decisions ~= "series" and c.decisions ~= "log" then
+    error("decisions: expected off, series or log, got '" .. c.decisions .. "'", 0)
+  end
   cfg = c
   return c
 end
@@ -114,9 +129,84 @@ function floor_color(x, y)
   return 255, 255, 255
 end
 
+-- Decisions ----------------------------------------------------------------------------------------
+
+local REASONS = { "greedy", "epsilon", "found", "message", "battery", "trip" }
+
+local function new_watch()
+  local w = { seen = {}, heading = {}, count = {} }
+  for _, why in ipairs(REASONS) do
+    w.count[why] = { nest = 0 }
+    for _, s in ipairs(cfg.sources) do w.count[why][s.name] = 0 end
+  end
+  return w
+end
+
+--- Name of the source nearest to (x, y) m, within twice its radius; nil when none is.
+local function source_at(x, y)
+  if x == nil or y == nil then return nil end
+  local best, best_d2 = nil, math.huge
+  for _, s in ipairs(cfg.sources) do
+    local dx, dy = x - s.x, y - s.y
+    local d2 = dx * dx + dy * dy
+    if d2 < best_d2 and d2 <= 4 * s.radius * s.radius then best, best_d2 = s.name, d2 end
+  end
+  return best
+end
+
+--- Reads robot i's new decision, if it took one since last seen.
+local function watch_robot(i, r)
+  local n = r:lua_global("decision_count")
+  if n == nil or n == watch.seen[i] then return end
+  watch.seen[i] = n
+  local d = r:lua_global("decision")
+  if type(d) ~= "table" or d.why == nil then return end
+  local name = source_at(d.x, d.y)
+  watch.heading[i] = name
+  local per = watch.count[d.why]
+  if per then
+    local key = name or "nest"
+    per[key] = (per[key] or 0) + 1
+  end
+  if cfg.decisions == "log" then
+    say(string.format("decision %d %s %s %s battery=%.1f mu=%.2f", d.tick or 0, r.id,
+                      name or "nest", d.why, d.battery or -1, d.mu or -1))
+  end
+end
+
+local function count_heading(name)
+  local n = 0
+  for i, r in ipairs(experiment.robots) do
+    if watch.heading[i] == name and r:alive() then n = n + 1 end
+  end
+  return n
+end
+
+local function decision_columns(row)
+  for _, s in ipairs(cfg.sources) do row[#row + 1] = { "heading_" .. s.name, count_heading(s.name) } end
+  for _, why in ipairs({ "greedy", "epsilon" }) do
+    for _, s in ipairs(cfg.sources) do
+      row[#row + 1] = { "chose_" .. why .. "_" .. s.name, watch.count[why][s.name] }
+    end
+  end
+  row[#row + 1] = { "battery_returns", watch.count.battery.nest }
+end
+
+local function decision_metrics(m)
+  for _, why in ipairs({ "greedy", "epsilon" }) do
+    local per = as_object({})
+    for _, s in ipairs(cfg.sources) do per[s.name] = watch.count[why][s.name] end
+    m["chose_" .. why] = per
+  end
+  m.started_found = watch.count.found.nest
+  m.started_message = watch.count.message.nest
+  m.battery_returns = watch.count.battery.nest
+end
+
 function init()
   cfg = nil
   setup()
+  watch = cfg.decisions ~= "off" and new_watch() or nil
   robots_info, deaths, trips_total = {}, {}, 0
   for _, s in ipairs(cfg.sources) do
     s.trips, s.discovered_tick, s.discovered_by = 0, nil, nil
@@ -139,6 +229,7 @@ local function timeseries_row(tick)
   for _, s in ipairs(cfg.sources) do row[#row + 1] = { "trips_" .. s.name, s.trips } end
   row[#row + 1] = { "trips_total", trips_total }
   row[#row + 1] = { "alive", count_alive() }
+  if watch then decision_columns(row) end
   experiment.timeseries(row)
 end
 
@@ -169,6 +260,7 @@ function pre_step()
            and shows_mining_led(r) then
           info.informed_tick = tick
         end
+        if watch then watch_robot(i, r) end
         local x, y = r:position()
         -- inside() written out, and a numeric for: this runs for every robot every tick.
         for k = 1, #sources do
@@ -246,6 +338,7 @@ function post_experiment()
   for _, d in ipairs(deaths) do
     m.dead_robots[#m.dead_robots + 1] = as_object({ robot = d.robot, tick = d.tick })
   end
+  if watch then decision_metrics(m) end
   if cfg.mining_led then
     m.informed_robots = as_array({})
     for i, r in ipairs(robots) do

@@ -16,13 +16,29 @@ local config = require "foraging.config"
 local behaviour = require "foraging.behaviour"
 local sensing = require "foraging.sensing"
 
-local cfg, state, tick, shown_color
+local cfg, state, tick, shown_color, shown_decisions
+
+-- The last decision, for loop functions that watch them (arenas/foraging_loop.lua,
+-- decisions="series" or "log"): decision_count counts them, decision is the last one,
+-- {tick, why, x, y, battery, mu}: why as in behaviour.note_decision, x, y the source headed for (m;
+-- nil when heading home). Written only when a decision is taken, so it costs nothing per step.
+decision_count, decision = 0, nil
+
+local function publish_decision()
+  local target = state.target and state.sources[state.target]
+  local heading = target and not state.going_home
+  decision = { tick = tick, why = state.why, battery = state.battery_prev, mu = state.mu,
+               x = heading and target.x / 100 or nil, y = heading and target.y / 100 or nil }
+  decision_count = state.decisions
+  shown_decisions = state.decisions
+end
 
 function init()
   cfg = config.load(robot.params)
   state = behaviour.new(cfg, robot.random)
   tick = 0
   shown_color = nil
+  shown_decisions, decision_count, decision = 0, 0, nil
   if robot.distance_scanner then
     robot.distance_scanner.enable()
     robot.distance_scanner.set_rpm(cfg.SCANNER_RPM)
@@ -44,6 +60,7 @@ function step()
     robot.leds.set_all_colors(actions.color)
     shown_color = actions.color
   end
+  if state.decisions ~= shown_decisions then publish_decision() end
 end
 
 function reset()

@@ -13,10 +13,11 @@ function M.must_go_home(battery, mu, batt_per_step, distance, speed, ideal)
   return battery - M.needed(mu, batt_per_step, distance, speed) < ideal
 end
 
---- New safety coefficient after a return home for the battery with `leftover` units left
---- (listing 6.13): a surplus above `ideal` lowers mu by gain_down per unit, a deficit raises it by
---- gain_up per unit. mu never drops below `floor` (the report has no floor; without one, a few
---- lucky returns could drive mu to zero or below and the robot would never come back).
+--- New safety coefficient after a return home with `leftover` units left (listing 6.13): a
+--- surplus above `ideal` lowers mu by gain_down per unit, a deficit raises it by gain_up per unit.
+--- mu never drops below `floor` (the report has no floor; judged at every return, as the
+--- behaviour does, the surpluses of trips to a near source would drive mu to zero, and the robot
+--- would then head for a far source with no margin at all).
 function M.update_safety(mu, leftover, ideal, gain_down, gain_up, floor)
   local gap = leftover - ideal
   if gap > 0 then

@@ -50,7 +50,10 @@ function M.new(cfg, random)
     expl = scanner.new(cfg.EXPL_DIR_NUMBER, cfg.FREE_DISTANCE),
     battery_prev = nil,      -- battery at the previous step
     battery_leave = 100,     -- battery when the robot last left the nest
+    away = false,            -- left the nest since the last return
     trips = 0,               -- trips this robot believes it made
+    decisions = 0,           -- decisions taken so far (see note_decision)
+    why = nil,               -- reason of the last decision
   }
   for _, s in ipairs(cfg.known_sources) do
     sources.add(st.sources, s[1], s[2], cfg.ORGN_SRC_DST, cfg.INIT_SCORE)
@@ -58,9 +61,21 @@ function M.new(cfg, random)
   if #st.sources > 0 then
     -- Omniscient mode (report 7.1.1): mine the known sources from the first step.
     st.mode = "mine"
-    st.target = sources.choose(st.sources, cfg.EPSILONGREED, random.uniform)
+    local why
+    st.target, why = sources.choose(st.sources, cfg.EPSILONGREED, random.uniform)
+    M.note_decision(st, why)
   end
   return st
+end
+
+--- Records a decision and its reason, so that the controller can show it to the loop functions
+--- (how robots pick their sources is then seen, not guessed). Reasons: "greedy" and "epsilon"
+--- (the epsilon-greedy draw at the nest), "found" (a source of its own: mine), "message" (a
+--- source heard of: mine), "battery" (home to refill, the source given up), "trip" (reached the
+--- source, home with the load). The target is st.target for the first two, the nest otherwise.
+function M.note_decision(st, why)
+  st.decisions = st.decisions + 1
+  st.why = why
 end
 
 -- Movement -----------------------------------------------------------------------------------------
@@ -132,17 +147,18 @@ end
 
 -- States --------------------------------------------------------------------------------------------
 
-local function start_mining(st)
+local function start_mining(st, why)
   st.mode = "mine"
   st.going_home = true      -- refill at the nest, then pick a source (listing 6.6)
   st.turn_to = nil
+  M.note_decision(st, why)
 end
 
 local function explore(st, p, found, got, speed)
   if found then
-    start_mining(st)
+    start_mining(st, "found")
   elseif got and st.random.uniform() < st.cfg.MINE_PROB_WHEN_SRC_RECVD then
-    start_mining(st)
+    start_mining(st, "message")
   end
   if st.mode == "explore" and not st.back_for_battery then
     return gas_like(st, p, speed)
@@ -160,14 +176,18 @@ local function mine(st, p, place, speed)
     sources.record_trip(src, spent)
     st.trips = st.trips + 1
     st.going_home = true
+    M.note_decision(st, "trip")
   elseif place == "nest" and st.going_home then
     -- back home: choose the next source (epsilon-greedy)
-    st.target = sources.choose(st.sources, cfg.EPSILONGREED, st.random.uniform)
+    local why
+    st.target, why = sources.choose(st.sources, cfg.EPSILONGREED, st.random.uniform)
     st.going_home = st.target == nil
+    if why then M.note_decision(st, why) end
   elseif st.back_for_battery and not st.going_home then
     -- the battery forces the robot home before it reached the source: a trip for nothing
-    if src ~= nil then sources.record_abort(src, spent) end
+    if src ~= nil then sources.record_abort(src) end
     st.going_home = true
+    M.note_decision(st, "battery")
   end
   if st.going_home or st.target == nil then
     return go_to(st, p, cfg.nest_x, cfg.nest_y, cfg.nest_radius, speed)
@@ -183,6 +203,41 @@ local function color_of(st)
   return M.COLORS.to_source
 end
 
+-- Battery bookkeeping at the nest and away from it (report 6.2.2, listings 6.2, 6.13).
+--
+-- mu is judged at every return to the nest, as the report's text has it ("constamment
+-- réévalué": lower after a surplus, higher after a deficit), not only after the battery forced
+-- the return, as its listing 6.13 does: a robot that only mines the near source never runs its
+-- battery low, so its mu would stay at the too cautious INIT_BATT_SEC and send it home halfway
+-- to every far source it tries (the far source then scores nothing).
+local function track_battery(st, p, place, dist_nest)
+  local cfg = st.cfg
+  if place == "nest" then
+    if st.back_for_battery or st.away then
+      -- The nest may already have refilled the battery this step: judge the return on the
+      -- lower of this step's and the previous step's readings.
+      local leftover = math.min(p.battery, st.battery_prev or p.battery)
+      st.mu = battery.update_safety(st.mu, leftover, cfg.IDEAL_NEST_BATT,
+                                    cfg.BATT_GAIN_DOWN, cfg.BATT_GAIN_UP, cfg.MIN_SAFETY)
+      st.back_for_battery = false
+    end
+    st.battery_leave = p.battery
+    st.away = false
+    return
+  end
+  if dist_nest > cfg.nest_radius + cfg.SOURCE_MARGIN then
+    st.away = true           -- clear of the nest: the next arrival is a return
+  end
+  local was = st.back_for_battery
+  st.back_for_battery = was
+    or battery.must_go_home(p.battery, st.mu, cfg.BATT_BY_STEP, dist_nest, cfg.BASE_SPEED,
+                            cfg.IDEAL_NEST_BATT)
+  -- a miner's return is noted where its source is given up (mine)
+  if st.back_for_battery and not was and st.mode == "explore" then
+    M.note_decision(st, "battery")
+  end
+end
+
 --- One control step: percepts in, actions out.
 function M.step(st, p)
   local cfg = st.cfg
@@ -194,18 +249,7 @@ function M.step(st, p)
   local dist_nest = geometry.distance(p.x, p.y, cfg.nest_x, cfg.nest_y)
   local see, inside = ground.read(p.ground)
   local place = ground.classify(see, dist_nest, cfg.nest_radius, cfg.NEST_MARGIN, cfg.SOURCE_MARGIN)
-
-  if place == "nest" then
-    if st.back_for_battery then
-      -- The nest may already have refilled the battery this step: judge the return on the
-      -- lower of this step's and the previous step's readings.
-      local leftover = math.min(p.battery, st.battery_prev or p.battery)
-      st.mu = battery.update_safety(st.mu, leftover, cfg.IDEAL_NEST_BATT,
-                                    cfg.BATT_GAIN_DOWN, cfg.BATT_GAIN_UP, cfg.MIN_SAFETY)
-      st.back_for_battery = false
-    end
-    st.battery_leave = p.battery
-  end
+  track_battery(st, p, place, dist_nest)
 
   local found = detect_source(st, p, place, inside)
   local got = listen(st, p.messages)
@@ -213,12 +257,6 @@ function M.step(st, p)
   local message = nil
   local k = comm.index_to_broadcast(p.tick, #st.sources)
   if k then message = comm.encode(st.sources[k].x, st.sources[k].y) end
-
-  if place ~= "nest" then
-    st.back_for_battery = st.back_for_battery
-      or battery.must_go_home(p.battery, st.mu, cfg.BATT_BY_STEP, dist_nest, cfg.BASE_SPEED,
-                              cfg.IDEAL_NEST_BATT)
-  end
 
   -- speed: slower random speed after a hit (annex 4.B)
   local prox, prox_angle = motion.strongest(p.proximity)

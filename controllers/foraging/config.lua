@@ -39,7 +39,8 @@ M.DEFAULTS = {
   BATT_GAIN_UP = 0.1,         -- mu increase per unit of deficit at the nest (listing 6.13)
   NEST_MARGIN = 20,           -- cm: black within NEST_RADIUS + this of the nest centre is the nest (70)
   SOURCE_MARGIN = 40,         -- cm: black beyond NEST_RADIUS + this is a source (90)
-  MIN_SAFETY = 1,             -- mu never goes below this (see battery.lua)
+  MIN_SAFETY = 10,            -- mu never goes below this (see battery.lua): at 10 steps per
+                              -- second, mu = 10 makes needed() a straight-line return's cost
 
   -- arena
   NEST_X = 0, NEST_Y = 0, NEST_RADIUS = 0.5,   -- metres

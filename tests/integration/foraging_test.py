@@ -9,7 +9,10 @@ fixed seed; the assertions are about mechanisms, not performance:
   * in omniscient mode (known_sources) robots mine from the first tick;
   * a controller that never goes home dies when its battery runs out: 100 units / 0.2 per tick
     = tick 500;
-  * same file, same seed: the same metrics.
+  * same file, same seed: the same metrics;
+  * robots that know the sources spread their trips over them, more as the swarm grows, mine the
+    far ones at the report's drain too, and jam at 60 (a cheap version of docs/foraging.md's
+    targets).
 """
 
 import csv
@@ -225,3 +228,43 @@ def test_a_robot_that_never_goes_home_dies_at_tick_500(essaim, tmp_path):
     rows = {int(r["tick"]): r for r in csv.DictReader((tmp_path / "run" / "timeseries.csv").open())}
     assert int(rows[400]["alive"]) == robots
     assert int(rows[600]["alive"]) == 0
+
+
+# --- how the swarm spreads over the sources (docs/foraging.md) ------------------------------------
+# A cheap version of the targets measured there (10 000 ticks, seeds 1-5, median): fewer ticks and
+# one seed, with margins the full runs keep. A drain is the controller's BATT_BY_STEP and the
+# battery's own discharge together.
+
+def drain_sets(robots, drain):
+    return [f"arena.distribute.entity.quantity={robots}",
+            f"controllers.foraging.params.BATT_BY_STEP={drain}",
+            f"arena.distribute.entity.foot-bot.battery.delta={drain / 100}",
+            "loop_functions.decisions=series"]
+
+
+def spread_run(essaim, tmp_path, robots, drain, ticks=4000):
+    _, m = run(essaim, "foraging_known.argos", tmp_path / f"n{robots}_d{drain}", ticks,
+               sets=drain_sets(robots, drain))
+    check_schema(m, robots, ticks, ["A", "B", "C"])
+    per_source = as_dict(m["trips_per_source"])
+    assert m["trips_total"] > 0, m
+    return m, {k: v / m["trips_total"] for k, v in per_source.items()}
+
+
+def test_the_swarm_spreads_over_the_sources_more_as_it_grows(essaim, tmp_path):
+    m10, share10 = spread_run(essaim, tmp_path, 10, 0.1)
+    m30, share30 = spread_run(essaim, tmp_path, 30, 0.1)
+    assert share10["A"] <= 0.85, share10
+    assert share30["A"] < share10["A"], (share10, share30)
+    # every source was picked by the epsilon-greedy draw, both ways
+    for m in (m10, m30):
+        assert sum(m["chose_greedy"].values()) > sum(m["chose_epsilon"].values()) > 0, m
+        assert all(m["chose_epsilon"][s] > 0 for s in ("B", "C")), m["chose_epsilon"]
+
+
+def test_far_sources_are_mined_at_the_reports_drain_and_the_jam_stays(essaim, tmp_path):
+    m10, share10 = spread_run(essaim, tmp_path, 10, 0.2)
+    assert share10["B"] + share10["C"] >= 0.05, share10
+    m60, _ = spread_run(essaim, tmp_path, 60, 0.2)
+    assert m60["trips_per_robot_mean"] < m10["trips_per_robot_mean"] / 3, \
+        (m10["trips_per_robot_mean"], m60["trips_per_robot_mean"])

@@ -17,7 +17,8 @@ local function setup(n, params)
   exp.timeseries = function(row) rows[#rows + 1] = row end
   local states = {}
   for i = 1, n do
-    local s = { x = 1, y = 1, charge = 1, alive = true, led = { 0, 0, 0 }, refills = 0 }
+    local s = { x = 1, y = 1, charge = 1, alive = true, led = { 0, 0, 0 }, refills = 0,
+                globals = {}, reads = 0 }
     states[i] = s
     local h = { id = "fb" .. (i - 1), index = i }
     function h.position() return s.x, s.y end
@@ -26,6 +27,7 @@ local function setup(n, params)
     function h.alive() return s.alive end
     function h.kill() s.alive = false end
     function h.led() return s.led[1], s.led[2], s.led[3] end
+    function h.lua_global(_, name) s.reads = s.reads + 1; return s.globals[name] end
     exp.robots[i] = h
   end
   local env = setmetatable({ experiment = exp, log = function(m) logs[#logs + 1] = m end },
@@ -227,7 +229,64 @@ t.test("informed robots: mining LED shown before touching any source", function(
   t.ok(json(m):find('"informed_robots":%["fb1"%]'))
 end)
 
+local function with(over)
+  local params = {}
+  for k, v in pairs(PARAMS) do params[k] = v end
+  for k, v in pairs(over) do params[k] = v end
+  return params
+end
+
+-- What controllers/foraging.lua publishes when it takes a decision.
+local function decide(s, tick, why, x, y)
+  s.globals.decision_count = (s.globals.decision_count or 0) + 1
+  s.globals.decision = { tick = tick, why = why, x = x, y = y, battery = 50, mu = 12.5 }
+end
+
+t.test("decisions off: nothing is read from the controllers", function()
+  local w = setup(2)
+  decide(w.s[1], 1, "greedy", -2.5, 0)
+  w.tick(20)
+  t.eq(w.s[1].reads + w.s[2].reads, 0)
+  local m = w.env.post_experiment()
+  t.eq(m.chose_greedy, nil); t.eq(#w.rows[1], 6)
+end)
+
+t.test("decisions: counted per source and reason, heading robots in the timeseries", function()
+  local w = setup(3, with({ decisions = "series" }))
+  decide(w.s[1], 1, "greedy", -2.5, 0)         -- A
+  decide(w.s[2], 1, "epsilon", 4.0, 3.5)       -- B
+  decide(w.s[3], 1, "greedy", -2.4, 0.2)       -- A (a robot's own estimate of it)
+  w.tick(5)
+  decide(w.s[2], 6, "battery")                 -- B given up: home
+  w.tick(1)
+  decide(w.s[2], 7, "epsilon", 4.2, -4.2)      -- C
+  w.tick(4)
+  local row = {}
+  for _, kv in ipairs(w.rows[1]) do row[kv[1]] = kv[2] end
+  t.eq(row.heading_A, 2); t.eq(row.heading_B, 0); t.eq(row.heading_C, 1)
+  t.eq(row.chose_greedy_A, 2); t.eq(row.chose_epsilon_B, 1); t.eq(row.chose_epsilon_C, 1)
+  t.eq(row.battery_returns, 1)
+  local m = w.env.post_experiment()
+  t.eq(m.chose_greedy.A, 2); t.eq(m.chose_greedy.B, 0); t.eq(m.chose_epsilon.C, 1)
+  t.eq(m.battery_returns, 1); t.eq(m.started_message, 0)
+  t.ok(json(m):find('"chose_epsilon":{'), "an object")
+  t.eq(#w.logs, 3, "series only: the summary alone is logged")
+end)
+
+t.test("decisions log: one line per decision, read once", function()
+  local w = setup(1, with({ decisions = "log" }))
+  decide(w.s[1], 3, "message")
+  w.tick(3)
+  decide(w.s[1], 9, "greedy", 4.2, -4.2)
+  w.tick(3)
+  t.eq(w.logs[1], "decision 3 fb0 nest message battery=50.0 mu=12.50")
+  t.eq(w.logs[2], "decision 9 fb0 C greedy battery=50.0 mu=12.50")
+  t.eq(#w.logs, 2)
+  t.eq(w.env.post_experiment().started_message, 1)
+end)
+
 t.test("bad parameters raise clear errors", function()
+  t.raises(function() setup(1, with({ decisions = "yes" })) end, "decisions")
   t.raises(function() setup(1, { nest = "0,0", sources = "" }) end, "nest")
   t.raises(function() setup(1, { nest = "0,0,0.5", sources = "A:1,2" }) end, "sources")
   t.raises(function() setup(1, { nest = "0,0,0.5", sources = "A:1,2,x" }) end, "sources")
