@@ -46,8 +46,9 @@ double WrapYaw(double yaw) {
   return a <= -M_PI ? a + 2 * M_PI : a;
 }
 
-/// A one-dimensional array of n items. Shape and strides are given: pybind11 2.10's
-/// array_t(count) under NumPy 2 gives an array whose items all share one address.
+/// A one-dimensional array of n items. Shape and strides are given: with pybind11 2.10 and
+/// NumPy 2, array_t(count) filled through mutable_unchecked read back the last value
+/// written in every item (battery() and alive() gave every robot the last robot's).
 template <class T>
 py::array_t<T> Vector(size_t n) {
   return py::array_t<T>(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)},

@@ -1,6 +1,8 @@
 """plot.py on any run or sweep: a run's time series, any column of a sweep over another,
 the runs' time series overlaid, and one-line errors naming what exists; the sweep's
 timeseries.parquet."""
+import contextlib
+import io
 import shutil
 import subprocess
 import sys
@@ -24,9 +26,29 @@ end
 """
 
 
+PLOT = load_module("plot")
+
+
 def plot(*args):
-    return subprocess.run([sys.executable, str(SCRIPTS / "plot.py"), *map(str, args)],
-                          capture_output=True, text=True, timeout=120)
+    """plot.py's main in this process (one interpreter start per call would cost seconds),
+    with its exit status and stderr as a subprocess would give them."""
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        try:
+            rc = PLOT.main([str(a) for a in args])
+        except SystemExit as e:  # what the interpreter does with it
+            if isinstance(e.code, str):
+                print(e.code, file=err)
+            rc = 1 if isinstance(e.code, str) else e.code
+    return subprocess.CompletedProcess(args, rc, "", err.getvalue())
+
+
+def test_errors_leave_no_traceback(tmp_path):
+    r = subprocess.run([sys.executable, str(SCRIPTS / "plot.py"), str(tmp_path)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 1 and r.stderr.strip().splitlines() == [
+        f"plot: {tmp_path}: neither a sweep folder (results.parquet) nor a run folder "
+        "(timeseries.csv, summary.json); it holds: nothing"]
 
 
 def one_line_error(r, *needles):
