@@ -32,16 +32,14 @@ int RecordingSearcher(lua_State* L) {
 
 void RecordRequiredFiles(lua_State* L, InputFiles* inputs) {
   if (!inputs) return;
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "searchers");
-  if (lua_istable(L, -1) && lua_rawgeti(L, -1, 2) == LUA_TFUNCTION) {
+  const int top = lua_gettop(L);
+  if (lua_getglobal(L, "package") == LUA_TTABLE && lua_getfield(L, -1, "searchers") == LUA_TTABLE &&
+      lua_rawgeti(L, -1, 2) == LUA_TFUNCTION) {
     lua_pushlightuserdata(L, inputs);
     lua_pushcclosure(L, RecordingSearcher, 2);
     lua_rawseti(L, -2, 2);
-  } else {
-    lua_pop(L, 1);
   }
-  lua_pop(L, 2);
+  lua_settop(L, top);
 }
 
 }  // namespace essaim

@@ -85,6 +85,9 @@ class World {
   const Model& model;
   SimOptions options;
   uint64_t tick = 0;
+  /// Every file the run read, modules loaded by `require` included. Before the Lua states,
+  /// whose `require` adds to it, so that it outlives them.
+  std::shared_ptr<InputFiles> inputs;
   PhysicsWorld physics;
   EntityStore entities;
   std::vector<RobotState> robots;
@@ -96,8 +99,6 @@ class World {
   std::vector<ControllerError> controller_errors;
   /// Filled when the run ends (EndRun), or by `essaim check`: see FindUnreadParams.
   std::vector<UnreadParam> unread_params;
-  /// Every file the run read, modules loaded by `require` included.
-  std::shared_ptr<InputFiles> inputs;
   std::string failure;         // set when the run must stop (strict, loop-function error)
   bool finished_by_loop_functions = false;
   int threads = 1;

@@ -77,3 +77,13 @@ def test_a_failure_summary_lists_the_files_read_so_far(tmp_path):
     assert s["status"] == "failed"
     assert ("controller", "c.lua") in by_role(s) and ("arena", "x.argos") in by_role(s)
     assert "run_identity" in s
+
+
+def test_a_module_required_in_step_on_several_threads_is_listed_once(tmp_path):
+    lazy = "function init() end\nfunction step() local h = require('lib.helper') robot.wheels.set_velocity(h.speed, 0) end\n"
+    write(tmp_path, {"x.argos": argos(robots=6), "c.lua": lazy, "lib/helper.lua": HELPER})
+    r, s = run(tmp_path, "x.argos", "--threads", "2")
+    assert r.returncode == 0, r.stderr
+    modules = [f for f in s["inputs"] if f["role"] == "module"]
+    assert [os.path.basename(f["path"]) for f in modules] == ["helper.lua"]
+    assert s["run_identity"] == run(tmp_path, "x.argos", "--threads", "1")[1]["run_identity"]
