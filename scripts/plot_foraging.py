@@ -84,7 +84,7 @@ def shares(folders: list[str], out: Path) -> None:
         tpr = df.groupby("robots")["trips_per_robot_mean"].median()
         print(f"drain {drain}: trips per robot (median) " +
               ", ".join(f"{n}: {v:.2f}" for n, v in tpr.items()))
-        ax.set_title(f"BATT_BY_STEP = {drain}")
+        ax.set_title(f"drain {drain} per tick (BATT_BY_STEP = {drain})")
         ax.set_xlabel("robots")
         ax.set_xticks(sorted(df["robots"].unique()))
         ax.set_ylim(0, 100)
