@@ -117,7 +117,8 @@ def epsilon(folder: str, out: Path) -> None:
         ax.set_xlabel("epsilon (EPSILONGREED)")
         ax.grid(alpha=0.3)
     left.legend()
-    fig.suptitle("Epsilon study, sources known, 10 000 ticks (median over seeds, band: IQR)")
+    fig.suptitle("Epsilon study, sources known, 10 000 ticks, the arena's drain "
+                 "(median over seeds, band: IQR)")
     save(fig, out, "epsilon")
 
 
