@@ -105,8 +105,11 @@ function EssaimArenaView(canvas, onSelect) {
       ctx.lineWidth = Math.max(1, r * 0.15); ctx.strokeStyle = "#202020"; ctx.stroke();
       ctx.globalAlpha = 1;
       if (F.ids && r >= 7) {  // ids once robots are big enough to carry them
-        ctx.fillStyle = "#111"; ctx.font = Math.min(14, Math.round(r * 0.8)) + "px system-ui, sans-serif";
+        ctx.font = Math.min(14, Math.round(r * 0.8)) + "px system-ui, sans-serif";
         ctx.textAlign = "center"; ctx.textBaseline = "top";
+        ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255, 255, 255, 0.85)";  // readable on a dark floor too
+        ctx.strokeText(F.ids[i], x, y + r + 2);
+        ctx.fillStyle = "#111";
         ctx.fillText(F.ids[i], x, y + r + 2);
       }
       drawn++;

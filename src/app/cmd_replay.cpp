@@ -19,30 +19,6 @@ namespace essaim {
 
 namespace {
 
-std::string Base64(const std::string& in) {
-  static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((in.size() + 2) / 3 * 4);
-  const auto* p = reinterpret_cast<const unsigned char*>(in.data());
-  size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    unsigned v = (p[i] << 16) | (p[i + 1] << 8) | p[i + 2];
-    out += kAlphabet[v >> 18];
-    out += kAlphabet[(v >> 12) & 63];
-    out += kAlphabet[(v >> 6) & 63];
-    out += kAlphabet[v & 63];
-  }
-  if (i < in.size()) {
-    unsigned v = p[i] << 16;
-    if (i + 1 < in.size()) v |= p[i + 1] << 8;
-    out += kAlphabet[v >> 18];
-    out += kAlphabet[(v >> 12) & 63];
-    out += i + 1 < in.size() ? kAlphabet[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-
 bool IsDirectory(const std::string& path) {
   std::error_code ec;
   return std::filesystem::is_directory(path, ec);
@@ -60,7 +36,7 @@ static std::string ReplayHtml(const Recording& rec, const std::string& recording
   std::string csv;
   std::ifstream in(JoinPath(DirName(recording_path), "timeseries.csv"), std::ios::binary);
   if (in) csv.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return ReplayPage(Base64(rec.bytes()), csv);
+  return ReplayPage(Base64Encode(rec.bytes()), csv);
 }
 
 static int Replay(const std::string& run, std::string out) {

@@ -21,6 +21,8 @@ std::optional<std::vector<double>> ParseVector(const std::string& s, size_t n);
 std::optional<std::pair<double, double>> ParseRange(const std::string& s);
 /// Shortest text that reads back as the same double ("%.17g" trimmed).
 std::string FormatDouble(double v);
+/// Standard base64 (RFC 4648, with padding): bytes into a page or a JSON string.
+std::string Base64Encode(const std::string& bytes);
 /// The candidate closest to `typed` by edit distance, or "" when none is close enough
 /// (leading dashes ignored, so "--tikcs" finds "--ticks"). For "did you mean".
 std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates);

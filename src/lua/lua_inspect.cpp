@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/json.h"
+#include "core/strings.h"
 #include "lua/lua_math_types.h"
 
 namespace essaim {
@@ -80,25 +84,36 @@ struct TreeWalk {
     return out;
   }
 
+  // Keys in a stable order (pairs() order changes from run to run): numbers by value first,
+  // then names.
+  static bool KeyBefore(const std::pair<std::string, Json>& a, const std::pair<std::string, Json>& b) {
+    std::optional<long long> x = ParseInt(a.first), y = ParseInt(b.first);
+    if (x && y) return *x < *y;
+    if (x || y) return x.has_value();
+    return a.first < b.first;
+  }
+
   Json Table(int idx, int depth, bool globals) {
     Json out = Json::object();
     if (!lua_checkstack(L, 4)) return out;
     idx = lua_absindex(L, idx);
-    int shown = 0, more = 0;
+    int more = 0;
+    std::vector<std::pair<std::string, Json>> entries;
     std::string key;
     lua_pushnil(L);
     while (lua_next(L, idx) != 0) {
       bool skip = lua_type(L, -1) == LUA_TFUNCTION || !KeyText(L, -2, &key) ||
                   (globals && IsLibraryGlobal(key.c_str()));
-      if (!skip && (shown >= limits.per_table || budget <= 0)) {
+      if (!skip && (static_cast<int>(entries.size()) >= limits.per_table || budget <= 0)) {
         ++more;
       } else if (!skip) {
         --budget;
-        ++shown;
-        out[key] = Value(-1, depth);
+        entries.emplace_back(key, Value(-1, depth));
       }
       lua_pop(L, 1);
     }
+    std::sort(entries.begin(), entries.end(), KeyBefore);
+    for (auto& [k, v] : entries) out[k] = std::move(v);
     if (more > 0) out["..."] = std::to_string(more) + " more";
     return out;
   }

@@ -5,6 +5,7 @@
 
 #include "core/error_list.h"
 #include "core/json.h"
+#include "core/strings.h"
 #include "lua/lua_inspect.h"
 #include "serve/experiment_inputs.h"
 #include "output/recording.h"
@@ -49,26 +50,6 @@ Json RobotJson(const World& w, size_t i) {
   j["alive"] = r.alive;
   j["ok"] = r.controller_ok;
   return j;
-}
-
-std::string Base64(const std::string& in) {
-  static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    unsigned v = (static_cast<unsigned char>(in[i]) << 16) | (static_cast<unsigned char>(in[i + 1]) << 8) |
-                 static_cast<unsigned char>(in[i + 2]);
-    for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63];
-  }
-  if (i < in.size()) {
-    unsigned v = static_cast<unsigned char>(in[i]) << 16;
-    if (i + 1 < in.size()) v |= static_cast<unsigned char>(in[i + 1]) << 8;
-    out += kAlphabet[v >> 18];
-    out += kAlphabet[(v >> 12) & 63];
-    out += i + 1 < in.size() ? kAlphabet[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
 }
 }  // namespace
 
@@ -120,7 +101,7 @@ Json SceneJson(const World& w) {
     lights.push_back({{"id", l.id}, {"x", l.position.x()}, {"y", l.position.y()}, {"r", l.color.r}, {"g", l.color.g},
                       {"b", l.color.b}, {"intensity", l.intensity}});
   j["lights"] = std::move(lights);
-  j["floor"] = s.floor_png.empty() ? std::string() : Base64(s.floor_png);
+  j["floor"] = s.floor_png.empty() ? std::string() : Base64Encode(s.floor_png);
   return j;
 }
 

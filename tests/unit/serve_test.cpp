@@ -236,6 +236,7 @@ TEST(ServeLiveExperiment, AScriptErrorKeepsTheLastGoodWorldAndAFixClearsIt) {
   EXPECT_EQ(inspected["id"], "fb0");
   EXPECT_EQ(inspected["globals"]["count"], 5);
   EXPECT_EQ(inspected["globals"]["state"]["target"]["x"], 1.5);
+  EXPECT_EQ(inspected["globals"].begin().key(), "count");  // keys sorted, whatever pairs() gives
   EXPECT_FALSE(inspected["globals"].contains("string"));  // the standard library is left out
   EXPECT_FALSE(inspected["globals"].contains("step"));    // and functions
   EXPECT_TRUE(inspected["readings"].contains("positioning"));
