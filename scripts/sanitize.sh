@@ -32,6 +32,7 @@ echo "sanitize: built in $((SECONDS - start)) s"
 start=$SECONDS
 # halt_on_error: the first report ends the process, so the test fails; leaks too.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp}  # third-party leaks only
 ctest --test-dir build-asan --output-on-failure -j2
 echo "sanitize: suite in $((SECONDS - start)) s"
 if ((fuzz_seconds > 0)); then
