@@ -40,6 +40,8 @@ class LuaController {
   /// robots stepped on several threads still print in robot order.
   std::string& LogBuffer() { return log_; }
   const LuaGuard& Memory() const { return guard_; }
+  /// The script called os.exit: the run ends (as an error), not just this robot.
+  bool ExitCalled() const { return !guard_.exit_called.empty(); }
   ::lua_State* State() { return L_; }
 
  private:
