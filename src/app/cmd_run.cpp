@@ -62,21 +62,34 @@ struct RunArgs {
 // The run in progress, for the watchdog's last resort (a call stuck inside a C function).
 struct RunInProgress {
   std::string out;
-  const World* world = nullptr;
+  const RunArgs* args = nullptr;
+  const Model* model = nullptr;
+  const World* world = nullptr;       // null while init() runs
+  RecordingWriter* recorder = nullptr;
   RunInfo info;
 };
 RunInProgress g_run;
+// Held from before the first write into --out until the process ends.
+OutFolderLock g_out_lock;
 
 void OnLuaStuck(const std::string& message) {
   // Called from the monitor thread while robots may still be stepped: a best-effort summary.
-  if (!g_run.world) return;
+  std::string error;
+  if (!g_run.world) {  // stuck in the loading or init() of a script
+    if (g_run.args)
+      WriteFailureSummary(g_run.out, ESSAIM_VERSION, g_run.args->file, g_run.args->load.overrides, g_run.model, message,
+                          &error);
+    return;
+  }
   RunInfo info = g_run.info;
   info.status = "failed";
   info.finished_by = "error";
   info.outputs = {"summary.json"};
+  // The frames written so far end at a whole tick: sealed as they are, never left as a
+  // temporary file.
+  if (g_run.recorder && g_run.recorder->IsOpen() && g_run.recorder->Seal(&error)) info.outputs.push_back(kRecordingFile);
   Json s = BuildSummary(*g_run.world, info);
   s["failure"] = message;
-  std::string error;
   WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
 }
 
@@ -187,7 +200,8 @@ static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model
                     int code) {
   std::string error;
   if (out.empty()) return code;
-  if (!PrepareOutFolder(out, &error) || !SetAsideEarlierOutputsAndSay(out, &error) ||
+  if (!PrepareOutFolder(out, &error) || (!g_out_lock.Held() && !g_out_lock.Acquire(out, &error)) ||
+      !SetAsideEarlierOutputsAndSay(out, &error) ||
       !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, message, &error))
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
   return code;
@@ -243,7 +257,8 @@ static int Run(RunArgs& r) {
   auto model = LoadOrReport(r, &error);
   if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
-  if (!PrepareOutFolder(out, &error)) {  // before any script runs: a wrong --out is bad input
+  // Before any script runs: a wrong --out, or one another run is writing, is bad input.
+  if (!PrepareOutFolder(out, &error) || !g_out_lock.Acquire(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitBadInput;
   }
@@ -258,6 +273,21 @@ static int Run(RunArgs& r) {
     return kExitBadInput;
   }
   opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
+  // Signals and the watchdog's last resort are handled from before init(): a controller
+  // stuck there still ends the run with its outputs.
+  g_run.out = out;
+  g_run.args = &r;
+  g_run.model = model.get();
+  g_run.info.version = ESSAIM_VERSION;
+  SetLuaStuckHandler(OnLuaStuck);
+  struct Forget {  // declared before the world, so it goes after it
+    ~Forget() {
+      SetLuaStuckHandler(nullptr);
+      g_run = RunInProgress();
+    }
+  } forget;
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGTERM, OnSignal);
   auto t0 = std::chrono::steady_clock::now();
   auto world = World::Create(*model, opt, &error);
   if (!world) {
@@ -278,18 +308,14 @@ static int Run(RunArgs& r) {
   MemoryLog memory_log;
   if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error))
     return FailedRun(*world, out, error);
-  g_run.out = out;
   g_run.world = world.get();
-  g_run.info.version = ESSAIM_VERSION;
-  SetLuaStuckHandler(OnLuaStuck);
-  struct Forget {  // before the world goes
-    ~Forget() {
-      SetLuaStuckHandler(nullptr);
+  g_run.recorder = &recorder;
+  struct ForgetWorld {  // before the world and the recorder go
+    ~ForgetWorld() {
       g_run.world = nullptr;
+      g_run.recorder = nullptr;
     }
-  } forget;
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  } forget_world;
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   logs->SetProgress(&progress);
   StepStatus status = StepStatus::Running;
