@@ -10,6 +10,9 @@
 #include <cstring>
 #include <lua.hpp>
 
+#include "model/distribute.h"
+#include "model/limits.h"
+
 #include "core/color.h"
 #include "lua/loop_functions.h"
 #include "lua/loop_handles.h"
@@ -362,6 +365,21 @@ struct LoopEntities {
       CheckMedium(L, lf, o->led_medium);
     }
   }
+  /// Refuses what the .argos loader refuses: sizes over the limits, a base below the floor,
+  /// a footprint overlapping a foot-bot where it stands now.
+  static void CheckObstacle(lua_State* L, LoopFunctions* lf, const ObstacleDef& o) {
+    const std::string problem = ObstacleProblem(o, lf->entities_->scene().experiment.limits);
+    if (!problem.empty()) luaL_error(L, "add_entity: %s", problem.c_str());
+    const Footprint f = ObstacleFootprint(o);
+    const std::vector<RobotDef>& robots = lf->entities_->scene().robots;
+    for (size_t i = 0; i < robots.size(); ++i) {
+      const Pose2 pose = lf->physics_->RobotPose(static_cast<int>(i));
+      Footprint robot;
+      robot.center = {pose.x, pose.y};
+      robot.radius = footbot::kRadius;
+      if (FootprintsOverlap(f, robot)) luaL_error(L, "add_entity: it would overlap foot-bot '%s'", robots[i].id.c_str());
+    }
+  }
   static int AddEntity(lua_State* L) {
     LoopFunctions* lf = Self(L);
     EntityKind kind;
@@ -420,6 +438,11 @@ struct LoopEntities {
       }
       ParseLeds(L, lf, &o);
     }
+    if (kind != EntityKind::Light) CheckObstacle(L, lf, lf->obstacle_spec_);
+    const Model& scene = lf->entities_->scene();
+    const std::string count = EntityCountProblem(scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1,
+                                                 scene.experiment.limits);
+    if (!count.empty()) luaL_error(L, "add_entity: %s", count.c_str());
     SetString(L, "id", id, false);
     if (id->empty()) {
       // Generated ids follow the kind and a counter, skipping any taken.
