@@ -203,7 +203,7 @@ def test_case04_os_exit_stops_the_run_cleanly(tmp_path, call):
 def test_case05_sandbox_require_stays_in_the_arena_folder(tmp_path):
     secret = tmp_path / "outside"
     secret.mkdir()
-    (secret / "secret.lua").write_text("SECRET-7f3a9 here\n")
+    (secret / "secret.lua").write_text("return 1 SECRET_7f3a9\n")  # a syntax error quoting it
     (tmp_path / "a" / "lib").mkdir(parents=True)
     (tmp_path / "a" / "lib" / "helper.lua").write_text("return {x = 42}\n")
     ctrl = (f'package.path = "{secret}/?.lua;" .. package.path\n'
