@@ -93,6 +93,24 @@ void OnLuaStuck(const std::string& message) {
   WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
 }
 
+// From before the scripts load to after the world goes: signals end the run as
+// interrupted, and the watchdog's last resort knows where to write.
+struct WatchRun {
+  WatchRun(const std::string& out, const RunArgs& r, const Model& model) {
+    g_run.out = out;
+    g_run.args = &r;
+    g_run.model = &model;
+    g_run.info.version = ESSAIM_VERSION;
+    SetLuaStuckHandler(OnLuaStuck);
+    std::signal(SIGINT, OnSignal);
+    std::signal(SIGTERM, OnSignal);
+  }
+  ~WatchRun() {
+    SetLuaStuckHandler(nullptr);
+    g_run = RunInProgress();
+  }
+};
+
 // The options run and check share: the file and what overrides its XML.
 void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
   sub->add_option("FILE.argos", r->file, "the ARGoS experiment file")->required();
@@ -275,24 +293,12 @@ static int Run(RunArgs& r) {
   opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
   // Signals and the watchdog's last resort are handled from before init(): a controller
   // stuck there still ends the run with its outputs.
-  g_run.out = out;
-  g_run.args = &r;
-  g_run.model = model.get();
-  g_run.info.version = ESSAIM_VERSION;
-  SetLuaStuckHandler(OnLuaStuck);
-  struct Forget {  // declared before the world, so it goes after it
-    ~Forget() {
-      SetLuaStuckHandler(nullptr);
-      g_run = RunInProgress();
-    }
-  } forget;
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  WatchRun watch(out, r, *model);  // declared before the world, so it goes after it
   auto t0 = std::chrono::steady_clock::now();
   auto world = World::Create(*model, opt, &error);
-  if (!world) {
+  if (!world) {  // a script that does not load, or one a signal stopped while it loaded
     std::fprintf(stderr, "%s\n", error.c_str());
-    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput);
+    return FailedBeforeRun(r, out, model.get(), error, g_interrupted ? 128 + g_interrupted.load() : kExitBadInput);
   }
   if (!SetAsideEarlierOutputsAndSay(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());

@@ -380,6 +380,13 @@ struct LoopEntities {
       if (FootprintsOverlap(f, robot)) luaL_error(L, "add_entity: it would overlap foot-bot '%s'", robots[i].id.c_str());
     }
   }
+  /// Refuses one entity more than the experiment's limit.
+  static void CheckRoom(lua_State* L, LoopFunctions* lf) {
+    const Model& scene = lf->entities_->scene();
+    const std::string problem = EntityCountProblem(
+        scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1, scene.experiment.limits);
+    if (!problem.empty()) luaL_error(L, "add_entity: %s", problem.c_str());
+  }
   static int AddEntity(lua_State* L) {
     LoopFunctions* lf = Self(L);
     EntityKind kind;
@@ -437,12 +444,9 @@ struct LoopEntities {
         if (o.mass <= 0) luaL_error(L, "add_entity: mass must be > 0 for a movable object");
       }
       ParseLeds(L, lf, &o);
+      CheckObstacle(L, lf, o);
     }
-    if (kind != EntityKind::Light) CheckObstacle(L, lf, lf->obstacle_spec_);
-    const Model& scene = lf->entities_->scene();
-    const std::string count = EntityCountProblem(scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1,
-                                                 scene.experiment.limits);
-    if (!count.empty()) luaL_error(L, "add_entity: %s", count.c_str());
+    CheckRoom(L, lf);
     SetString(L, "id", id, false);
     if (id->empty()) {
       // Generated ids follow the kind and a counter, skipping any taken.

@@ -76,6 +76,12 @@ class Loader {
   void LoadLimits(const XMLElement* sys, LimitsDef* limits);
   /// False (an error at `e`) when `more` entities would take the experiment over its limit.
   bool RoomFor(const XMLElement* e, long long more);
+  /// An error at `e` when the obstacle is over the size limit or out of range.
+  void CheckFits(const XMLElement* e, const ObstacleDef& o) {
+    std::string problem = ObstacleProblem(o, model_->experiment.limits);
+    if (!problem.empty()) Error(e, problem);
+  }
+  void CheckArenaSize(const XMLElement* e);
   bool Bool(const XMLElement* e, const char* name, bool def);
   Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
   void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
@@ -615,10 +621,7 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) 
   CheckChildren(e, {"body", "leds"}, "expected body, leds");
   if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &o->pose, &o->z);
   else if (needs_body) Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
-  if (errors_->Size() == before) {
-    std::string problem = ObstacleProblem(*o, model_->experiment.limits);
-    if (!problem.empty()) Error(e, problem);
-  }
+  CheckFits(e, *o);
   if (const XMLElement* leds = e->FirstChildElement("leds")) {
     o->led_medium = Required(leds, "medium");
     for (auto* l = leds->FirstChildElement(); l; l = l->NextSiblingElement()) {
@@ -690,14 +693,19 @@ void Loader::LoadFloor(const XMLElement* e) {
   }
 }
 
+void Loader::CheckArenaSize(const XMLElement* e) {
+  const Vec3& size = model_->arena.size;
+  const double limit = model_->experiment.limits.arena_size;
+  if (size.x() <= 0 || size.y() <= 0) Error(e, "size must be > 0");
+  else if (!(size.x() <= limit && size.y() <= limit))
+    Error(e, "size " + FormatDouble(std::max(size.x(), size.y())) + " m is over the limit of " + FormatDouble(limit) +
+                 " m per side (<system max_arena_size>)");
+}
+
 void Loader::LoadArena(const XMLElement* e) {
   model_->arena.size = Vector3(e, "size", Vec3(10, 10, 1), true);
   model_->arena.center = Vector3(e, "center", Vec3::Zero());
-  const LimitsDef& limits = model_->experiment.limits;
-  if (model_->arena.size.x() <= 0 || model_->arena.size.y() <= 0) Error(e, "size must be > 0");
-  else if (!(model_->arena.size.x() <= limits.arena_size && model_->arena.size.y() <= limits.arena_size))
-    Error(e, "size " + FormatDouble(std::max(model_->arena.size.x(), model_->arena.size.y())) +
-                 " m is over the limit of " + FormatDouble(limits.arena_size) + " m per side (<system max_arena_size>)");
+  CheckArenaSize(e);
   if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
   // Explicit entities in document order, then <distribute> blocks (spec §10.4).
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
