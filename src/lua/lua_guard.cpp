@@ -180,7 +180,7 @@ void Watch(LuaGuard* g, long long now) {
   if (g_interrupt.load(std::memory_order_relaxed)) g->interrupted.store(true, std::memory_order_relaxed);
   if (g->wall_seconds > 0 && s > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
   if (s > 1) g->track_where.store(true, std::memory_order_relaxed);
-  // Re-armed if the script cleared it (debug.sethook()). lua_sethook may be called
+  // Re-armed if it was cleared (debug.sethook is refused now; kept as a backstop). lua_sethook may be called
   // asynchronously (ldebug.c).
   if (lua_gethook(g->state) != GuardHook) {
     lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);

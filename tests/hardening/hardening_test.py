@@ -182,6 +182,22 @@ def test_case03_watchdog_cannot_be_escaped(tmp_path, kind, sandbox):
     assert (out / "recording.bin").is_file() and no_temporary_files(out)
 
 
+# 3 (the last resort): a call stuck inside one C function still leaves a summary naming the
+# last line seen, and a closed recording.
+def test_case03_stuck_in_c_leaves_summary_and_recording(tmp_path):
+    ctrl = ("function step()\n  local t = os.clock()\n  while os.clock() - t < 1.2 do end\n"
+            "  string.find(string.rep('a', 40), string.rep('a*', 40) .. 'b')\nend\n")
+    out = tmp_path / "out"
+    p = run(arena(tmp_path, ctrl), out, "--lua-seconds", "6", "--record")
+    assert p.returncode == 1, p.stderr
+    s = summary(out)
+    assert s["status"] == "failed"
+    assert "stuck for" in s["failure"] and "inside a C function called from Lua (last at " in s["failure"]
+    assert "ctrl.lua:3)" in s["failure"]
+    assert (out / "recording.bin").is_file() and no_temporary_files(out)
+    assert essaim("replay", out, "-o", tmp_path / "r.html").returncode == 0
+
+
 # 4. os.exit ends the run as an error, with its outputs; essaim chooses the exit code.
 @pytest.mark.parametrize("call", ["os.exit(7)", "os.exit(true, true)", "pcall(os.exit, 0)"])
 def test_case04_os_exit_stops_the_run_cleanly(tmp_path, call):
