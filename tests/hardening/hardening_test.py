@@ -350,8 +350,11 @@ for call in (lambda: sim.step(1), lambda: sim.run(), lambda: sim.finish()):
         assert "finish() was called" in str(e), e
 print("ok")
 """
+    env = dict(os.environ)
+    if os.environ.get("ESSAIM_ASAN_PRELOAD"):  # the module is built with ASan, Python is not
+        env.update(LD_PRELOAD=os.environ["ESSAIM_ASAN_PRELOAD"], ASAN_OPTIONS="detect_leaks=0")
     p = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=TIMEOUT,
-                       preexec_fn=limit_address_space)
+                       preexec_fn=limit_address_space, env=env)
     assert p.returncode == 0 and p.stdout.strip().endswith("ok"), p.stdout + p.stderr
 
 
