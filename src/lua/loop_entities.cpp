@@ -367,9 +367,18 @@ struct LoopEntities {
   }
   /// Refuses what the .argos loader refuses: sizes over the limits, a base below the floor,
   /// a footprint overlapping a foot-bot where it stands now.
+  /// Raises "add_entity: " + `problem` at the script's line unless it is "". The message is
+  /// on Lua's stack before `problem` goes: lua_error's longjmp skips C++ destructors.
+  static void RaiseIf(lua_State* L, std::string&& problem) {
+    if (problem.empty()) return;
+    luaL_where(L, 1);
+    lua_pushfstring(L, "add_entity: %s", problem.c_str());
+    lua_concat(L, 2);
+    std::string().swap(problem);
+    lua_error(L);
+  }
   static void CheckObstacle(lua_State* L, LoopFunctions* lf, const ObstacleDef& o) {
-    const std::string problem = ObstacleProblem(o, lf->entities_->scene().experiment.limits);
-    if (!problem.empty()) luaL_error(L, "add_entity: %s", problem.c_str());
+    RaiseIf(L, ObstacleProblem(o, lf->entities_->scene().experiment.limits));
     const Footprint f = ObstacleFootprint(o);
     const std::vector<RobotDef>& robots = lf->entities_->scene().robots;
     for (size_t i = 0; i < robots.size(); ++i) {
@@ -383,9 +392,8 @@ struct LoopEntities {
   /// Refuses one entity more than the experiment's limit.
   static void CheckRoom(lua_State* L, LoopFunctions* lf) {
     const Model& scene = lf->entities_->scene();
-    const std::string problem = EntityCountProblem(
-        scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1, scene.experiment.limits);
-    if (!problem.empty()) luaL_error(L, "add_entity: %s", problem.c_str());
+    RaiseIf(L, EntityCountProblem(scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1,
+                                  scene.experiment.limits));
   }
   static int AddEntity(lua_State* L) {
     LoopFunctions* lf = Self(L);

@@ -313,17 +313,25 @@ std::string FindAllowedModule(lua_State* L, LuaGuard* g, const std::string& name
 }
 
 int TextOnlyLuaSearcher(lua_State* L) {
-  const std::string name = luaL_checkstring(L, 1);
-  std::string tried;
-  const std::string filename = FindAllowedModule(L, GuardOf(L), name, &tried);
-  if (filename.empty()) {
-    lua_pushstring(L, tried.c_str());
-    return 1;
+  const char* name = luaL_checkstring(L, 1);
+  bool failed = false;
+  {  // the strings go before lua_error, whose longjmp skips C++ destructors
+    std::string tried;
+    const std::string filename = FindAllowedModule(L, GuardOf(L), name, &tried);
+    if (filename.empty()) {
+      lua_pushstring(L, tried.c_str());
+      return 1;
+    }
+    failed = luaL_loadfilex(L, filename.c_str(), "t") != LUA_OK;
+    if (failed) {
+      luaL_where(L, 1);
+      lua_pushfstring(L, "error loading module '%s' from file '%s':\n\t%s", name, filename.c_str(), lua_tostring(L, -2));
+      lua_concat(L, 2);
+    } else {
+      lua_pushstring(L, filename.c_str());
+    }
   }
-  if (luaL_loadfilex(L, filename.c_str(), "t") != LUA_OK)
-    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name.c_str(), filename.c_str(),
-                      lua_tostring(L, -1));
-  lua_pushstring(L, filename.c_str());
+  if (failed) return lua_error(L);
   return 2;
 }
 }  // namespace

@@ -234,6 +234,11 @@ def test_case05_sandbox_require_stays_in_the_arena_folder(tmp_path):
     messages = [e["message"] for e in summary(out)["controller_errors"]]
     assert messages and all("module 'secret' not found" in m for m in messages)
     assert "42" in p.stdout  # a module inside the arena's folder still loads
+    (tmp_path / "a" / "bad.lua").write_text("return 1 oops\n")
+    (tmp_path / "a" / "ctrl.lua").write_text("function step() require('bad') end\n")
+    p = run(tmp_path / "a" / "test.argos", tmp_path / "o3", "--sandbox", "--ticks", "1")
+    messages = [e["message"] for e in summary(tmp_path / "o3")["controller_errors"]]
+    assert messages and all("error loading module 'bad' from file" in m and "oops" in m for m in messages), messages
     p = run(arena(tmp_path / "b", loop=loop), tmp_path / "o2", "--sandbox", "--ticks", "2")
     assert p.returncode == 1 and "module 'secret' not found" in p.stderr
     assert "SECRET" not in p.stderr + (tmp_path / "o2" / "summary.json").read_text()
