@@ -69,23 +69,54 @@ struct RunArgs {
 // The run in progress, for the watchdog's last resort (a call stuck inside a C function).
 struct RunInProgress {
   std::string out;
-  const World* world = nullptr;
+  const RunArgs* args = nullptr;
+  const Model* model = nullptr;
+  const World* world = nullptr;       // null while init() runs
+  RecordingWriter* recorder = nullptr;
   RunInfo info;
 };
 RunInProgress g_run;
+// Held from before the first write into --out until the process ends.
+OutFolderLock g_out_lock;
 
 void OnLuaStuck(const std::string& message) {
   // Called from the monitor thread while robots may still be stepped: a best-effort summary.
-  if (!g_run.world) return;
+  std::string error;
+  if (!g_run.world) {  // stuck in the loading or init() of a script
+    if (g_run.args)
+      WriteFailureSummary(g_run.out, ESSAIM_VERSION, g_run.args->file, g_run.args->load.overrides, g_run.model, message,
+                          &error);
+    return;
+  }
   RunInfo info = g_run.info;
   info.status = "failed";
   info.finished_by = "error";
   info.outputs = {"summary.json"};
+  // The frames written so far end at a whole tick: sealed as they are, never left as a
+  // temporary file.
+  if (g_run.recorder && g_run.recorder->IsOpen() && g_run.recorder->Seal(&error)) info.outputs.push_back(kRecordingFile);
   Json s = BuildSummary(*g_run.world, info);
   s["failure"] = message;
-  std::string error;
   WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
 }
+
+// From before the scripts load to after the world goes: signals end the run as
+// interrupted, and the watchdog's last resort knows where to write.
+struct WatchRun {
+  WatchRun(const std::string& out, const RunArgs& r, const Model& model) {
+    g_run.out = out;
+    g_run.args = &r;
+    g_run.model = &model;
+    g_run.info.version = ESSAIM_VERSION;
+    SetLuaStuckHandler(OnLuaStuck);
+    std::signal(SIGINT, OnSignal);
+    std::signal(SIGTERM, OnSignal);
+  }
+  ~WatchRun() {
+    SetLuaStuckHandler(nullptr);
+    g_run = RunInProgress();
+  }
+};
 
 // The options run and check share: the file and what overrides its XML.
 void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
@@ -194,7 +225,8 @@ static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model
                            int code, const InputFiles* inputs = nullptr) {
   std::string error;
   if (out.empty()) return code;
-  if (!PrepareOutFolder(out, &error) || !SetAsideEarlierOutputsAndSay(out, &error) ||
+  if (!PrepareOutFolder(out, &error) || (!g_out_lock.Held() && !g_out_lock.Acquire(out, &error)) ||
+      !SetAsideEarlierOutputsAndSay(out, &error) ||
       !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, inputs, message, &error))
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
   return code;
@@ -301,7 +333,8 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
   *inputs = ExperimentInputs(*model, nullptr);
   std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
-  if (!PrepareOutFolder(out, &error)) {  // before any script runs: a wrong --out is bad input
+  // Before any script runs: a wrong --out, or one another run is writing, is bad input.
+  if (!PrepareOutFolder(out, &error) || !g_out_lock.Acquire(out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitBadInput;
   }
@@ -317,11 +350,15 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
     return kExitBadInput;
   }
   opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
+  // Signals and the watchdog's last resort are handled from before init(): a controller
+  // stuck there still ends the run with its outputs.
+  WatchRun watch(out, r, *model);  // declared before the world, so it goes after it
   auto t0 = std::chrono::steady_clock::now();
   auto world = World::Create(*model, opt, &error);
-  if (!world) {
+  if (!world) {  // a script that does not load, or one a signal stopped while it loaded
     std::fprintf(stderr, "%s\n", error.c_str());
-    return FailedBeforeRun(r, out, model.get(), error, kExitBadInput, opt.inputs.get());
+    return FailedBeforeRun(r, out, model.get(), error, g_interrupted ? 128 + g_interrupted.load() : kExitBadInput,
+                           opt.inputs.get());
   }
   *inputs = ExperimentInputs(*model, world.get());
   if (!SetAsideEarlierOutputsAndSay(out, &error)) {
@@ -338,18 +375,14 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
   MemoryLog memory_log;
   if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error))
     return FailedRun(*world, out, error);
-  g_run.out = out;
   g_run.world = world.get();
-  g_run.info.version = ESSAIM_VERSION;
-  SetLuaStuckHandler(OnLuaStuck);
-  struct Forget {  // before the world goes
-    ~Forget() {
-      SetLuaStuckHandler(nullptr);
+  g_run.recorder = &recorder;
+  struct ForgetWorld {  // before the world and the recorder go
+    ~ForgetWorld() {
       g_run.world = nullptr;
+      g_run.recorder = nullptr;
     }
-  } forget;
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  } forget_world;
   Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
   logs->SetProgress(&progress);
   StepStatus status = StepStatus::Running;

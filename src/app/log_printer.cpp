@@ -4,6 +4,10 @@
 #include <cerrno>
 #include <cstring>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "app/commands.h"
 #include "core/paths.h"
 #include "output/atomic_file.h"  // MakeDirs
@@ -32,7 +36,24 @@ LogPrinter::LogPrinter(const Model& model, bool prefix, std::string dir) : prefi
   }
 }
 
-bool LogPrinter::Prepare(std::string* error) { return dir_.empty() || MakeDirs(dir_, error); }
+std::string LogPrinter::PathOf(size_t slot) const {
+  std::string name = slot < robot_ids_.size() ? FileNameFor(robot_ids_[slot], slot) : "loop_functions";
+  return JoinPath(dir_, name + ".log");
+}
+
+bool LogPrinter::Prepare(std::string* error) {
+  if (dir_.empty()) return true;
+  if (!MakeDirs(dir_, error)) return false;
+  // A FIFO would block the run in open(), a device would take the lines: refused up front.
+  for (size_t slot = 0; slot < pending_.size(); ++slot) {
+    const std::string kind = SpecialFileKind(PathOf(slot));
+    if (!kind.empty()) {
+      *error = PathOf(slot) + " is " + kind + "; essaim writes a regular file of that name there";
+      return false;
+    }
+  }
+  return true;
+}
 
 std::string LogPrinter::Prefix(const LogOrigin& from) const {
   std::string who = from.robot >= 0 && static_cast<size_t>(from.robot) < robot_ids_.size() ? robot_ids_[from.robot]
@@ -63,10 +84,20 @@ void LogPrinter::Print(char stream, const std::string& line, const LogOrigin& fr
 }
 
 bool LogPrinter::WriteOut(size_t slot, std::string* error) {
-  std::string name = slot < robot_ids_.size() ? FileNameFor(robot_ids_[slot], slot) : "loop_functions";
-  std::string path = JoinPath(dir_, name + ".log");
-  // The first write replaces an old file: a run's folder holds only its own logs.
-  std::FILE* f = std::fopen(path.c_str(), started_[slot] ? "ab" : "wb");
+  const std::string path = PathOf(slot);
+  // The first write replaces an old file: a run's folder holds only its own logs. Opened
+  // without blocking and checked: a FIFO made there during the run is refused, not waited on.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC | (started_[slot] ? O_APPEND : O_TRUNC), 0644);
+  struct stat st;
+  if (fd >= 0 && (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))) {
+    ::close(fd);
+    if (error) *error = "cannot write " + path + ": not a regular file";
+    started_[slot] = true;
+    pending_[slot].clear();
+    return false;
+  }
+  std::FILE* f = fd >= 0 ? ::fdopen(fd, "ab") : nullptr;
+  if (fd >= 0 && !f) ::close(fd);
   bool ok = f && std::fwrite(pending_[slot].data(), 1, pending_[slot].size(), f) == pending_[slot].size();
   if (f && std::fclose(f) != 0) ok = false;
   if (!ok && error) *error = "cannot write " + path + ": " + std::strerror(errno);

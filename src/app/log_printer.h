@@ -32,6 +32,7 @@ class LogPrinter {
  private:
   std::string Prefix(const LogOrigin& from) const;
   bool WriteOut(size_t slot, std::string* error);
+  std::string PathOf(size_t slot) const;  // DIR/<robot id>.log, DIR/loop_functions.log
 
   std::vector<std::string> robot_ids_;
   bool prefix_;

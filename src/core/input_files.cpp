@@ -8,7 +8,7 @@
 namespace essaim {
 
 void InputFiles::Add(const std::string& path, const char* role) {
-  std::string canonical = CanonicalPath(path);
+  std::string canonical = WeaklyCanonicalPath(path);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const InputFile& f : files_)

@@ -17,10 +17,41 @@ bool FileExists(const std::string& path) {
   return fs::is_regular_file(path, ec);
 }
 
-std::string CanonicalPath(const std::string& path) {
+std::string WeaklyCanonicalPath(const std::string& path) {
   std::error_code ec;
   fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
   return ec ? fs::absolute(path, ec).lexically_normal().string() : p.string();
+}
+
+bool PathExists(const std::string& path) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+
+std::string SpecialFileKind(const std::string& path) {
+  std::error_code ec;
+  switch (fs::status(path, ec).type()) {
+    case fs::file_type::regular:
+    case fs::file_type::not_found:
+    case fs::file_type::none: return "";
+    case fs::file_type::directory: return "a folder";
+    case fs::file_type::fifo: return "a FIFO";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
+}
+
+std::string CanonicalPath(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::canonical(path.empty() ? "." : path, ec);
+  return ec ? "" : p.string();
+}
+
+bool IsInsideFolder(const std::string& path, const std::string& root) {
+  if (root.empty() || path.size() <= root.size() || path.compare(0, root.size(), root) != 0) return false;
+  return root.back() == '/' || path[root.size()] == '/';
 }
 
 bool ReadFile(const std::string& path, std::string* out) {

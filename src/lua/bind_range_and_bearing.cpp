@@ -4,6 +4,7 @@
 // keep last step's message and compare it with the new one. Bytes are Lua integers.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "lua/bind_byte.h"
 #include "lua/lua_devices.h"
@@ -13,6 +14,20 @@ namespace essaim {
 namespace {
 constexpr lua_Integer kOnePassBytes = 256;  // payloads up to this are read once into a stack buffer
 
+/// Beyond this magnitude a number is no byte, even wrapped: ARGoS's cast is undefined there.
+constexpr double kMaxByteMagnitude = 2147483648.0;  // 2^31
+
+/// `v` as a byte, wrapping as ARGoS's cast does; a Lua error naming the value when its
+/// magnitude is out of range. `what` names the argument.
+uint8_t RangedByte(lua_State* L, double v, const char* what) {
+  if (std::fabs(v) < kMaxByteMagnitude) return LuaNumberToByte(v);
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%g", v);
+  luaL_error(L, "robot.range_and_bearing.set_data: %s %s is out of range (a byte: numbers within +-2^31 wrap modulo 256)",
+             what, shown);
+  return 0;
+}
+
 /// array[i] as a byte, or a Lua error naming the element. One lua_geti per call: a table
 /// with __index sees each element read once per pass, as in ARGoS.
 uint8_t ElementByte(lua_State* L, lua_Integer i) {
@@ -20,8 +35,8 @@ uint8_t ElementByte(lua_State* L, lua_Integer i) {
     luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is not a number", static_cast<int>(i));
   int exact = 0;
   const lua_Integer n = lua_tointegerx(L, -1, &exact);  // bytes are integers: the cheap read
-  constexpr lua_Integer kExactInDouble = lua_Integer{1} << 53;
-  if (exact && n >= -kExactInDouble && n <= kExactInDouble) {  // LuaNumberToByte(double(n)), without the double
+  constexpr lua_Integer kMaxExact = static_cast<lua_Integer>(kMaxByteMagnitude);
+  if (exact && n > -kMaxExact && n < kMaxExact) {  // LuaNumberToByte(double(n)), without the double
     lua_pop(L, 1);
     return static_cast<uint8_t>(n);
   }
@@ -30,7 +45,9 @@ uint8_t ElementByte(lua_State* L, lua_Integer i) {
   if (!std::isfinite(v))
     luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is %s (must be a finite number)",
                static_cast<int>(i), std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
-  return LuaNumberToByte(v);
+  char what[48];
+  std::snprintf(what, sizeof what, "element #%d", static_cast<int>(i));
+  return RangedByte(L, v, what);
 }
 
 int SetData(lua_State* L) {
@@ -60,7 +77,7 @@ int SetData(lua_State* L) {
     if (!(idx >= 1 && idx < static_cast<double>(size) + 1))
       return luaL_error(L, "robot.range_and_bearing.set_data(idx, value) expects idx between 1 and %d, got %f",
                         static_cast<int>(size), idx);
-    r->cmd.rab_data[static_cast<size_t>(idx) - 1] = LuaNumberToByte(value);
+    r->cmd.rab_data[static_cast<size_t>(idx) - 1] = RangedByte(L, value, "value");
     return 0;
   }
   return luaL_error(L, "robot.range_and_bearing.set_data() expects either one or two arguments");

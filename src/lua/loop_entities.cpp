@@ -10,6 +10,9 @@
 #include <cstring>
 #include <lua.hpp>
 
+#include "model/distribute.h"
+#include "model/limits.h"
+
 #include "core/color.h"
 #include "lua/loop_functions.h"
 #include "lua/loop_handles.h"
@@ -362,6 +365,36 @@ struct LoopEntities {
       CheckMedium(L, lf, o->led_medium);
     }
   }
+  /// Refuses what the .argos loader refuses: sizes over the limits, a base below the floor,
+  /// a footprint overlapping a foot-bot where it stands now.
+  /// Raises "add_entity: " + `problem` at the script's line unless it is "". The message is
+  /// on Lua's stack before `problem` goes: lua_error's longjmp skips C++ destructors.
+  static void RaiseIf(lua_State* L, std::string&& problem) {
+    if (problem.empty()) return;
+    luaL_where(L, 1);
+    lua_pushfstring(L, "add_entity: %s", problem.c_str());
+    lua_concat(L, 2);
+    std::string().swap(problem);
+    lua_error(L);
+  }
+  static void CheckObstacle(lua_State* L, LoopFunctions* lf, const ObstacleDef& o) {
+    RaiseIf(L, ObstacleProblem(o, lf->entities_->scene().experiment.limits));
+    const Footprint f = ObstacleFootprint(o);
+    const std::vector<RobotDef>& robots = lf->entities_->scene().robots;
+    for (size_t i = 0; i < robots.size(); ++i) {
+      const Pose2 pose = lf->physics_->RobotPose(static_cast<int>(i));
+      Footprint robot;
+      robot.center = {pose.x, pose.y};
+      robot.radius = footbot::kRadius;
+      if (FootprintsOverlap(f, robot)) luaL_error(L, "add_entity: it would overlap foot-bot '%s'", robots[i].id.c_str());
+    }
+  }
+  /// Refuses one entity more than the experiment's limit.
+  static void CheckRoom(lua_State* L, LoopFunctions* lf) {
+    const Model& scene = lf->entities_->scene();
+    RaiseIf(L, EntityCountProblem(scene.robots.size() + scene.obstacles.size() + scene.lights.size() + 1,
+                                  scene.experiment.limits));
+  }
   static int AddEntity(lua_State* L) {
     LoopFunctions* lf = Self(L);
     EntityKind kind;
@@ -419,7 +452,9 @@ struct LoopEntities {
         if (o.mass <= 0) luaL_error(L, "add_entity: mass must be > 0 for a movable object");
       }
       ParseLeds(L, lf, &o);
+      CheckObstacle(L, lf, o);
     }
+    CheckRoom(L, lf);
     SetString(L, "id", id, false);
     if (id->empty()) {
       // Generated ids follow the kind and a counter, skipping any taken.

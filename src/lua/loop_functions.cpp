@@ -445,6 +445,7 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_setglobal(L, "experiment");
 
   std::string dir = DirName(script_);
+  SetRequireRoots(&guard_, {DirName(model.file), dir});
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "path");
   std::string path = (dir.empty() ? std::string("./?.lua;") : dir + "/?.lua;") + lua_tostring(L, -1);
@@ -486,7 +487,7 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
-    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? script_ + ": " + stopped : msg ? msg : "error");
+    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : script_ + ": ") + stopped : msg ? msg : "error");
     lua_settop(L, 0);
     return false;
   }

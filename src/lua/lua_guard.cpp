@@ -13,6 +13,8 @@
 
 #include <lua.hpp>
 
+#include "core/paths.h"
+
 namespace essaim {
 
 namespace {
@@ -28,6 +30,24 @@ long long NowNs() {
       .count();
 }
 
+// "file:line" of the first Lua function up the stack of L (C functions have no line).
+// lua_getinfo with "Sl" neither allocates nor collects: safe inside the allocator.
+bool ScriptLine(lua_State* L, char* out, size_t size) {
+  lua_Debug ar;
+  for (int level = 0; level < 8 && lua_getstack(L, level, &ar); ++level) {
+    if (lua_getinfo(L, "Sl", &ar) && ar.currentline > 0) {
+      std::snprintf(out, size, "%s:%d", ar.short_src, ar.currentline);
+      return true;
+    }
+  }
+  return false;
+}
+// The Lua line that asked for memory over the limit, in the running coroutine.
+void RecordMemoryWhere(LuaGuard* g) {
+  lua_State* L = g->running ? g->running : g->state;
+  if (L) ScriptLine(L, g->memory_where, sizeof g->memory_where);
+}
+
 // Everything but the two common cases below: large blocks, reallocations, an empty free
 // list, the memory limit. Out of line, so that the fast path saves no registers.
 [[gnu::noinline]] void* SlowAlloc(LuaGuard* g, void* ptr, size_t old, size_t nsize) {
@@ -37,6 +57,7 @@ long long NowNs() {
     return nullptr;
   }
   if (g->limit && nsize > old && g->bytes - old + nsize > g->limit) {
+    if (!g->memory_exceeded) RecordMemoryWhere(g);
     g->memory_exceeded = true;
     return nullptr;  // Lua raises "not enough memory"; the owner reports the limit
   }
@@ -88,10 +109,25 @@ void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize) {
 
 void GuardHook(lua_State* L, lua_Debug*);
 
-/// Raises `what` at the interrupted line. From now on the hook fires at every instruction
-/// of this coroutine, so a pcall around the loop cannot swallow the stop.
-[[noreturn]] void Stop(lua_State* L, const char* what) {
+LuaGuard* GuardOf(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return static_cast<LuaGuard*>(ud);
+}
+
+/// From now on the hook fires at every instruction, of this coroutine and of the state's
+/// main thread, so a pcall around the loop cannot swallow the stop.
+void HookEveryInstruction(lua_State* L, LuaGuard* g) {
   lua_sethook(L, GuardHook, LUA_MASKCOUNT, 1);
+  if (g->state && g->state != L) lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, 1);
+}
+
+/// Raises `what` at the interrupted line; message handlers (xpcall) are skipped from now
+/// on, as Lua would run them inside this hook, where hooks are off.
+[[noreturn]] void Stop(lua_State* L, const char* what) {
+  LuaGuard* g = GuardOf(L);
+  g->stopped = true;
+  HookEveryInstruction(L, g);
   lua_Debug ar;
   if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
     lua_pushfstring(L, "%s:%d: %s", ar.short_src, ar.currentline, what);
@@ -101,10 +137,17 @@ void GuardHook(lua_State* L, lua_Debug*);
   std::abort();  // lua_error does not return
 }
 
+// The running line, kept for the stuck-in-C message (only for calls the monitor flagged).
+void RecordWhere(lua_State* L, LuaGuard* g) {
+  lua_Debug ar;
+  if (!lua_getstack(L, 0, &ar) || !lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) return;
+  std::lock_guard<std::mutex> lock(g->thread_mutex);
+  std::snprintf(g->where, sizeof g->where, "%s:%d", ar.short_src, ar.currentline);
+}
+
 void GuardHook(lua_State* L, lua_Debug*) {
-  void* ud = nullptr;
-  lua_getallocf(L, &ud);
-  auto* g = static_cast<LuaGuard*>(ud);
+  LuaGuard* g = GuardOf(L);
+  if (!g->exit_called.empty()) Stop(L, g->exit_called.c_str());
   // lua_gethookcount: a coroutine stopped earlier may count every instruction.
   if (g->budget > 0 && (g->budget_exceeded || (g->used += lua_gethookcount(L)) > g->budget)) {
     g->budget_exceeded = true;
@@ -118,6 +161,7 @@ void GuardHook(lua_State* L, lua_Debug*) {
     std::snprintf(what, sizeof what, "wall-clock limit exceeded (%g s per call)", g->wall_seconds);
     Stop(L, what);
   }
+  if (g->track_where.load(std::memory_order_relaxed)) RecordWhere(L, g);
 }
 
 // The monitor: one thread for the process, started with the first state. It arms the
@@ -135,7 +179,8 @@ void Watch(LuaGuard* g, long long now) {
   if (s < kArmAfterSeconds) return;
   if (g_interrupt.load(std::memory_order_relaxed)) g->interrupted.store(true, std::memory_order_relaxed);
   if (g->wall_seconds > 0 && s > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
-  // Re-armed if the script cleared it (debug.sethook()). lua_sethook may be called
+  if (s > 1) g->track_where.store(true, std::memory_order_relaxed);
+  // Re-armed if it was cleared (debug.sethook is refused now; kept as a backstop). lua_sethook may be called
   // asynchronously (ldebug.c).
   if (lua_gethook(g->state) != GuardHook) {
     lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);
@@ -148,9 +193,14 @@ void Watch(LuaGuard* g, long long now) {
   // No hook ran for another full limit: stuck inside a C function (a pathological
   // string.find), which cannot be unwound safely. Stop the process with a message.
   if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1) {
-    char message[160];
-    std::snprintf(message, sizeof message, "%s: stuck for %.0f s inside a C function called from Lua; stopping (exit 1)",
-                  g->name.c_str(), s);
+    char where[sizeof g->where + 16] = "";
+    {
+      std::lock_guard<std::mutex> lock(g->thread_mutex);
+      if (g->where[0]) std::snprintf(where, sizeof where, " (last at %s)", g->where);
+    }
+    char message[320];
+    std::snprintf(message, sizeof message, "%s: stuck for %.0f s inside a C function called from Lua%s; stopping (exit 1)",
+                  g->name.c_str(), s, where);
     if (LuaStuckHandler handler = g_stuck_handler.load()) handler(message);
     std::fprintf(stderr, "essaim: %s\n", message);
     std::fflush(stderr);
@@ -172,12 +222,6 @@ Monitor& TheMonitor() {
     return mon;
   }();
   return *m;
-}
-
-LuaGuard* GuardOf(lua_State* L) {
-  void* ud = nullptr;
-  lua_getallocf(L, &ud);
-  return static_cast<LuaGuard*>(ud);
 }
 
 // coroutine.resume, recording which coroutine runs (for the monitor) and handing it the
@@ -241,20 +285,145 @@ int TextOnlyLoad(lua_State* L) {
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
 }
-// package.searchers[2] under the sandbox: Lua files on package.path, as text only.
+// package.searchers[2] under the sandbox: Lua files on package.path, as text only, and
+// only inside the guard's require roots: a script cannot set package.path to read
+// /etc/passwd through require's error messages.
+std::string FindAllowedModule(lua_State* L, LuaGuard* g, const std::string& name, std::string* tried) {
+  std::string file_name = name;
+  std::replace(file_name.begin(), file_name.end(), '.', '/');
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "path");
+  const std::string path = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_pop(L, 2);
+  for (size_t start = 0; start <= path.size();) {
+    size_t end = path.find(';', start);
+    if (end == std::string::npos) end = path.size();
+    std::string candidate = path.substr(start, end - start);
+    start = end + 1;
+    if (candidate.empty()) continue;
+    for (size_t q = candidate.find('?'); q != std::string::npos; q = candidate.find('?', q + file_name.size()))
+      candidate.replace(q, 1, file_name);
+    const std::string real = CanonicalPath(candidate);
+    const bool allowed = !real.empty() && std::any_of(g->require_roots.begin(), g->require_roots.end(),
+                                                      [&](const std::string& root) { return IsInsideFolder(real, root); });
+    if (allowed && FileExists(real)) return candidate;
+    *tried += std::string(tried->empty() ? "" : "\n\t") + "no file '" + candidate + "'" + (real.empty() ? "" : allowed ? "" : " (outside the arena's folder)");
+  }
+  return "";
+}
+
 int TextOnlyLuaSearcher(lua_State* L) {
   const char* name = luaL_checkstring(L, 1);
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "searchpath");
-  lua_pushstring(L, name);
-  lua_getfield(L, -3, "path");
-  lua_call(L, 2, 2);  // filename, or nil and the places tried
-  if (lua_isnil(L, -2)) return 1;
-  const char* filename = lua_tostring(L, -2);
-  if (luaL_loadfilex(L, filename, "t") != LUA_OK)
-    return luaL_error(L, "error loading module '%s' from file '%s':\n\t%s", name, filename, lua_tostring(L, -1));
-  lua_pushstring(L, filename);
+  bool failed = false;
+  {  // the strings go before lua_error, whose longjmp skips C++ destructors
+    std::string tried;
+    const std::string filename = FindAllowedModule(L, GuardOf(L), name, &tried);
+    if (filename.empty()) {
+      lua_pushstring(L, tried.c_str());
+      return 1;
+    }
+    failed = luaL_loadfilex(L, filename.c_str(), "t") != LUA_OK;
+    if (failed) {
+      luaL_where(L, 1);
+      lua_pushfstring(L, "error loading module '%s' from file '%s':\n\t%s", name, filename.c_str(), lua_tostring(L, -2));
+      lua_concat(L, 2);
+    } else {
+      lua_pushstring(L, filename.c_str());
+    }
+  }
+  if (failed) return lua_error(L);
   return 2;
+}
+}  // namespace
+
+void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders) {
+  guard->require_roots.clear();
+  for (const std::string& folder : folders) {
+    std::string real = CanonicalPath(folder);
+    if (!real.empty()) guard->require_roots.push_back(real);
+  }
+}
+
+namespace {
+// The library functions wrapped below, called directly (plain C functions, no upvalues):
+// kept out of the Lua state, so that debug.getupvalue cannot hand a script the original.
+std::atomic<lua_CFunction> g_setmetatable{nullptr}, g_debug_setmetatable{nullptr}, g_xpcall{nullptr};
+
+// Lua runs __gc finalizers with hooks off, where no budget could stop a loop: refused.
+bool RefuseFinalizer(lua_State* L) {
+  if (lua_type(L, 2) != LUA_TTABLE) return false;
+  lua_pushliteral(L, "__gc");
+  const bool has_gc = lua_rawget(L, 2) != LUA_TNIL;
+  lua_pop(L, 1);
+  return has_gc;
+}
+int GuardedSetmetatable(lua_State* L) {
+  if (RefuseFinalizer(L))
+    return luaL_error(L, "setmetatable: a __gc finalizer is refused (Lua runs finalizers outside the watchdog)");
+  return g_setmetatable.load()(L);
+}
+int GuardedDebugSetmetatable(lua_State* L) {
+  if (RefuseFinalizer(L))
+    return luaL_error(L, "debug.setmetatable: a __gc finalizer is refused (Lua runs finalizers outside the watchdog)");
+  return g_debug_setmetatable.load()(L);
+}
+
+// An xpcall message handler, skipped once the guard stopped the call: Lua would run it
+// inside the stopping hook, with hooks off.
+int GuardedMessageHandler(lua_State* L) {
+  if (GuardOf(L)->stopped) return 1;  // the stop's message, as it is
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, 1);
+  return 1;
+}
+int GuardedXpcall(lua_State* L) {
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lua_pushvalue(L, 2);
+  lua_pushcclosure(L, GuardedMessageHandler, 1);
+  lua_replace(L, 2);
+  return g_xpcall.load()(L);  // Lua's own xpcall, in this frame: yields still work
+}
+
+int RefusedSethook(lua_State* L) {
+  return luaL_error(L, "debug.sethook is not available: the watchdog's hook cannot be replaced");
+}
+
+// os.exit ends the run as an error, never the process: essaim writes its outputs and
+// chooses the exit code. Raised like a stop, so no pcall can swallow it.
+int GuardedExit(lua_State* L) {
+  LuaGuard* g = GuardOf(L);
+  char where[160], what[192] = "os.exit called";
+  if (ScriptLine(L, where, sizeof where)) std::snprintf(what, sizeof what, "os.exit called at %s", where);
+  g->exit_called = what;
+  g->stopped = true;
+  HookEveryInstruction(L, g);
+  lua_pushstring(L, what);
+  return lua_error(L);
+}
+
+/// Replaces table[field] (the table on top of the stack) by `fn`, remembering the original.
+void Wrap(lua_State* L, const char* field, lua_CFunction fn, std::atomic<lua_CFunction>* original) {
+  lua_getfield(L, -1, field);
+  if (original) original->store(lua_tocfunction(L, -1));
+  lua_pop(L, 1);
+  lua_pushcfunction(L, fn);
+  lua_setfield(L, -2, field);
+}
+
+// Closes what escapes the watchdog, in every mode (the sandbox removes os and debug whole).
+void CloseEscapes(lua_State* L) {
+  lua_pushglobaltable(L);
+  Wrap(L, "setmetatable", GuardedSetmetatable, &g_setmetatable);
+  Wrap(L, "xpcall", GuardedXpcall, &g_xpcall);
+  lua_pop(L, 1);
+  if (lua_getglobal(L, "debug") == LUA_TTABLE) {
+    Wrap(L, "setmetatable", GuardedDebugSetmetatable, &g_debug_setmetatable);
+    Wrap(L, "sethook", RefusedSethook, nullptr);
+  }
+  lua_pop(L, 1);
+  if (lua_getglobal(L, "os") == LUA_TTABLE) Wrap(L, "exit", GuardedExit, nullptr);
+  lua_pop(L, 1);
 }
 }  // namespace
 
@@ -290,6 +459,7 @@ void CloseGuardedState(LuaGuard* guard) {
 void OpenGuardedLibraries(lua_State* L, bool sandbox) {
   luaL_openlibs(L);
   GuardCoroutines(L);
+  CloseEscapes(L);
   if (!sandbox) return;
   for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
     lua_pushnil(L);
@@ -325,6 +495,12 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox) {
 void BeginGuardedCall(LuaGuard* g) {
   g->used = 0;
   g->budget_exceeded = false;
+  g->stopped = false;
+  if (g->track_where.load(std::memory_order_relaxed)) {
+    g->track_where.store(false, std::memory_order_relaxed);
+    std::lock_guard<std::mutex> lock(g->thread_mutex);
+    g->where[0] = '\0';
+  }
   g->wall_exceeded.store(false, std::memory_order_relaxed);
   g->interrupted.store(false, std::memory_order_relaxed);
   if (g->always_armed) {
@@ -339,13 +515,14 @@ void BeginGuardedCall(LuaGuard* g) {
 
 std::string EndGuardedCall(LuaGuard* g, int status) {
   g->call_started_ns.store(0, std::memory_order_relaxed);
+  if (!g->exit_called.empty()) return g->exit_called;
   if (g->memory_exceeded) {
     char what[96];
     if (g->limit >= (size_t{1} << 20))
       std::snprintf(what, sizeof what, "memory limit exceeded (%zu MiB per Lua state, --lua-memory)", g->limit >> 20);
     else
       std::snprintf(what, sizeof what, "memory limit exceeded (%zu bytes per Lua state, --lua-memory)", g->limit);
-    return what;
+    return g->memory_where[0] ? std::string(g->memory_where) + ": " + what : std::string(what);
   }
   // Limits hit but caught by the script's own pcall still stop it.
   if (status == LUA_OK && g->budget_exceeded) return "instruction budget exceeded (caught by the script)";

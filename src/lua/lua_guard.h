@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "lua/small_block_pool.h"
 
@@ -42,19 +43,28 @@ struct LuaGuard {
   size_t allocations = 0;  // number of (re)allocations, for the no-churn test
   SmallBlockPool pool;     // where the state's small blocks live
   bool memory_exceeded = false;
+  char memory_where[160] = "";  // "foo.lua:12", the script line that hit the limit
   // Instructions, counted per call.
   long long budget = 0;
   long long used = 0;
   bool budget_exceeded = false;
+  bool stopped = false;      // the guard raised a stop in this call: message handlers are skipped
+  std::string exit_called;   // "os.exit called at foo.lua:12": the run must end
   bool always_armed = false;              // --sandbox: hooked from the first instruction
   std::atomic<bool> armed{false};         // the count hook is installed
   std::string name;  // "robot fb3" or "loop functions", for the stuck-in-C message
+  // --sandbox: the folders (canonical) `require` may load from, whatever package.path says.
+  std::vector<std::string> require_roots;
   // Wall clock: the monitor thread reads these while the owner's thread runs Lua.
   lua_State* state = nullptr;
   double wall_seconds = 0;
   std::atomic<long long> call_started_ns{0};  // 0: not inside a call
   std::atomic<bool> wall_exceeded{false};
   std::atomic<bool> interrupted{false};   // a signal arrived while this call was stuck
+  // Where a long call was last seen ("foo.lua:12"), for the stuck-in-C message: the hook
+  // records it once the monitor asks (calls over a second), so normal calls pay nothing.
+  std::atomic<bool> track_where{false};
+  char where[128] = "";                    // under thread_mutex
   // The coroutine being resumed (null: the main thread), so that the monitor arms the
   // thread that actually runs: hooks are per coroutine.
   std::mutex thread_mutex;
@@ -66,9 +76,16 @@ struct LuaGuard {
 lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options);
 void CloseGuardedState(LuaGuard* guard);
 
-/// The standard libraries; under the sandbox, without anything that reaches files,
-/// processes, native code, bytecode or the hooks.
+/// The standard libraries, with what would escape the watchdog closed in every mode:
+/// debug.sethook refused, __gc finalizers refused (Lua runs them with hooks off), xpcall
+/// message handlers skipped once the guard stopped the call, os.exit ending the run as an
+/// error. Under the sandbox, also without anything that reaches files, processes, native
+/// code or bytecode.
 void OpenGuardedLibraries(lua_State* L, bool sandbox);
+
+/// Under the sandbox, `require` loads only files inside these folders (and below): the
+/// arena's folder and the script's own. Symlinks and ".." are resolved before the check.
+void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders);
 
 /// Brackets one call into Lua: resets the budget and arms the wall clock.
 void BeginGuardedCall(LuaGuard* guard);
@@ -76,6 +93,10 @@ void BeginGuardedCall(LuaGuard* guard);
 /// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),
 /// else "". `status` is lua_pcall's result.
 std::string EndGuardedCall(LuaGuard* guard, int status);
+
+/// Whether EndGuardedCall's message already starts with the script's file:line (os.exit,
+/// the memory limit), so the caller need not name the script.
+inline bool StopNamesItsLine(const LuaGuard& g) { return !g.exit_called.empty() || g.memory_where[0] != '\0'; }
 
 /// Called (from the monitor thread) just before the process exits because a call is stuck
 /// inside a C function: the last chance to write summary.json. Null: none.

@@ -157,6 +157,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
   // `require` finds modules next to the script.
   std::string dir = DirName(script);
+  SetRequireRoots(&guard_, {DirName(model.file), dir});
   std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "path");
@@ -177,7 +178,8 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   const int status = lua_pcall(L, 0, 0, base);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
-    *error = "robot " + def.id + ": " + (stopped.empty() ? lua_tostring(L, -1) : script + ": " + stopped);
+    *error = "robot " + def.id + ": " +
+             (stopped.empty() ? lua_tostring(L, -1) : (StopNamesItsLine(guard_) ? "" : script + ": ") + stopped);
     lua_settop(L, 0);
     return false;
   }
@@ -281,8 +283,10 @@ bool LuaController::Finish(int status, const char* where, const char* name, std:
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
-    *error = "robot " + def_->id + ": " + (!stopped.empty() ? controller_->script + ": " + stopped : msg ? msg : "error") +
-             " (" + where + name + ")";
+    // The limits name the script, unless their message names its line already.
+    const std::string script = StopNamesItsLine(guard_) ? "" : controller_->script + ": ";
+    *error = "robot " + def_->id + ": " + (!stopped.empty() ? script + stopped : msg ? msg : "error") + " (" + where +
+             name + ")";
     lua_settop(L, 0);
     if (guard_.memory_exceeded) {
       // Free what the runaway took; the robot never runs again.

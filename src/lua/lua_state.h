@@ -48,6 +48,8 @@ class LuaController {
   const LuaGuard& Memory() const { return guard_; }
   /// robot.params keys never read so far and those read (nothing once the state is closed).
   void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
+  /// The script called os.exit: the run ends (as an error), not just this robot.
+  bool ExitCalled() const { return !guard_.exit_called.empty(); }
   ::lua_State* State() { return L_; }
 
  private:

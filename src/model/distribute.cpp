@@ -76,6 +76,18 @@ bool RectRect(const Footprint& a, const Footprint& b) {
 }
 }  // namespace
 
+Footprint ObstacleFootprint(const ObstacleDef& o) {
+  Footprint f;
+  f.center = {o.pose.x, o.pose.y};
+  if (o.kind == ShapeKind::Cylinder) {
+    f.radius = o.radius;
+  } else {
+    f.is_circle = false;
+    f.half_x = o.size_x / 2, f.half_y = o.size_y / 2, f.yaw = o.pose.yaw;
+  }
+  return f;
+}
+
 bool FootprintsOverlap(const Footprint& a, const Footprint& b) {
   if (a.is_circle && b.is_circle) {
     double r = a.radius + b.radius;

@@ -2,6 +2,7 @@
 #pragma once
 #include "core/math.h"
 #include "core/rng.h"
+#include "model/model.h"
 
 namespace essaim {
 
@@ -25,6 +26,9 @@ struct Footprint {
   double radius = 0;          // circle
   double half_x = 0, half_y = 0, yaw = 0;  // rectangle
 };
+
+/// An obstacle's footprint at its pose.
+Footprint ObstacleFootprint(const ObstacleDef& o);
 
 /// True when the two footprints overlap with positive depth (touching is not a collision,
 /// as in ARGoS's placement check).

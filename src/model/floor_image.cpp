@@ -5,15 +5,29 @@
 #include <cstdio>
 #include <cstring>
 
+#include "core/paths.h"
+
 namespace essaim {
 
-bool LoadPngBottomUp(const std::string& path, int* width, int* height, std::vector<Color>* pixels,
-                     std::string* error) {
+bool LoadPngBottomUp(const std::string& path, long long max_pixels, int* width, int* height,
+                     std::vector<Color>* pixels, std::string* error) {
+  const std::string kind = SpecialFileKind(path);
+  if (!kind.empty()) {
+    *error = "is " + kind + ", not a PNG file";
+    return false;
+  }
   png_image image;
   std::memset(&image, 0, sizeof image);
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&image, path.c_str())) {
     *error = std::string("cannot read PNG: ") + image.message;
+    return false;
+  }
+  const double pixel_count = static_cast<double>(image.width) * image.height;
+  if (pixel_count > static_cast<double>(max_pixels)) {
+    *error = std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels is over the limit of " +
+             std::to_string(max_pixels) + " pixels (<system max_floor_pixels>)";
+    png_image_free(&image);
     return false;
   }
   image.format = PNG_FORMAT_RGBA;

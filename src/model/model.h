@@ -149,7 +149,18 @@ struct LoopFunctionsDef {
   SourceLoc loc;
 };
 
+/// Sizes and counts essaim accepts, checked before anything is allocated (from the file and
+/// from add_entity); each can be raised with <system max_...> (docs/safety.md). The defaults
+/// keep a run well inside a few GiB.
+struct LimitsDef {
+  double arena_size = 10000;       // m, per side: <system max_arena_size>
+  double entity_size = 1000;       // m, a box's side or height, a cylinder's diameter or height
+  long long floor_pixels = 1 << 26;  // pixels of an image floor, read from the PNG header
+  long long entities = 20000;      // foot-bots, boxes, cylinders and lights, added ones included
+};
+
 struct ExperimentDef {
+  LimitsDef limits;
   int threads = 0;           // 0 = main thread only
   long long lua_budget = -1;      // <system lua_budget>: instructions per Lua call; -1 = default
   long long lua_memory_mib = -1;  // <system lua_memory>: MiB per Lua state; -1 = default

@@ -15,6 +15,7 @@
 #include "model/attribute_ledger.h"
 #include "model/distribute.h"
 #include "model/floor_image.h"
+#include "model/limits.h"
 #include "model/xml_overrides.h"
 
 namespace essaim {
@@ -51,7 +52,6 @@ class Loader {
   static double YawFromDegrees(double degrees) {
     return DegToRad(std::abs(degrees) > 360 ? std::fmod(degrees, 360.0) : degrees);
   }
-  static constexpr double kMaxCoordinate = 1e6;
   static constexpr int kMaxFloorSide = 8192;  // pixels of a loop-function floor
 
   // ---- typed attribute access: report and return a default on bad text. Every read goes
@@ -73,6 +73,15 @@ class Loader {
   double Double(const XMLElement* e, const char* name, double def, bool required = false);
   long long Int(const XMLElement* e, const char* name, long long def, bool required = false);
   void LoadWatchdog(const XMLElement* sys, ExperimentDef* x);
+  void LoadLimits(const XMLElement* sys, LimitsDef* limits);
+  /// False (an error at `e`) when `more` entities would take the experiment over its limit.
+  bool RoomFor(const XMLElement* e, long long more);
+  /// An error at `e` when the obstacle is over the size limit or out of range.
+  void CheckFits(const XMLElement* e, const ObstacleDef& o) {
+    std::string problem = ObstacleProblem(o, model_->experiment.limits);
+    if (!problem.empty()) Error(e, problem);
+  }
+  void CheckArenaSize(const XMLElement* e);
   bool Bool(const XMLElement* e, const char* name, bool def);
   Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
   void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
@@ -103,17 +112,7 @@ class Loader {
     f.radius = footbot::kRadius;
     return f;
   }
-  Footprint FootprintOf(const ObstacleDef& o) const {
-    Footprint f;
-    f.center = {o.pose.x, o.pose.y};
-    if (o.kind == ShapeKind::Cylinder) {
-      f.radius = o.radius;
-    } else {
-      f.is_circle = false;
-      f.half_x = o.size_x / 2, f.half_y = o.size_y / 2, f.yaw = o.pose.yaw;
-    }
-    return f;
-  }
+  Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
   std::string OutsideArena(const RobotDef& r) const;
   std::string Overlap(const RobotDef& r, size_t robots_before) const;
   bool Collides(const Footprint& f) const {
@@ -284,6 +283,7 @@ void Loader::LoadFramework(const XMLElement* e) {
     else
       x.threads = static_cast<int>(threads);
     LoadWatchdog(sys, &x);
+    LoadLimits(sys, &x.limits);
     std::string method = Str(sys, "method", "balance_quantity");
     if (method != "balance_quantity" && method != "balance_length")
       Error(sys, "method must be balance_quantity or balance_length");
@@ -336,6 +336,34 @@ void Loader::LoadWatchdog(const XMLElement* sys, ExperimentDef* x) {
     if (x->lua_memory_mib < 0 || x->lua_memory_mib > (1LL << 30))
       Error(sys, "lua_memory must be between 0 and 2^30 (MiB per Lua state; 0 = unlimited)");
   }
+}
+
+// The size and count limits (docs/safety.md): raised, never lowered below what a normal
+// experiment needs, by <system max_...>.
+void Loader::LoadLimits(const XMLElement* sys, LimitsDef* limits) {
+  for (auto [name, value] : {std::pair<const char*, double*>{"max_arena_size", &limits->arena_size},
+                             {"max_entity_size", &limits->entity_size}}) {
+    if (!Has(sys, name)) continue;
+    const double v = Double(sys, name, *value);
+    if (v > 0 && v <= kMaxCoordinate) *value = v;
+    else Error(sys, std::string(name) + " must be in (0, 1e6] m");
+  }
+  for (auto [name, value] : {std::pair<const char*, long long*>{"max_floor_pixels", &limits->floor_pixels},
+                             {"max_entities", &limits->entities}}) {
+    if (!Has(sys, name)) continue;
+    const long long v = Int(sys, name, *value);
+    if (v >= 1) *value = v;
+    else Error(sys, std::string(name) + " must be >= 1");
+  }
+}
+
+bool Loader::RoomFor(const XMLElement* e, long long more) {
+  const double count = static_cast<double>(model_->robots.size() + model_->obstacles.size() + model_->lights.size()) +
+                       static_cast<double>(more);
+  std::string problem = EntityCountProblem(count > 1e18 ? static_cast<size_t>(1e18) : static_cast<size_t>(count), model_->experiment.limits);
+  if (problem.empty()) return true;
+  Error(e, problem);
+  return false;
 }
 
 void Loader::LoadControllers(const XMLElement* e) {
@@ -607,6 +635,7 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) 
   CheckChildren(e, {"body", "leds"}, "expected body, leds");
   if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &o->pose, &o->z);
   else if (needs_body) Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
+  CheckFits(e, *o);
   if (const XMLElement* leds = e->FirstChildElement("leds")) {
     o->led_medium = Required(leds, "medium");
     for (auto* l = leds->FirstChildElement(); l; l = l->NextSiblingElement()) {
@@ -659,8 +688,9 @@ void Loader::LoadFloor(const XMLElement* e) {
     if (path.empty()) return;
     f.path = ResolvePath(path);
     std::string err;
-    if (!FileExists(f.path)) Error(e, "floor image '" + path + "' not found");
-    else if (!LoadPngBottomUp(f.path, &f.width, &f.height, &f.pixels, &err)) Error(e, "floor image '" + path + "': " + err);
+    if (!PathExists(f.path)) Error(e, "floor image '" + path + "' not found");
+    else if (!LoadPngBottomUp(f.path, model_->experiment.limits.floor_pixels, &f.width, &f.height, &f.pixels, &err))
+      Error(e, "floor image '" + path + "': " + err);
   } else if (source == "loop_functions") {
     f.source = FloorSource::LoopFunctions;
     f.pixels_per_meter = Double(e, "pixels_per_meter", 100);
@@ -677,10 +707,19 @@ void Loader::LoadFloor(const XMLElement* e) {
   }
 }
 
+void Loader::CheckArenaSize(const XMLElement* e) {
+  const Vec3& size = model_->arena.size;
+  const double limit = model_->experiment.limits.arena_size;
+  if (size.x() <= 0 || size.y() <= 0) Error(e, "size must be > 0");
+  else if (!(size.x() <= limit && size.y() <= limit))
+    Error(e, "size " + FormatDouble(std::max(size.x(), size.y())) + " m is over the limit of " + FormatDouble(limit) +
+                 " m per side (<system max_arena_size>)");
+}
+
 void Loader::LoadArena(const XMLElement* e) {
   model_->arena.size = Vector3(e, "size", Vec3(10, 10, 1), true);
   model_->arena.center = Vector3(e, "center", Vec3::Zero());
-  if (model_->arena.size.x() <= 0 || model_->arena.size.y() <= 0) Error(e, "size must be > 0");
+  CheckArenaSize(e);
   if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
   // Explicit entities in document order, then <distribute> blocks (spec §10.4).
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -711,6 +750,7 @@ void Loader::LoadArena(const XMLElement* e) {
       if (name != "distribute" && !ids_.insert(id).second) Error(c, std::string("duplicate id '") + id + "'");
     }
   }
+  RoomFor(e, 0);
   for (size_t i = 0; i < model_->robots.size(); ++i) {
     const RobotDef& r = model_->robots[i];
     std::string problem = OutsideArena(r);
@@ -798,6 +838,7 @@ void Loader::LoadDistribute(const XMLElement* e) {
   long long max_trials = Int(ent, "max_trials", 0, Has(ent, "max_trials") ? false : false);
   long long base_num = Int(ent, "base_num", 0);
   if (quantity < 0) Error(ent, "quantity must be >= 0");
+  else if (!RoomFor(ent, quantity)) return;
   if (max_trials < 0) Error(ent, "max_trials must be >= 0");
   const XMLElement* proto = ent->FirstChildElement();
   if (!proto) {
@@ -871,6 +912,11 @@ void Loader::LoadDistribute(const XMLElement* e) {
         ob.id = id;
         ob.pose = pose;
         ob.z = p.z();
+        std::string problem = ObstacleProblem(ob, model_->experiment.limits);
+        if (!problem.empty()) {
+          Error(pos, "'" + id + "': " + problem);
+          return;
+        }
         Footprint f = FootprintOf(ob);
         if (Collides(f)) {
           if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry

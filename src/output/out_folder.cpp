@@ -1,6 +1,8 @@
 #include "output/out_folder.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -78,18 +80,50 @@ bool PrepareOutFolder(const std::string& dir, std::string* error) {
   return true;
 }
 
+namespace {
+/// N of a folder named previous-N (N >= 2), else 0.
+long Generation(const std::string& name) {
+  const std::string head = std::string(kPreviousRunFolder) + "-";
+  if (name.rfind(head, 0) != 0 || name.size() == head.size() || name.size() > head.size() + 9) return 0;
+  for (size_t i = head.size(); i < name.size(); ++i)
+    if (name[i] < '0' || name[i] > '9') return 0;
+  const long n = std::stol(name.substr(head.size()));
+  return n >= 2 ? n : 0;
+}
+
+/// previous/ -> previous-2/, previous-2/ -> previous-3/, ...: the oldest moved first.
+bool ShiftGenerations(const fs::path& dir, std::string* error) {
+  std::vector<long> numbers;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (long n = Generation(it->path().filename().string())) numbers.push_back(n);
+  std::sort(numbers.rbegin(), numbers.rend());
+  auto name = [&](long n) { return dir / (std::string(kPreviousRunFolder) + (n < 2 ? "" : "-" + std::to_string(n))); };
+  numbers.push_back(1);  // previous/ itself, last
+  for (long n : numbers) {
+    if (!fs::exists(name(n), ec)) continue;
+    fs::rename(name(n), name(n < 2 ? 2 : n + 1), ec);
+    if (ec) {
+      *error = "cannot move " + name(n).string() + " to " + name(n < 2 ? 2 : n + 1).string() + ": " + ec.message();
+      return false;
+    }
+  }
+  return true;
+}
+}  // namespace
+
 bool SetAsideEarlierOutputs(const std::string& dir, std::vector<std::string>* moved, std::string* error) {
   moved->clear();
   std::vector<std::string> names = RunOutputsIn(dir);
   if (names.empty()) return true;
   const fs::path previous = fs::path(dir) / kPreviousRunFolder;
+  if (!ShiftGenerations(dir, error)) return false;
   std::error_code ec;
   fs::create_directories(previous, ec);
   if (ec) {
     *error = "cannot create " + previous.string() + " for the earlier run's outputs: " + ec.message();
     return false;
   }
-  for (const std::string& name : RunOutputsIn(previous)) fs::remove(previous / name, ec);
   for (const std::string& name : names) {
     fs::rename(fs::path(dir) / name, previous / name, ec);
     if (ec) {
@@ -99,6 +133,48 @@ bool SetAsideEarlierOutputs(const std::string& dir, std::vector<std::string>* mo
     moved->push_back(name);
   }
   return true;
+}
+
+OutFolderLock::~OutFolderLock() { Release(); }
+
+void OutFolderLock::Release() {
+  if (fd_ < 0) return;
+  ::unlink(path_.c_str());  // while still held: a run waiting on this file retries on the new one
+  ::close(fd_);
+  fd_ = -1;
+}
+
+bool OutFolderLock::Acquire(const std::string& dir, std::string* error) {
+  Release();
+  path_ = (fs::path(dir) / kLockFile).string();
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+    if (fd < 0) {
+      *error = "--out " + dir + ": cannot open " + path_ + ": " + std::strerror(errno);
+      return false;
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+      char owner[32] = {0};
+      const ssize_t n = ::pread(fd, owner, sizeof owner - 1, 0);
+      ::close(fd);
+      std::string pid = n > 0 ? std::string(owner, static_cast<size_t>(n)) : "unknown";
+      while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+      *error = "--out " + dir + " is in use by another essaim run (pid " + pid + "); give another folder";
+      return false;
+    }
+    // Locked, but the file may have been removed by the run that held it: lock the one there.
+    struct stat held, there;
+    if (::fstat(fd, &held) == 0 && ::stat(path_.c_str(), &there) == 0 && held.st_ino == there.st_ino &&
+        held.st_dev == there.st_dev) {
+      const std::string pid = std::to_string(::getpid()) + "\n";
+      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {}  // the pid is for messages only
+      fd_ = fd;
+      return true;
+    }
+    ::close(fd);
+  }
+  *error = "--out " + dir + ": cannot take the lock " + path_;
+  return false;
 }
 
 }  // namespace essaim

@@ -19,10 +19,31 @@ bool IsRunOutputName(const std::string& name);
 /// name in it that is not a regular file (a folder called summary.json...).
 bool PrepareOutFolder(const std::string& dir, std::string* error);
 
-/// Moves every run output found in `dir` (IsRunOutputName) into dir/previous/, first
-/// removing the run outputs previous/ held, so previous/ holds one earlier run. Files
-/// essaim does not write (the user's, the loop functions') are left where they are.
-/// `moved` gets the names moved, sorted.
+/// Moves every run output found in `dir` (IsRunOutputName) into dir/previous/, after
+/// moving an earlier previous/ to previous-2/ (previous-2/ to previous-3/, and so on): no
+/// earlier run is lost. Files essaim does not write (the user's, the loop functions') are
+/// left where they are. `moved` gets the names moved, sorted.
 bool SetAsideEarlierOutputs(const std::string& dir, std::vector<std::string>* moved, std::string* error);
+
+/// The lock file a run holds in its folder (flock), with the owner's pid for messages.
+constexpr const char* kLockFile = ".essaim-lock";
+
+/// One run per folder at a time: a lock held from before the first output is touched until
+/// the run ends (or its process dies: the kernel releases it). The file is removed on release.
+class OutFolderLock {
+ public:
+  OutFolderLock() = default;
+  ~OutFolderLock();
+  OutFolderLock(const OutFolderLock&) = delete;
+  OutFolderLock& operator=(const OutFolderLock&) = delete;
+  /// False with "--out DIR is in use by another essaim run (pid N)..." when another holds it.
+  bool Acquire(const std::string& dir, std::string* error);
+  void Release();
+  bool Held() const { return fd_ >= 0; }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
 
 }  // namespace essaim

@@ -400,6 +400,10 @@ void RecordingWriter::WriteFrame(const World& w) {
 
 bool RecordingWriter::Finish(const World& world, std::string* error) {
   if (file_ && world.tick != last_tick_) WriteFrame(world);
+  return Seal(error);
+}
+
+bool RecordingWriter::Seal(std::string* error) {
   if (!file_) {
     *error = failure_.empty() ? "recording " + path_ + " is not open" : failure_;
     return false;

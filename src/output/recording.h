@@ -101,6 +101,9 @@ class RecordingWriter {
   /// Writes the last tick's frame if it was not recorded, flushes and renames the file.
   /// False with the reason when any write failed, now or during the run.
   bool Finish(const World& world, std::string* error);
+  /// Finish without a last frame: the frames written so far, flushed and renamed (the
+  /// watchdog's last resort, while the world is mid-tick).
+  bool Seal(std::string* error);
   bool IsOpen() const { return file_ != nullptr; }
   /// Why the recording stopped ("" while it goes on).
   const std::string& Failure() const { return failure_; }

@@ -23,6 +23,7 @@ int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
 b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
 
 constexpr double kMaxStaticPiece = 1.0;  // m, longest side of one static box fixture
+constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
 }  // namespace
 
 struct PhysicsWorld::Impl {
@@ -145,8 +146,11 @@ int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
     // A long wall's bounding box overlaps most of the tree and makes every ray cast visit
     // it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tile it into
     // pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances.
-    int nx = static_cast<int>(std::ceil(o.size_x / kMaxStaticPiece));
-    int ny = static_cast<int>(std::ceil(o.size_y / kMaxStaticPiece));
+    // At most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
+    double piece = kMaxStaticPiece;
+    while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
+    int nx = static_cast<int>(std::ceil(o.size_x / piece));
+    int ny = static_cast<int>(std::ceil(o.size_y / piece));
     float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
     for (int ix = 0; ix < nx; ++ix)
       for (int iy = 0; iy < ny; ++iy) {

@@ -68,11 +68,23 @@ std::string ValueText(const py::handle& v) {
   return py::str(v).cast<std::string>();
 }
 
+// What the CLI refuses, refused before anything is loaded or created: a thread count out
+// of --threads' range (100000 threads hung), a NUL byte in a path (C would cut it there).
+constexpr int kMaxThreads = 1024;
+void CheckArguments(const std::string& path, std::optional<int> threads, const std::optional<std::string>& out) {
+  if (threads && (*threads < 1 || *threads > kMaxThreads))
+    throw py::value_error("threads must be between 1 and " + std::to_string(kMaxThreads) + ", got " +
+                          std::to_string(*threads) + " (None: the experiment's <system threads>)");
+  if (path.find('\0') != std::string::npos) throw py::value_error("path holds a NUL byte");
+  if (out && out->find('\0') != std::string::npos) throw py::value_error("out holds a NUL byte");
+}
+
 class Simulation {
  public:
   Simulation(const std::string& path, std::optional<uint64_t> seed, std::optional<int> threads,
              std::optional<py::dict> overrides, std::optional<std::string> out, bool strict)
       : path_(path), strict_(strict), out_(out.value_or("")) {
+    CheckArguments(path, threads, out);
     load_.strict = strict;
     load_.seed = seed;
     load_.threads = threads;
@@ -105,7 +117,8 @@ class Simulation {
     if (!model_) throw Error(errors.Format());
     Warn(warnings);
     std::string error;
-    if (!out_.empty() && !PrepareOutFolder(out_, &error)) throw Error(error);
+    if (!out_.empty() && (!PrepareOutFolder(out_, &error) || (!out_lock_.Held() && !out_lock_.Acquire(out_, &error))))
+      throw Error(error);
     t0_ = std::chrono::steady_clock::now();
     {
       py::gil_scoped_release nogil;
@@ -188,6 +201,7 @@ class Simulation {
   /// Steps up to n ticks (fewer when the experiment ends); returns the ticks stepped.
   uint64_t StepN(uint64_t n) {
     World& w = Live();
+    if (finished_) throw Error("step: this run has ended (finish() was called)");
     uint64_t done = 0;
     while (done < n && status_ == StepStatus::Running) {
       uint64_t chunk = std::min<uint64_t>(n - done, kSignalCheckTicks);
@@ -260,7 +274,7 @@ class Simulation {
   /// Ends the run: post_experiment, controllers' destroy, outputs written to `out`.
   /// Returns the metrics (post_experiment's table, {} when it returned none).
   py::object Finish() {
-    if (finished_) return metrics_;
+    if (finished_) throw Error("finish: this run has ended already (finish() was called)");
     World& w = Live();
     RunInfo info;
     info.version = ESSAIM_VERSION;
@@ -325,6 +339,7 @@ class Simulation {
   void Close() {
     world_.reset();
     model_.reset();
+    out_lock_.Release();
   }
 
  private:
@@ -386,6 +401,7 @@ class Simulation {
   std::vector<LogLine> logs_;
   py::list errors_;
   size_t reported_errors_ = 0;
+  OutFolderLock out_lock_;  // one run per folder, as the CLI's
   StepStatus status_ = StepStatus::Running;
   bool finished_ = false;
   py::object metrics_ = py::none(), summary_ = py::none();

@@ -131,7 +131,7 @@ StepStatus Step(World& w) {
     if (!w.pending_errors[i].empty()) {
       w.controller_errors.push_back({m.robots[i].id, w.tick, w.pending_errors[i]});
       w.pending_errors[i].clear();
-      if (w.options.strict) {
+      if (w.options.strict || w.controllers[i]->ExitCalled()) {
         w.failure = w.controller_errors.back().message;
         failed = true;
       }
@@ -163,8 +163,13 @@ bool FinishRun(World& w, Json* metrics, bool* has_metrics, std::string* error) {
   FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
-    if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err))
+    if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err)) {
       w.controller_errors.push_back({w.model.robots[i].id, w.tick, err});
+      if (w.controllers[i]->ExitCalled() && ok) {
+        ok = false;
+        *error = err;
+      }
+    }
     FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
   }
   return ok;

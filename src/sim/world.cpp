@@ -101,7 +101,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
     if (!w->controllers[i]->CallInit(&err)) {
       w->robots[i].controller_ok = false;
       w->controller_errors.push_back({model.robots[i].id, 0, err});
-      if (options.strict) {
+      if (options.strict || w->controllers[i]->ExitCalled()) {
         w->failure = err;
         break;
       }

@@ -59,11 +59,12 @@ def test_reused_out_folder_moves_the_earlier_runs_outputs_into_previous(tmp_path
     stale = run("replay", out)
     assert stale.returncode == 2 and "no recording" in stale.stderr
 
-    # previous/ holds one earlier run, not a mix: the 5-tick run's recording goes.
+    # previous/ holds one earlier run, not a mix: the 5-tick run moves on to previous-2/, whole.
     r = run("run", exp, "--ticks", 4, "--quiet", "--out", out, cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert sorted(p.name for p in (out / "previous").iterdir()) == ["metrics.json", "summary.json"]
     assert summary(out / "previous")["ticks"] == 3 and summary(out)["ticks"] == 4
+    assert summary(out / "previous-2")["ticks"] == 5 and (out / "previous-2" / "recording.bin").is_file()
 
 
 def test_a_fresh_folder_gets_no_note(tmp_path):

@@ -94,7 +94,12 @@ end)",
 TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
   SimOptions so;
   so.lua.instruction_limit = 1000000;
+  // debug.sethook is refused outright (a loop calling it kept removing the hook)...
   std::string e = StepError("function step() debug.sethook() local x = 1 while x > 0 do x = x + 1 end end", so);
+  EXPECT_NE(e.find("c.lua:1: debug.sethook is not available: the watchdog's hook cannot be replaced"), std::string::npos)
+      << e;
+  // ...and a script that catches the refusal is still stopped by its budget.
+  e = StepError("function step() pcall(debug.sethook) local x = 1 while x > 0 do x = x + 1 end end", so);
   EXPECT_NE(e.find("c.lua:1: instruction budget exceeded (1000000 instructions per call"), std::string::npos) << e;
   EXPECT_NE(e.find("stack traceback"), std::string::npos) << e;
 }

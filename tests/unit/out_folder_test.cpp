@@ -30,27 +30,48 @@ TEST(OutFolder, KnowsTheNamesEssaimWritesAndNoOthers) {
     EXPECT_FALSE(IsRunOutputName(name)) << name;
 }
 
-TEST(OutFolder, MovesOnlyEssaimsFilesAndKeepsOneEarlierRun) {
+TEST(OutFolder, MovesOnlyEssaimsFilesAndKeepsEveryEarlierRun) {
   TempDir d;
-  d.Write("summary.json", "2");
-  d.Write("recording.bin", "2");
+  d.Write("summary.json", "3");
+  d.Write("recording.bin", "3");
   d.Write("notes.txt", "mine");
   fs::create_directories(d.path() + "/previous");
-  d.Write("previous/summary.json", "1");
-  d.Write("previous/timeseries.csv", "1");
+  d.Write("previous/summary.json", "2");
+  d.Write("previous/timeseries.csv", "2");
   d.Write("previous/keep.txt", "mine too");
+  fs::create_directories(d.path() + "/previous-2");
+  d.Write("previous-2/summary.json", "1");
   std::vector<std::string> moved;
   std::string error;
   ASSERT_TRUE(SetAsideEarlierOutputs(d.path(), &moved, &error)) << error;
   EXPECT_EQ(moved, (std::vector<std::string>{"recording.bin", "summary.json"}));
   std::string text;
-  EXPECT_TRUE(ReadFile(d.path() + "/previous/summary.json", &text) && text == "2");
-  EXPECT_FALSE(FileExists(d.path() + "/previous/timeseries.csv"));  // the older run's: gone
-  EXPECT_TRUE(FileExists(d.path() + "/previous/keep.txt"));
+  EXPECT_TRUE(ReadFile(d.path() + "/previous/summary.json", &text) && text == "3");
+  EXPECT_FALSE(FileExists(d.path() + "/previous/timeseries.csv"));
+  // The older runs moved one generation back, whole.
+  EXPECT_TRUE(ReadFile(d.path() + "/previous-2/summary.json", &text) && text == "2");
+  EXPECT_TRUE(ReadFile(d.path() + "/previous-2/timeseries.csv", &text) && text == "2");
+  EXPECT_TRUE(FileExists(d.path() + "/previous-2/keep.txt"));
+  EXPECT_TRUE(ReadFile(d.path() + "/previous-3/summary.json", &text) && text == "1");
   EXPECT_TRUE(FileExists(d.path() + "/notes.txt"));
   EXPECT_FALSE(FileExists(d.path() + "/summary.json"));
   ASSERT_TRUE(SetAsideEarlierOutputs(d.path(), &moved, &error)) << error;
   EXPECT_TRUE(moved.empty());
+  EXPECT_FALSE(fs::exists(d.path() + "/previous-4"));  // nothing to set aside: no shift
+}
+
+TEST(OutFolder, ASecondLockOnAFolderIsRefusedWithTheOwnersPid) {
+  TempDir d;
+  OutFolderLock first, second;
+  std::string error;
+  ASSERT_TRUE(first.Acquire(d.path(), &error)) << error;
+  // flock locks are per open file: a second open in this process conflicts like another's.
+  EXPECT_FALSE(second.Acquire(d.path(), &error));
+  EXPECT_NE(error.find("is in use by another essaim run (pid " + std::to_string(::getpid()) + ")"), std::string::npos)
+      << error;
+  first.Release();
+  EXPECT_FALSE(fs::exists(d.path() + "/" + kLockFile));
+  EXPECT_TRUE(second.Acquire(d.path(), &error)) << error;
 }
 
 TEST(OutFolder, RefusesAFileAndAFolderNamedLikeAnOutput) {

@@ -308,8 +308,9 @@ TEST(RangeAndBearing, SetDataErrors) {
 
 TEST(RangeAndBearing, SetDataConvertsEachElementOnceAsACast) {
   // set_data(array) reads each element once (a proxy's __index runs once per element) and
-  // converts integers and floats alike: LuaNumberToByte of the element as a double, so
-  // integers beyond 2^53 round first, as the double they were read as before.
+  // converts integers and floats alike: LuaNumberToByte of the element as a double. Beyond
+  // +-2^31 (where ARGoS's cast is undefined) an element is refused, naming it, and the
+  // payload stays as it was.
   TempDir d;
   d.Write("conv.lua", R"(
 local rab = robot.range_and_bearing
@@ -319,19 +320,26 @@ function init()
                                   __len = function() return 10 end})
   rab.set_data(proxy)
   log(reads, math.type(2^53 + 1), math.type(9007199254740993))
-  rab.set_data({9007199254740993, -9007199254740995, math.mininteger, math.maxinteger, 255.0, -0.5, 1e300,
-                2^53, -300, 44.7})
+  rab.set_data({2147483647, -2147483647, 2147483647.5, -2147483647.5, 255.0, -0.5, 1e9, 2^30, -300, 44.7})
+  for _, huge in ipairs({9007199254740993, math.mininteger, 1e300, 2^31, -2^31}) do
+    local ok, err = pcall(rab.set_data, {1, 2, 3, 4, 5, 6, 7, 8, 9, huge})
+    log(ok, err:match('element #10 %S+ is out of range') or err)
+  end
 end
 function step() end
 )");
   auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "conv"), RabController("conv", "conv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"10\tfloat\tinteger"}));
-  const double as_read[] = {9007199254740993.0, -9007199254740995.0, -9223372036854775808.0, 9223372036854775807.0,
-                            255.0, -0.5, 1e300, 9007199254740992.0, -300.0, 44.7};
+  EXPECT_EQ(ls->lines, std::vector<std::string>({"10\tfloat\tinteger", "0\telement #10 9.0072e+15 is out of range",
+                                                 "0\telement #10 -9.22337e+18 is out of range",
+                                                 "0\telement #10 1e+300 is out of range",
+                                                 "0\telement #10 2.14748e+09 is out of range",
+                                                 "0\telement #10 -2.14748e+09 is out of range"}));
+  const double as_read[] = {2147483647.0, -2147483647.0, 2147483647.5, -2147483647.5, 255.0, -0.5, 1e9,
+                            1073741824.0, -300.0, 44.7};
   std::vector<int> want;
   for (double v : as_read) want.push_back(LuaNumberToByte(v));
-  EXPECT_EQ(want, std::vector<int>({0, 252, 0, 0, 255, 0, 0, 0, 212, 44}));
+  EXPECT_EQ(want, std::vector<int>({255, 1, 255, 1, 255, 0, 0, 0, 212, 44}));
   const std::vector<uint8_t>& got = ls->s.world->robots[0].cmd.rab_data;
   EXPECT_EQ(std::vector<int>(got.begin(), got.end()), want);
 }
@@ -568,7 +576,7 @@ end
     Scene s = Load(d, xml, {}, sim);
     ASSERT_TRUE(s.ok()) << s.error;
     RunTicks(*s.world, 60);
-    EXPECT_TRUE(s.world->controller_errors.empty());
+    EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors.front().message;
     hash[k] = PoseHash(*s.world);
   }
   EXPECT_EQ(hash[0], hash[1]);

@@ -89,7 +89,7 @@ class Snapshot : public ::testing::Test {
     EXPECT_TRUE(RenderSnapshotPng(rec_, frame, opt, &png, &error)) << error;
     std::string path = dir_.path() + "/snap.png";
     EXPECT_TRUE(WriteFileAtomic(path, png, &error)) << error;
-    EXPECT_TRUE(LoadPngBottomUp(path, &img.width, &img.height, &img.pixels, &error)) << error;
+    EXPECT_TRUE(LoadPngBottomUp(path, 1 << 26, &img.width, &img.height, &img.pixels, &error)) << error;
     img.min = rec_.scene().arena_min;
     img.px_per_m = img.width / rec_.scene().arena_size.x();
     return img;
