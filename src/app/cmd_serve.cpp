@@ -92,7 +92,7 @@ CommandMain AddServeCommand(CLI::App& app) {
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
   sub->add_option("--set-file", a->set_file, "a JSON object {\"PATH\": value, ...} of overrides")->type_name("FILE.json");
-  sub->footer("Example:\n  essaim serve arenas/foraging.argos     # then open the printed http://127.0.0.1:8765/?token=... line");
+  sub->footer("Example:\n  essaim serve arenas/foraging.argos     # then open the printed http://127.0.0.1:8765/?token=... line; Ctrl-C ends");
   return [a] { return Serve(*a); };
 }
 
