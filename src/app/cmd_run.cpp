@@ -84,8 +84,8 @@ void OnLuaStuck(const std::string& message) {
   std::string error;
   if (!g_run.world) {  // stuck in the loading or init() of a script
     if (g_run.args)
-      WriteFailureSummary(g_run.out, ESSAIM_VERSION, g_run.args->file, g_run.args->load.overrides, g_run.model, message,
-                          &error);
+      WriteFailureSummary(g_run.out, ESSAIM_VERSION, g_run.args->file, g_run.args->load.overrides, g_run.model,
+                          /*inputs=*/nullptr, message, &error);
     return;
   }
   RunInfo info = g_run.info;

@@ -141,34 +141,4 @@ Json LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits) 
   return out;
 }
 
-std::vector<std::string> RequiredModuleFiles(lua_State* L) {
-  std::vector<std::string> files;
-  if (!L || !lua_checkstack(L, 8)) return files;
-  lua_getglobal(L, "package");
-  if (lua_type(L, -1) != LUA_TTABLE) {
-    lua_pop(L, 1);
-    return files;
-  }
-  lua_getfield(L, -1, "loaded");
-  lua_getfield(L, -2, "searchpath");
-  lua_getfield(L, -3, "path");
-  const int loaded = lua_absindex(L, -3), searchpath = lua_absindex(L, -2), path = lua_absindex(L, -1);
-  if (lua_type(L, loaded) == LUA_TTABLE && lua_type(L, searchpath) == LUA_TFUNCTION && lua_type(L, path) == LUA_TSTRING) {
-    lua_pushnil(L);
-    while (lua_next(L, loaded) != 0) {
-      if (lua_type(L, -2) == LUA_TSTRING) {
-        lua_pushvalue(L, searchpath);
-        lua_pushvalue(L, -3);
-        lua_pushvalue(L, path);
-        if (lua_pcall(L, 2, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING) files.push_back(lua_tostring(L, -1));
-        lua_pop(L, 1);
-      }
-      lua_pop(L, 1);
-    }
-  }
-  lua_pop(L, 4);
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 }  // namespace essaim

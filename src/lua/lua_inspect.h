@@ -1,6 +1,5 @@
-// Looking into a Lua state from outside, between calls: what a live view's inspector shows
-// and which files a state loaded through `require`. Reads only (raw access: no metamethod
-// runs, nothing allocated in the state).
+// Looking into a Lua state from outside, between calls: what a live view's inspector shows.
+// Reads only (raw access: no metamethod runs, nothing allocated in the state).
 #pragma once
 #include <string>
 #include <vector>
@@ -23,8 +22,5 @@ struct LuaTreeLimits {
 Json LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits = {});
 /// One global table (e.g. "robot") as a tree, functions left out; null when not a table.
 Json LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits = {});
-/// The files of the modules `require` loaded in this state (package.loaded's names found on
-/// package.path), in name order.
-std::vector<std::string> RequiredModuleFiles(lua_State* L);
 
 }  // namespace essaim
