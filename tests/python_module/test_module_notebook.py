@@ -160,7 +160,9 @@ def test_per_robot_arrays_hold_each_robots_own_value(tmp_path):
         sim.step(20)
         assert sim.battery().tolist() == [sim.lua_global(i, "b") for i in range(5)]
         assert len(set(sim.battery().tolist())) == 2
-    with essaim.Simulation(FORAGING, seed=3, overrides=SMALL) as sim:
+    # Robots that stand still: those outside the nest run out of battery, the others live.
+    idle = controller(tmp_path, "function init() end\nfunction step() end\n")
+    with essaim.Simulation(FORAGING, seed=3, overrides=idle) as sim:
         sim.run()
         metrics = sim.finish()
         dead = {d["robot"] for d in metrics["dead_robots"]}
