@@ -77,7 +77,9 @@ def test_examples_run_as_written(doc, tmp_path, essaim):
 
 def test_few_examples_are_left_out_and_each_says_why():
     skipped = [ex for doc in DOCS for ex in examples(ROOT / doc, ROOT) if ex.skip]
-    assert len(skipped) <= 10, [ex.where for ex in skipped]
+    # 13: installs, sanitizer and fuzz runs, a Dask cluster, SLURM, and the three blocks of
+    # `serve` / `run --watch`, which run until Ctrl-C (the live test drives them).
+    assert len(skipped) <= 13, [ex.where for ex in skipped]
     for ex in skipped:
         assert len(ex.skip) > 15, f"{ex.where}: say why it is not run"
 
