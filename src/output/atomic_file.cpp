@@ -6,22 +6,13 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "core/paths.h"
+
 namespace essaim {
 
 namespace fs = std::filesystem;
 
 namespace {
-const char* KindName(fs::file_type t) {
-  switch (t) {
-    case fs::file_type::directory: return "a folder";
-    case fs::file_type::fifo: return "a FIFO";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
-  }
-}
-
 /// The file a write to `path` lands in: `path` itself, or a symlink's final target.
 bool ResolveOutput(const std::string& path, std::string* target, std::string* error) {
   std::error_code ec;
@@ -40,13 +31,12 @@ bool ResolveOutput(const std::string& path, std::string* target, std::string* er
 bool CheckOutputFile(const std::string& path, std::string* error) {
   std::string target;
   if (!ResolveOutput(path, &target, error)) return false;
-  std::error_code ec;
-  fs::file_status st = fs::symlink_status(target, ec);
-  if (fs::exists(st) && !fs::is_regular_file(st)) {
-    *error = "cannot write " + path + ": it is " + KindName(st.type()) +
-             ", not a regular file (refusing to replace it)";
+  const std::string kind = SpecialFileKind(target);  // the target has no symlink left
+  if (!kind.empty()) {
+    *error = "cannot write " + path + ": it is " + kind + ", not a regular file (refusing to replace it)";
     return false;
   }
+  std::error_code ec;
   fs::path parent = fs::path(target).parent_path();
   if (parent.empty()) parent = ".";
   if (!fs::is_directory(parent, ec)) {

@@ -133,18 +133,6 @@ uint16_t QuantiseYaw(double yaw) {
 }
 double YawOf(uint16_t q) { return q * (kTwoPi / 65536.0); }
 
-Color RepresentativeColor(const Color* leds, int n) {
-  for (int i = 0; i < n; ++i)
-    if (!leds[i].IsBlack()) return leds[i];
-  return Color{0, 0, 0, 255};
-}
-
-Color ObstacleLed(const ObstacleDef& o) {
-  for (const LedDef& l : o.leds)
-    if (!l.color.IsBlack()) return l.color;
-  return Color{0, 0, 0, 255};
-}
-
 // ---- floor ------------------------------------------------------------------------
 
 /// The raster downsampled (nearest pixel) to at most kRecordingFloorMaxSide per side, as a
@@ -242,6 +230,18 @@ std::string SerializeScene(const RecordingScene& s, uint32_t frame_bytes) {
 }
 
 }  // namespace
+
+Color RepresentativeColor(const Color* leds, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!leds[i].IsBlack()) return leds[i];
+  return Color{0, 0, 0, 255};
+}
+
+Color ObstacleLed(const ObstacleDef& o) {
+  for (const LedDef& l : o.leds)
+    if (!l.color.IsBlack()) return l.color;
+  return Color{0, 0, 0, 255};
+}
 
 uint16_t PackRgb565(Color c) {
   return static_cast<uint16_t>(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));

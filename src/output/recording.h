@@ -172,5 +172,9 @@ RecordingScene SceneOf(const World& world, uint32_t every);
 /// RGB565 with bit replication on the way back (0 → 0, full → 255).
 uint16_t PackRgb565(Color c);
 Color UnpackRgb565(uint16_t v);
+/// The colour a robot or obstacle is drawn with (recordings, the live page): its first lit
+/// LED; black when none is lit.
+Color RepresentativeColor(const Color* leds, int n);
+Color ObstacleLed(const ObstacleDef& o);
 
 }  // namespace essaim

@@ -25,19 +25,6 @@ Json Rgb(const Color& c) { return Json::array({c.r, c.g, c.b}); }
 
 Json LedOrNull(const Color& c) { return c.IsBlack() ? Json() : Rgb(c); }
 
-// The first lit LED, as the replay page shows a robot or an obstacle.
-Color FirstLit(const Color* leds, size_t n) {
-  for (size_t i = 0; i < n; ++i)
-    if (!leds[i].IsBlack()) return leds[i];
-  return Color{0, 0, 0, 255};
-}
-
-Color ObstacleLed(const ObstacleDef& o) {
-  for (const LedDef& l : o.leds)
-    if (!l.color.IsBlack()) return l.color;
-  return Color{0, 0, 0, 255};
-}
-
 Json RobotJson(const World& w, size_t i) {
   const RobotState& r = w.robots[i];
   Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
@@ -46,7 +33,7 @@ Json RobotJson(const World& w, size_t i) {
   j["x"] = Round(pose.x, 4);
   j["y"] = Round(pose.y, 4);
   j["yaw"] = Round(Heading(pose.yaw), 4);
-  j["led"] = LedOrNull(FirstLit(r.leds, footbot::kLedCount));
+  j["led"] = LedOrNull(RepresentativeColor(r.leds, footbot::kLedCount));
   j["alive"] = r.alive;
   j["ok"] = r.controller_ok;
   return j;
