@@ -14,7 +14,7 @@ from doc_examples import examples
 
 ROOT = Path(__file__).resolve().parents[2]
 DOCS = ["README.md"] + sorted(str(p.relative_to(ROOT)) for p in (ROOT / "docs").glob("*.md"))
-COPIED = ("arenas", "controllers", "scripts", "docs", "bench")
+COPIED = ("arenas", "controllers", "scripts", "tools", "docs", "bench")
 TIMEOUT = 300  # seconds per block
 
 

@@ -1,0 +1,170 @@
+"""The module as a notebook uses it: controller errors and log() lines through `logging`
+and `Simulation.errors`, strict, summary before finish, reset, a robot's Lua global,
+render() to PNG, yaw in (-pi, pi], and recording.bin read back as numpy/pandas."""
+import json
+import logging
+import math
+import subprocess
+
+import numpy as np
+import pytest
+
+from module_paths import FORAGING, SMALL
+
+essaim = pytest.importorskip("essaim")
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+
+def controller(tmp_path, body):
+    """The foraging arena with a controller of our own (5 robots)."""
+    script = tmp_path / "ctrl.lua"
+    script.write_text(body)
+    return dict(SMALL, **{"controllers.foraging.params.script": str(script)})
+
+
+NOISY = """
+count = 0
+function init() log("hello", 1, robot.id) end
+function step()
+  count = count + 1
+  info = {n = count, list = {1, 2, 3}, name = robot.id}
+  if robot.id == "fb2" and count == 3 then error("boom") end
+  if count == 2 then logerr("careful") end
+end
+function reset() end
+function destroy() end
+"""
+
+
+def test_errors_and_log_lines_reach_logging_and_errors(tmp_path, caplog):
+    over = controller(tmp_path, NOISY)
+    with caplog.at_level(logging.INFO, logger="essaim"):
+        with essaim.Simulation(FORAGING, seed=1, overrides=over) as sim:
+            infos = [r for r in caplog.records if r.levelno == logging.INFO]
+            assert len(infos) == 5 and all("hello" in r.getMessage() for r in infos)
+            assert infos[0].getMessage().startswith("fb0: hello") and infos[0].robot == "fb0"
+            assert infos[0].tick == 0
+            sim.step(5)
+            assert sim.tick == 5  # the error did not stop the run
+    warns = [r for r in caplog.records if r.levelno == logging.WARNING]
+    assert len(warns) == 5 and {r.tick for r in warns} == {2}
+    assert "careful" in warns[0].getMessage()
+    errors = [r for r in caplog.records if r.levelno == logging.ERROR]
+    assert len(errors) == 1 and "boom" in errors[0].getMessage()
+    assert len(sim.errors) == 1
+    e = sim.errors[0]
+    assert e["robot"] == "fb2" and e["tick"] == 3 and "ctrl.lua:7" in e["message"]
+
+
+def test_strict_raises_at_the_first_controller_error(tmp_path):
+    over = controller(tmp_path, NOISY)
+    with essaim.Simulation(FORAGING, seed=1, overrides=over, strict=True) as sim:
+        with pytest.raises(essaim.Error, match="boom"):
+            sim.step(10)
+        assert sim.tick == 3 and len(sim.errors) == 1
+
+
+def test_summary_before_finish_is_the_run_so_far(tmp_path):
+    over = controller(tmp_path, NOISY)
+    with essaim.Simulation(FORAGING, seed=1, overrides=over) as sim:
+        sim.step(4)
+        s = sim.summary
+        assert s["status"] == "running" and s["ticks"] == 4 and s["robots"] == 5
+        assert len(s["controller_errors"]) == 1
+        sim.finish()
+        assert sim.summary["status"] == "controller_error"
+
+
+def test_lua_globals_come_back_as_python_data(tmp_path):
+    over = controller(tmp_path, NOISY)
+    with essaim.Simulation(FORAGING, seed=1, overrides=over) as sim:
+        sim.step(2)
+        assert sim.lua_global("fb1", "count") == 2
+        assert sim.lua_global(1, "info") == {"n": 2, "list": [1, 2, 3], "name": "fb1"}
+        assert sim.lua_global("fb1", "nothing_here") is None
+        with pytest.raises(KeyError, match="fb99"):
+            sim.lua_global("fb99", "count")
+        with pytest.raises(IndexError):
+            sim.lua_global(5, "count")
+
+
+def test_reset_starts_again_with_another_seed():
+    with essaim.Simulation(FORAGING, seed=1, overrides=SMALL) as sim:
+        sim.step(30)
+        first = sim.poses()
+        sim.reset(seed=2)
+        assert sim.tick == 0 and sim.errors == []
+        sim.step(30)
+        other = sim.poses()
+        sim.reset(seed=1)
+        sim.step(30)
+        assert np.array_equal(sim.poses(), first) and not np.array_equal(other, first)
+        assert sim.summary["seed"] == 1
+
+
+def test_yaw_is_wrapped():
+    with essaim.Simulation(FORAGING, seed=1, overrides=SMALL) as sim:
+        for _ in range(10):
+            sim.step(50)
+            yaw = sim.poses()[:, 2]
+            assert np.all(yaw > -math.pi) and np.all(yaw <= math.pi)
+
+
+def test_render_gives_png_bytes_or_a_file(tmp_path):
+    with essaim.Simulation(FORAGING, seed=1, overrides=SMALL) as sim:
+        sim.step(10)
+        png = sim.render(size=300)
+        assert png[:8] == PNG and len(png) > 2000
+        assert sim.render(str(tmp_path / "f.png"), size=300) is None
+        assert (tmp_path / "f.png").read_bytes()[:8] == PNG
+        assert sim._repr_png_()[:8] == PNG  # Jupyter shows the Simulation as its picture
+        with pytest.raises(essaim.Error, match="size"):
+            sim.render(size=3)
+
+
+def test_recording_reader_matches_the_recorded_run(essaim_bin, tmp_path):
+    out = tmp_path / "run"
+    subprocess.run([essaim_bin, "run", FORAGING, "--seed", "3", "--ticks", "40", "--quiet",
+                    "--record", "--set", "arena.distribute.entity.quantity=5", "--out", str(out)],
+                   check=True)
+    rec = essaim.read_recording(str(out))
+    assert rec.robot_ids == [f"fb{i}" for i in range(5)] and rec.seed == 3
+    assert rec.ticks.tolist() == list(range(41))
+    assert rec.poses.shape == (41, 5, 3) and rec.alive.shape == rec.battery.shape == (41, 5)
+    assert np.all(rec.poses[:, :, 2] > -math.pi) and np.all(rec.poses[:, :, 2] <= math.pi)
+    assert rec.alive.all()
+    with essaim.Simulation(FORAGING, seed=3, overrides=SMALL) as sim:
+        sim.step(40)
+        live, battery = sim.poses(), sim.battery()
+    assert rec.battery[-1] == pytest.approx(battery, abs=0.5 / 255)
+    assert rec.battery[0] == pytest.approx(np.ones(5))
+    assert np.allclose(rec.poses[-1, :, :2], live[:, :2], atol=0.002)  # 1 mm quantisation
+    dyaw = np.angle(np.exp(1j * (rec.poses[-1, :, 2] - live[:, 2])))
+    assert np.all(np.abs(dyaw) < 0.001)
+    df = rec.to_pandas()
+    assert list(df.columns) == ["tick", "robot", "x", "y", "yaw", "alive", "battery"]
+    assert len(df) == 41 * 5
+    last = df[df.tick == 40].set_index("robot")
+    assert last.loc["fb3", "x"] == rec.poses[-1, 3, 0]
+    with pytest.raises(essaim.Error):
+        essaim.read_recording(str(tmp_path / "nope.bin"))
+
+
+def test_per_robot_arrays_hold_each_robots_own_value(tmp_path):
+    # Each robot's battery as its own sensor reads it (fb1 is refilled in the nest), and
+    # alive() as the loop functions' deaths.
+    over = controller(tmp_path, "function init() end\n"
+                      "function step() b = robot.battery.available_charge end\n")
+    with essaim.Simulation(FORAGING, seed=3, overrides=over) as sim:
+        sim.step(20)
+        assert sim.battery().tolist() == [sim.lua_global(i, "b") for i in range(5)]
+        assert len(set(sim.battery().tolist())) == 2
+    # Robots that stand still: those outside the nest run out of battery, the others live.
+    idle = controller(tmp_path, "function init() end\nfunction step() end\n")
+    with essaim.Simulation(FORAGING, seed=3, overrides=idle) as sim:
+        sim.run()
+        metrics = sim.finish()
+        dead = {d["robot"] for d in metrics["dead_robots"]}
+        assert 0 < len(dead) < 5
+        assert [not a for a in sim.alive()] == [r in dead for r in sim.robot_ids]
