@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <lua.hpp>
 
-#include "lua/lua_guard.h"
+#include "lua/host/lua_guard.h"
 
 namespace essaim {
 namespace {

@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "lua/small_block_pool.h"
+#include "lua/host/small_block_pool.h"
 
 namespace essaim {
 namespace {

@@ -1,13 +1,13 @@
-#include "lua/bare_controller.h"
+#include "lua/robot/bare_controller.h"
 
 #include <lua.hpp>
 
 #include "core/paths.h"
 #include "core/rng.h"
-#include "lua/lua_devices.h"
-#include "lua/lua_guard.h"
-#include "lua/lua_math_types.h"
-#include "lua/lua_random.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/host/lua_host.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_random.h"
 
 namespace essaim {
 
@@ -61,7 +61,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
     unlimited.wall_seconds = 0;
     L_ = NewGuardedState(guard_.get(), unlimited);
   } else {
-    L_ = luaL_newstate();
+    L_ = NewStockState();
   }
   lua_State* L = L_;
   if (!L) {
@@ -70,13 +70,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
   }
   lua_gc(L, LUA_GCGEN, 0, 0);  // Lua's generational defaults; the run's own tuning is not the floor's
   luaL_openlibs(L);
-  lua_getglobal(L, "math");
-  lua_getfield(L, -1, "randomseed");
-  const uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, static_cast<uint64_t>(index));
-  lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
-  lua_pushinteger(L, index);
-  lua_call(L, 2, 0);
-  lua_pop(L, 1);
+  SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, static_cast<uint64_t>(index)), index);
   for (const char* name : {"log", "logerr", "print"}) {
     lua_pushcfunction(L, NoOp);
     lua_setglobal(L, name);

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
-#include "lua/lua_guard.h"
-#include "lua/lua_params.h"
+#include "lua/robot/lua_device_refs.h"
+#include "lua/host/lua_guard.h"
+#include "lua/robot/lua_params.h"
 #include "model/model.h"
 
 struct lua_State;

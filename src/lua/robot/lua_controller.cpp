@@ -1,4 +1,4 @@
-#include "lua/lua_state.h"
+#include "lua/robot/lua_controller.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -8,11 +8,12 @@
 #include "core/rng.h"
 #include "core/paths.h"
 #include "core/strings.h"
-#include "lua/lua_devices.h"
-#include "lua/lua_math_types.h"
-#include "lua/lua_params.h"
-#include "lua/lua_random.h"
-#include "lua/lua_require.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_params.h"
+#include "lua/robot/lua_random.h"
+#include "lua/host/lua_host.h"
+#include "lua/host/lua_require.h"
 
 namespace essaim {
 
@@ -117,15 +118,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   OpenGuardedLibraries(L, options.sandbox);
   RecordRequiredFiles(L, options.inputs);
   // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
-  {
-    uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index);
-    lua_getglobal(L, "math");
-    lua_getfield(L, -1, "randomseed");
-    lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
-    lua_pushinteger(L, static_cast<lua_Integer>(robot->index));
-    lua_call(L, 2, 0);
-    lua_pop(L, 1);
-  }
+  SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index), robot->index);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {

@@ -5,7 +5,7 @@
 #include <lua.hpp>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
+#include "lua/robot/lua_device_refs.h"
 #include "model/model.h"
 
 namespace essaim {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
+#include "lua/robot/lua_device_refs.h"
 #include "model/model.h"
 
 struct lua_State;
