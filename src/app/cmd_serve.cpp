@@ -9,9 +9,9 @@
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/set_file.h"
+#include "app/signals.h"
 #include "app/web_pages.h"
 #include "core/paths.h"
-#include "app/signals.h"
 #include "lua/host/watchdog.h"
 #include "serve/live_server.h"
 

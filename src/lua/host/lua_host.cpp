@@ -2,6 +2,8 @@
 
 #include <lua.hpp>
 
+#include "core/paths.h"
+
 #include "lua/host/guard_hook.h"
 #include "lua/host/watchdog.h"
 
@@ -42,6 +44,18 @@ void SeedMathRandom(lua_State* L, uint64_t seed, int64_t index) {
   lua_pushinteger(L, static_cast<lua_Integer>(seed & 0x7fffffffffffffffull));
   lua_pushinteger(L, static_cast<lua_Integer>(index));
   lua_call(L, 2, 0);
+  lua_pop(L, 1);
+}
+
+void PrependScriptFolder(lua_State* L, const std::string& script) {
+  const std::string dir = DirName(script);
+  const std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "path");
+  const std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
+  lua_pop(L, 1);
+  lua_pushstring(L, path.c_str());
+  lua_setfield(L, -2, "path");
   lua_pop(L, 1);
 }
 

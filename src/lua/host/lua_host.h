@@ -3,6 +3,7 @@
 // clock unless told otherwise.
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include "lua/host/lua_guard.h"
 
@@ -16,5 +17,9 @@ lua_State* NewStockState();
 /// math.randomseed(seed, index), seed as a non-negative Lua integer: reproducible per
 /// experiment seed and robot.
 void SeedMathRandom(lua_State* L, uint64_t seed, int64_t index);
+
+/// `require` finds modules next to the script first: its folder's ?.lua and ?/init.lua go
+/// before package.path.
+void PrependScriptFolder(lua_State* L, const std::string& script);
 
 }  // namespace essaim

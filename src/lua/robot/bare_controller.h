@@ -42,6 +42,7 @@ class BareController {
 
  private:
   bool Call(const char* fn, std::string* error);
+  lua_State* NewState(BareAllocator allocator);
 
   lua_State* L_ = nullptr;
   std::unique_ptr<LuaGuard> guard_;  // BareAllocator::Pool only

@@ -5,15 +5,15 @@
 
 #include <lua.hpp>
 
-#include "core/rng.h"
 #include "core/paths.h"
+#include "core/rng.h"
 #include "core/strings.h"
+#include "lua/host/lua_host.h"
+#include "lua/host/lua_require.h"
 #include "lua/robot/lua_devices.h"
 #include "lua/robot/lua_math_types.h"
 #include "lua/robot/lua_params.h"
 #include "lua/robot/lua_random.h"
-#include "lua/host/lua_host.h"
-#include "lua/host/lua_require.h"
 
 namespace essaim {
 
@@ -121,6 +121,18 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index), robot->index);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  OpenGlobals(L);
+  CreateRobotTable(L, def, robot);
+  if (!PushReadings(error)) return false;
+
+  const std::string& script = controller_->script;
+  if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
+  SetRequireRoots(&guard_, {DirName(model.file), DirName(script)});
+  PrependScriptFolder(L, script);
+  return RunChunk(error);
+}
+
+void LuaController::OpenGlobals(lua_State* L) {
   for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
     lua_pushlightuserdata(L, &log_);
     lua_pushcclosure(L, fn, 1);
@@ -128,8 +140,9 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   }
   RouteIoWrite(L);
   OpenMathTypes(L);
+}
 
-  // The robot table, in ARGoS's order: id, random, actuators, sensors, params.
+void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotState* robot) {
   lua_newtable(L);
   lua_pushstring(L, def.id.c_str());
   lua_setfield(L, -2, "id");
@@ -144,22 +157,12 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   PushTrackedParams(L, &params_);
   lua_setfield(L, -2, "params");
   lua_setglobal(L, "robot");
-  if (!PushReadings(error)) return false;
+}
 
+bool LuaController::RunChunk(std::string* error) {
+  lua_State* L = L_;
   const std::string& script = controller_->script;
-  if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
-  // `require` finds modules next to the script.
-  std::string dir = DirName(script);
-  SetRequireRoots(&guard_, {DirName(model.file), dir});
-  std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "path");
-  std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
-  lua_pop(L, 1);
-  lua_pushstring(L, path.c_str());
-  lua_setfield(L, -2, "path");
-  lua_pop(L, 1);
-
+  const RobotDef& def = *def_;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
   if (luaL_loadfile(L, script.c_str()) != LUA_OK) {
