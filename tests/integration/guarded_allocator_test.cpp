@@ -1,5 +1,5 @@
-// The guarded allocator every Lua state runs on (lua/lua_guard.h, over the small-block
-// pool of lua/small_block_pool.h): its accounting is exact on every path it takes.
+// The guarded allocator every Lua state runs on (lua/host/lua_guard.h, over the small-block
+// pool of lua/host/small_block_pool.h): its accounting is exact on every path it takes.
 // (Here rather than in tests/unit: it drives a lua_State, and this target links Lua.)
 #include <gtest/gtest.h>
 #include <lua.hpp>

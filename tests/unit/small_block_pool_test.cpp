@@ -1,4 +1,4 @@
-// The Lua states' small-block pool (lua/small_block_pool.h): classes, reuse, alignment.
+// The Lua states' small-block pool (lua/host/small_block_pool.h): classes, reuse, alignment.
 #include <gtest/gtest.h>
 
 #include <cstdint>
