@@ -11,8 +11,10 @@
 
 #include "app/cli_support.h"
 #include "app/commands.h"
+#include "app/signals.h"
 #include "core/paths.h"
 #include "core/strings.h"
+#include "lua/host/watchdog.h"
 #include "model/xml_loader.h"
 #include "sim/bare_floor.h"
 #include "sim/step.h"
@@ -84,7 +86,9 @@ double ProcessCpuSeconds() {
 /// One normal run: its wall and CPU time (s, CPU summed over threads) and stage times.
 /// False (error printed) on failure.
 bool TimeRun(const Model& model, double* wall, double* cpu, StageTimes* times) {
+  Watchdog watchdog(ExitStuck);  // outlives the world
   SimOptions opt;
+  opt.lua.watchdog = &watchdog;
   std::string error;
   auto world = World::Create(model, opt, &error);
   if (!world || !world->failure.empty()) {
@@ -182,7 +186,9 @@ static int Bench(BenchArgs a) {
     for (int threads : thread_counts) {
       auto model = LoadScenario(dir, s, ticks, threads, a.strict);
       if (!model) return kExitBadInput;
+      Watchdog watchdog(ExitStuck);  // outlives the world
       SimOptions opt;
+      opt.lua.watchdog = &watchdog;
       std::string error;
       auto world = World::Create(*model, opt, &error);
       if (!world) {

@@ -1,14 +1,13 @@
-// `essaim run` and `essaim check`.
+// `essaim run`: one run as a short sequence of named steps (parse, load the model, open
+// the output folder, build the world, open the outputs, step, finish, report), and --watch.
 #include <unistd.h>
 
-#include <algorithm>
-#include <atomic>
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <set>
@@ -17,15 +16,14 @@
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/log_printer.h"
+#include "app/run_args.h"
 #include "app/run_report.h"
-#include "app/set_file.h"
+#include "app/run_session.h"
+#include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
-#include "lua/lua_guard.h"
-#include "model/xml_loader.h"
-#include "output/atomic_file.h"
-#include "output/out_folder.h"
 #include "output/memory_log.h"
+#include "output/out_folder.h"
 #include "output/recording.h"
 #include "output/run_end.h"
 #include "output/summary.h"
@@ -37,120 +35,6 @@
 namespace essaim {
 
 namespace {
-// SIGINT and SIGTERM (what SLURM and Dask send) end the run the same way: status
-// "interrupted", whole outputs, exit 128 + signal. A controller stuck in Lua is stopped
-// through the watchdog's hook.
-std::atomic<int> g_interrupted{0};
-void OnSignal(int sig) {
-  g_interrupted = sig;
-  RequestLuaInterrupt();
-}
-
-constexpr long long kMaxTicks = 1000000000000LL;  // ~3 years at 10 ticks/s
-constexpr long long kMaxThreads = 1024;
-
-struct RunArgs {
-  std::string file;
-  std::string out;
-  std::string set_file;
-  std::optional<long long> ticks, seed, threads;
-  std::string record;  // --record's value: "" or every=N
-  LoadOptions load;
-  bool quiet = false, strict = false, sandbox = false;
-  bool watch = false;       // --watch: run again whenever an input file changes
-  bool log_prefix = false;  // --log-prefix: "[t=120 fb7] " before each log line
-  std::string log_dir;      // --log-dir: one file per robot
-  uint32_t record_every = 0;  // --record: a frame every N ticks (0: no recording)
-  long long memory_log_every = 0;  // --memory-log N: memory.csv every N ticks (0: none)
-  long long lua_budget = -1, lua_memory_mib = -1;  // -1: the experiment's or the default
-  double lua_seconds = -1;                          // wall clock per Lua call; -1: default
-};
-
-// The run in progress, for the watchdog's last resort (a call stuck inside a C function).
-struct RunInProgress {
-  std::string out;
-  const RunArgs* args = nullptr;
-  const Model* model = nullptr;
-  const World* world = nullptr;       // null while init() runs
-  RecordingWriter* recorder = nullptr;
-  RunInfo info;
-};
-RunInProgress g_run;
-// Held from before the first write into --out until the process ends.
-OutFolderLock g_out_lock;
-
-void OnLuaStuck(const std::string& message) {
-  // Called from the monitor thread while robots may still be stepped: a best-effort summary.
-  std::string error;
-  if (!g_run.world) {  // stuck in the loading or init() of a script
-    if (g_run.args)
-      WriteFailureSummary(g_run.out, ESSAIM_VERSION, g_run.args->file, g_run.args->load.overrides, g_run.model,
-                          /*inputs=*/nullptr, message, &error);
-    return;
-  }
-  RunInfo info = g_run.info;
-  info.status = "failed";
-  info.finished_by = "error";
-  info.outputs = {"summary.json"};
-  // The frames written so far end at a whole tick: sealed as they are, never left as a
-  // temporary file.
-  if (g_run.recorder && g_run.recorder->IsOpen() && g_run.recorder->Seal(&error)) info.outputs.push_back(kRecordingFile);
-  Json s = BuildSummary(*g_run.world, info);
-  s["failure"] = message;
-  WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
-}
-
-// From before the scripts load to after the world goes: signals end the run as
-// interrupted, and the watchdog's last resort knows where to write.
-struct WatchRun {
-  WatchRun(const std::string& out, const RunArgs& r, const Model& model) {
-    g_run.out = out;
-    g_run.args = &r;
-    g_run.model = &model;
-    g_run.info.version = ESSAIM_VERSION;
-    SetLuaStuckHandler(OnLuaStuck);
-    std::signal(SIGINT, OnSignal);
-    std::signal(SIGTERM, OnSignal);
-  }
-  ~WatchRun() {
-    SetLuaStuckHandler(nullptr);
-    g_run = RunInProgress();
-  }
-};
-
-// The options run and check share: the file and what overrides its XML.
-void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
-  sub->add_option("FILE.argos", r->file, "the ARGoS experiment file")->required();
-  sub->add_option("--ticks", r->ticks, "run exactly N ticks, N >= 1 (overrides the experiment length)")
-      ->type_name("N")
-      ->check(IntegerIn(1, kMaxTicks, "0 would mean no limit; for that set framework.experiment.length=0"));
-  sub->add_option("--seed", r->seed, "random seed, >= 0 (overrides random_seed)")
-      ->type_name("S")
-      ->check(IntegerIn(0, std::numeric_limits<long long>::max()));
-  sub->add_option("--threads", r->threads, "threads for sense + control, 1 to 1024 (overrides <system threads>)")
-      ->type_name("N")
-      ->check(IntegerIn(1, kMaxThreads, "1 runs everything on the main thread"));
-  sub->add_option("--set", r->load.overrides, "override an XML attribute (repeatable), e.g. controllers.ctrl.params.speed=20")
-      ->type_name("PATH=VALUE")
-      ->allow_extra_args(false);
-  sub->add_option("--set-file", r->set_file,
-                  "a JSON object {\"PATH\": value, ...} of overrides, applied before the --set ones")
-      ->type_name("FILE.json");
-}
-
-// --set-file's entries first, so a --set on the command line wins over the file.
-bool ApplyOptions(RunArgs* r, std::string* error) {
-  if (r->ticks) r->load.ticks = static_cast<uint64_t>(*r->ticks);
-  if (r->seed) r->load.seed = static_cast<uint64_t>(*r->seed);
-  if (r->threads) r->load.threads = static_cast<int>(*r->threads);
-  r->load.strict = r->strict;
-  if (r->set_file.empty()) return true;
-  std::vector<std::string> from_file;
-  if (!ReadOverridesFile(r->set_file, &from_file, error)) return false;
-  r->load.overrides.insert(r->load.overrides.begin(), from_file.begin(), from_file.end());
-  return true;
-}
-
 // --record's value: every=N, N from 1 to 1000000. A bare word (a file name after --record)
 // is refused rather than taken as the value.
 CLI::Validator RecordEvery() {
@@ -163,50 +47,15 @@ CLI::Validator RecordEvery() {
       "");
 }
 
-std::unique_ptr<Model> LoadOrReport(const RunArgs& r, std::string* message = nullptr) {
-  ErrorList errors, warnings;
-  auto model = LoadExperimentFile(r.file, r.load, &errors, &warnings);
-  if (!r.quiet)
-    for (const InputError& w : warnings.Items()) {
-      ErrorList one;
-      one.Add(w.file, w.line, w.element, "warning: " + w.message);
-      std::fputs(one.Format().c_str(), stderr);
-    }
-  if (!model) std::fputs(errors.Format().c_str(), stderr);
-  if (!model && message) {
-    *message = errors.Format();
-    while (!message->empty() && message->back() == '\n') message->pop_back();
-  }
-  return model;
-}
-
-/// The watchdog's limits: the CLI's, else the experiment's, else the defaults (stricter
-/// under --sandbox). docs/sandbox.md.
-LuaOptions WatchdogOptions(const Model& m, const RunArgs& r) {
-  LuaOptions o;
-  o.sandbox = r.sandbox;
-  if (r.sandbox) {
-    o.memory_limit = size_t{64} << 20;
-    o.instruction_limit = 100000000;
-  }
-  long long budget = r.lua_budget >= 0 ? r.lua_budget : m.experiment.lua_budget;
-  long long mib = r.lua_memory_mib >= 0 ? r.lua_memory_mib : m.experiment.lua_memory_mib;
-  if (budget >= 0) o.instruction_limit = budget;
-  if (mib >= 0) o.memory_limit = static_cast<size_t>(mib) << 20;
-  if (r.lua_seconds >= 0) o.wall_seconds = r.lua_seconds;
-  return o;
-}
-
 std::string DefaultOutDir(const Model& m) {
   std::filesystem::path name = std::filesystem::path(m.file).filename();
   if (name.extension() == ".argos") name = name.stem();
   return "runs/" + name.string() + "-" + std::to_string(m.experiment.seed);
 }
-}  // namespace
 
 /// The folder will hold this run's outputs only: an earlier run's go into previous/, and
 /// stderr says which.
-static bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* error) {
+bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* error) {
   std::vector<std::string> moved;
   if (!SetAsideEarlierOutputs(out, &moved, error)) return false;
   if (!moved.empty()) {
@@ -221,11 +70,11 @@ static bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* er
 /// A run that fails before its world exists still leaves summary.json (status "failed",
 /// the message) where the output goes, when that is known and usable, with an earlier
 /// run's outputs set aside so the summary is not read beside them; returns `code`.
-static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
+int FailedBeforeRun(RunSession& session, const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
                            int code, const InputFiles* inputs = nullptr) {
   std::string error;
   if (out.empty()) return code;
-  if (!PrepareOutFolder(out, &error) || (!g_out_lock.Held() && !g_out_lock.Acquire(out, &error)) ||
+  if (!PrepareOutFolder(out, &error) || (!session.out_lock.Held() && !session.out_lock.Acquire(out, &error)) ||
       !SetAsideEarlierOutputsAndSay(out, &error) ||
       !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, inputs, message, &error))
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
@@ -234,7 +83,7 @@ static int FailedBeforeRun(const RunArgs& r, const std::string& out, const Model
 
 /// A run whose world exists but that cannot go on (an output that cannot be opened):
 /// summary.json with status "failed" and the message, exit 1.
-static int FailedRun(World& world, const std::string& out, const std::string& message) {
+int FailedRun(World& world, const std::string& out, const std::string& message) {
   std::fprintf(stderr, "essaim run: %s\n", message.c_str());
   RunInfo info;
   info.version = ESSAIM_VERSION;
@@ -246,252 +95,255 @@ static int FailedRun(World& world, const std::string& out, const std::string& me
   return kExitRunFailed;
 }
 
-namespace {
-constexpr uint64_t kCheckTicks = 10;
-constexpr size_t kCheckRobots = 20;
-
-/// The robots `check` steps: the first of every distinct controller and params, then the
-/// first others, up to kCheckRobots (all of them when fewer).
-Model CheckSample(const Model& m) {
-  Model sample = m;
-  if (m.robots.size() <= kCheckRobots) return sample;
-  std::vector<bool> keep(m.robots.size(), false);
-  std::set<std::pair<int, AttrMap>> seen;
-  size_t kept = 0;
-  for (size_t i = 0; i < m.robots.size(); ++i)
-    if (seen.insert({m.robots[i].controller, m.robots[i].params}).second) keep[i] = true, ++kept;
-  for (size_t i = 0; i < m.robots.size() && kept < kCheckRobots; ++i)
-    if (!keep[i]) keep[i] = true, ++kept;
-  sample.robots.clear();
-  for (size_t i = 0; i < m.robots.size(); ++i)
-    if (keep[i]) sample.robots.push_back(m.robots[i]);
-  return sample;
-}
-
-/// Steps the sample as `run` would, quietly; every problem goes into `problems` (one per line).
-void CheckSteps(World& world, uint64_t ticks, std::string* problems) {
-  size_t reported = 0;
-  auto report = [&] {
-    for (const std::string& e : GroupControllerErrors(world.controller_errors, reported)) *problems += e + "\n";
-    reported = world.controller_errors.size();
-  };
-  report();  // init()
-  StepStatus status = world.failure.empty() ? StepStatus::Running : StepStatus::Failed;
-  while (status == StepStatus::Running && world.tick < ticks) {
-    status = Step(world);
-    report();
-  }
-  if (!world.failure.empty()) *problems += world.failure + "\n";
-  if (status != StepStatus::Failed) *problems += FormatUnreadParams(FindUnreadParams(world), true);
-}
-}  // namespace
-
-static int Check(RunArgs& r) {
-  std::string error;
-  if (!ApplyOptions(&r, &error)) {
-    std::fprintf(stderr, "essaim check: %s\n", error.c_str());
-    return kExitBadInput;
-  }
-  auto model = LoadOrReport(r);
-  if (!model) return kExitBadInput;
-  // The scripts too: load every controller and the loop functions, run init() and a few
-  // ticks on a sample of the robots, as a run would, with no output.
-  const Model sample = CheckSample(*model);
-  SimOptions opt;
-  opt.output_dir = "";
-  opt.lua = WatchdogOptions(*model, r);
-  auto world = World::Create(sample, opt, &error);
-  if (!world) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitBadInput;
-  }
-  uint64_t length = model->experiment.length_ticks;
-  uint64_t ticks = r.ticks ? length : (length == 0 ? kCheckTicks : std::min(length, kCheckTicks));
-  std::string problems;
-  CheckSteps(*world, ticks, &problems);
-  if (!problems.empty()) {
-    std::fputs(problems.c_str(), stderr);
-    std::fprintf(stderr, "essaim check: %s: problems found in init() and %llu ticks of %zu robots\n", r.file.c_str(),
-                 static_cast<unsigned long long>(world->tick), sample.robots.size());
-    return kExitBadInput;
-  }
-  std::printf("%s: ok (%zu robots, %zu obstacles, %llu ticks; init() and %llu ticks run on %zu robots)\n",
-              r.file.c_str(), model->robots.size(), model->obstacles.size(),
-              static_cast<unsigned long long>(model->experiment.length_ticks),
-              static_cast<unsigned long long>(world->tick), sample.robots.size());
-  return kExitOk;
-}
-
-/// One run. `inputs` receives the files it read (to watch) as soon as they are known.
-static int Run(RunArgs& r, std::vector<std::string>* inputs) {
+/// The options applied and the model loaded; else the exit code (with summary.json where
+/// --out says, when it says).
+std::optional<int> LoadModel(RunSession& session, RunArgs& r, std::unique_ptr<Model>* model) {
   std::string error;
   if (!ApplyOptions(&r, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
+    return FailedBeforeRun(session, r, r.out, nullptr, error, kExitBadInput);
   }
-  auto model = LoadOrReport(r, &error);
-  if (!model) return FailedBeforeRun(r, r.out, nullptr, error, kExitBadInput);
-  *inputs = ExperimentInputs(*model, nullptr);
-  std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
-  // Before any script runs: a wrong --out, or one another run is writing, is bad input.
-  if (!PrepareOutFolder(out, &error) || !g_out_lock.Acquire(out, &error)) {
-    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitBadInput;
-  }
+  *model = LoadOrReport(r, &error);
+  if (!*model) return FailedBeforeRun(session, r, r.out, nullptr, error, kExitBadInput);
+  return std::nullopt;
+}
 
+/// Before any script runs: a wrong --out, or one another run is writing, is bad input.
+bool OpenOutFolder(RunSession& session, const std::string& out) {
+  std::string error;
+  if (PrepareOutFolder(out, &error) && session.out_lock.Acquire(out, &error)) return true;
+  std::fprintf(stderr, "essaim run: %s\n", error.c_str());
+  return false;
+}
+
+bool PrepareLogs(LogPrinter& logs) {
+  std::string error;
+  if (logs.Prepare(&error)) return true;
+  std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
+  return false;
+}
+
+/// The World's options: the watchdog's limits and the session's watchdog, log lines to `logs`.
+SimOptions MakeSimOptions(RunSession& session, const RunArgs& r, const Model& model, const std::string& out,
+                          const std::shared_ptr<LogPrinter>& logs) {
   SimOptions opt;
   opt.output_dir = out;
   opt.strict = r.strict;
-  opt.lua = WatchdogOptions(*model, r);
+  opt.lua = WatchdogOptions(model, r);
+  opt.lua.watchdog = &session.watchdog;
   opt.inputs = std::make_shared<InputFiles>();  // kept when a script fails to load
-  auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
-  if (!logs->Prepare(&error)) {
-    std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
-    return kExitBadInput;
-  }
   opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
-  // Signals and the watchdog's last resort are handled from before init(): a controller
-  // stuck there still ends the run with its outputs.
-  WatchRun watch(out, r, *model);  // declared before the world, so it goes after it
-  auto t0 = std::chrono::steady_clock::now();
-  auto world = World::Create(*model, opt, &error);
-  if (!world) {  // a script that does not load, or one a signal stopped while it loaded
+  return opt;
+}
+
+/// One run once its model is loaded: what it owns, in the order it is made.
+struct ActiveRun {
+  ActiveRun(RunSession& s, const RunArgs& a, const Model& m, std::string o, LogPrinter& l)
+      : session(s), args(a), model(m), out(std::move(o)), logs(l) {}
+  ~ActiveRun() { session.SetWorld(nullptr, nullptr); }  // before the world and the recorder go
+  ActiveRun(const ActiveRun&) = delete;
+  ActiveRun& operator=(const ActiveRun&) = delete;
+
+  RunSession& session;
+  const RunArgs& args;
+  const Model& model;
+  const std::string out;
+  LogPrinter& logs;
+  std::chrono::steady_clock::time_point start;
+  std::unique_ptr<World> world;
+  RecordingWriter recorder;
+  MemoryLog memory_log;
+  RunInfo info;
+};
+
+/// The World, its controllers' and loop functions' init() run; the folder cleared of an
+/// earlier run's outputs. Else the exit code.
+std::optional<int> BuildWorld(ActiveRun& run, const SimOptions& options, std::vector<std::string>* inputs) {
+  std::string error;
+  run.start = std::chrono::steady_clock::now();
+  run.world = World::Create(run.model, options, &error);
+  if (!run.world) {  // a script that does not load, or one a signal stopped while it loaded
     std::fprintf(stderr, "%s\n", error.c_str());
-    return FailedBeforeRun(r, out, model.get(), error, g_interrupted ? 128 + g_interrupted.load() : kExitBadInput,
-                           opt.inputs.get());
+    const int signal = run.session.signals.Caught();
+    return FailedBeforeRun(run.session, run.args, run.out, &run.model, error, signal ? 128 + signal : kExitBadInput,
+                           options.inputs.get());
   }
-  *inputs = ExperimentInputs(*model, world.get());
-  if (!SetAsideEarlierOutputsAndSay(out, &error)) {
+  *inputs = ExperimentInputs(run.model, run.world.get());
+  if (!SetAsideEarlierOutputsAndSay(run.out, &error)) {
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
     return kExitRunFailed;
   }
-  RunInfo info;
-  info.version = ESSAIM_VERSION;
-  // A recording that cannot be written (a full disk) does not stop the run: the other
-  // outputs are still written, and the run ends with exit 1.
-  RecordingWriter recorder;
-  if (r.record_every > 0 && !recorder.Open(JoinPath(out, kRecordingFile), *world, r.record_every, &error))
+  return std::nullopt;
+}
+
+/// The recording and memory.csv. A recording that cannot be written (a full disk) does not
+/// stop the run: the other outputs are still written, and the run ends with exit 1.
+std::optional<int> OpenOutputs(ActiveRun& run) {
+  std::string error;
+  run.info.version = ESSAIM_VERSION;
+  if (run.args.record_every > 0 &&
+      !run.recorder.Open(JoinPath(run.out, kRecordingFile), *run.world, run.args.record_every, &error))
     std::fprintf(stderr, "essaim run: %s; the run goes on without a recording\n", error.c_str());
-  MemoryLog memory_log;
-  if (r.memory_log_every > 0 && !memory_log.Open(JoinPath(out, kMemoryLogFile), r.memory_log_every, &error))
-    return FailedRun(*world, out, error);
-  g_run.world = world.get();
-  g_run.recorder = &recorder;
-  struct ForgetWorld {  // before the world and the recorder go
-    ~ForgetWorld() {
-      g_run.world = nullptr;
-      g_run.recorder = nullptr;
-    }
-  } forget_world;
-  Progress progress(!r.quiet && isatty(STDERR_FILENO), model->experiment.length_ticks, model->robots.size());
-  logs->SetProgress(&progress);
+  if (run.args.memory_log_every > 0 &&
+      !run.memory_log.Open(JoinPath(run.out, kMemoryLogFile), run.args.memory_log_every, &error))
+    return FailedRun(*run.world, run.out, error);
+  run.session.SetWorld(run.world.get(), &run.recorder);
+  return std::nullopt;
+}
+
+void RecordTick(ActiveRun& run, Progress& progress) {
+  if (!run.recorder.IsOpen()) return;
+  run.recorder.Record(*run.world);
+  if (run.recorder.IsOpen()) return;
+  progress.Finish();
+  std::fprintf(stderr, "essaim run: %s at tick %llu; the run goes on without a recording\n",
+               run.recorder.Failure().c_str(), static_cast<unsigned long long>(run.world->tick));
+}
+
+void MarkInterrupted(RunInfo* info) {
+  info->status = "interrupted";
+  info->finished_by = "interrupted";
+}
+
+/// Steps until the run finishes, fails or a signal comes; each tick recorded and its
+/// memory sampled.
+StepStatus StepUntilDone(ActiveRun& run) {
+  World& world = *run.world;
+  Progress progress(!run.args.quiet && isatty(STDERR_FILENO), run.model.experiment.length_ticks,
+                    run.model.robots.size());
+  run.logs.SetProgress(&progress);
   StepStatus status = StepStatus::Running;
-  if (LengthReached(*world)) status = StepStatus::Finished;
-  if (!world->failure.empty()) status = StepStatus::Failed;  // init() failed
+  if (LengthReached(world)) status = StepStatus::Finished;
+  if (!world.failure.empty()) status = StepStatus::Failed;  // init() failed
   while (status == StepStatus::Running) {
-    if (g_interrupted) {
-      info.status = "interrupted";
-      info.finished_by = "interrupted";
+    if (run.session.signals.Caught()) {
+      MarkInterrupted(&run.info);
       break;
     }
-    status = Step(*world);
-    if (recorder.IsOpen()) {
-      recorder.Record(*world);
-      if (!recorder.IsOpen()) {
-        progress.Finish();
-        std::fprintf(stderr, "essaim run: %s at tick %llu; the run goes on without a recording\n",
-                     recorder.Failure().c_str(), static_cast<unsigned long long>(world->tick));
-      }
-    }
-    memory_log.Sample(*world);
-    progress.Update(world->tick);
+    status = Step(world);
+    RecordTick(run, progress);
+    run.memory_log.Sample(world);
+    progress.Update(world.tick);
   }
   progress.Finish();
-  logs->SetProgress(nullptr);
-  if (g_interrupted && status == StepStatus::Failed) {
+  run.logs.SetProgress(nullptr);
+  if (run.session.signals.Caught() && status == StepStatus::Failed) {
     // A loop-function hook stopped by the signal: the run was interrupted, not broken.
-    info.status = "interrupted";
-    info.finished_by = "interrupted";
+    MarkInterrupted(&run.info);
     status = StepStatus::Running;
-    world->failure.clear();
+    world.failure.clear();
   }
-  Json metrics;
-  bool has_metrics = false;
-  EndRun(*world, status, &info, &metrics, &has_metrics);
-  if (!logs->Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
-  info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // The recording ends with the run, however it ended (interrupted and failed runs too).
-  if (r.record_every > 0) {
-    if (recorder.Finish(*world, &error)) info.outputs.push_back(kRecordingFile);
-    else info.output_errors.push_back(error);
+  return status;
+}
+
+/// The recording ends with the run, however it ended (interrupted and failed runs too).
+void CloseStreams(ActiveRun& run) {
+  std::string error;
+  if (run.args.record_every > 0) {
+    if (run.recorder.Finish(*run.world, &error)) run.info.outputs.push_back(kRecordingFile);
+    else run.info.output_errors.push_back(error);
   }
-  if (memory_log.IsOpen()) {
-    if (memory_log.Close(&error)) info.outputs.push_back(kMemoryLogFile);
-    else info.output_errors.push_back(error);
+  if (run.memory_log.IsOpen()) {
+    if (run.memory_log.Close(&error)) run.info.outputs.push_back(kMemoryLogFile);
+    else run.info.output_errors.push_back(error);
   }
-  std::vector<std::string> unwritten = info.output_errors;
-  bool all_written = WriteRunOutputs(out, *world, info, has_metrics ? &metrics : nullptr, &error);
-  if (!all_written) unwritten.push_back(error);  // metrics, time series or summary
-  if (!world->failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world->failure.c_str());
-  if (!r.quiet || r.strict) std::fputs(FormatUnreadParams(world->unread_params, r.strict).c_str(), stderr);
+}
+
+int ExitCode(const ActiveRun& run, StepStatus status) {
+  const World& world = *run.world;
+  if (run.info.status == "interrupted") return 128 + (run.session.signals.Caught() ? run.session.signals.Caught() : SIGINT);
+  if (status == StepStatus::Failed || run.info.status == "failed") return kExitRunFailed;
+  if (run.args.strict && (!world.controller_errors.empty() || !world.unread_params.empty())) return kExitRunFailed;
+  return kExitOk;
+}
+
+/// What went wrong on stderr, the run's line on stdout; the exit code.
+int Report(const ActiveRun& run, StepStatus status, const std::vector<std::string>& unwritten) {
+  const World& world = *run.world;
+  if (!world.failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world.failure.c_str());
+  if (!run.args.quiet || run.args.strict)
+    std::fputs(FormatUnreadParams(world.unread_params, run.args.strict).c_str(), stderr);
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
-    std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", out.c_str(),
-                 FileExists(JoinPath(out, "summary.json")) ? "; summary.json lists those written" : "");
-    if (info.status != "interrupted") return kExitRunFailed;
+    std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", run.out.c_str(),
+                 FileExists(JoinPath(run.out, "summary.json")) ? "; summary.json lists those written" : "");
+    if (run.info.status != "interrupted") return kExitRunFailed;
   }
-  if (!r.quiet) {
-    double steps = static_cast<double>(world->tick) * model->robots.size();
+  if (!run.args.quiet) {
+    const double seconds = run.info.wall_seconds;
+    const double steps = static_cast<double>(world.tick) * run.model.robots.size();
     std::printf("essaim: %llu ticks, %zu robots, %.2f s, %.0f robot-steps/s; %zu controller error(s); output in %s\n",
-                static_cast<unsigned long long>(world->tick), model->robots.size(), info.wall_seconds,
-                info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0, world->controller_errors.size(), out.c_str());
+                static_cast<unsigned long long>(world.tick), run.model.robots.size(), seconds,
+                seconds > 0 ? steps / seconds : 0.0, world.controller_errors.size(), run.out.c_str());
   }
-  if (info.status == "interrupted") return 128 + (g_interrupted ? g_interrupted.load() : SIGINT);
-  if (status == StepStatus::Failed || info.status == "failed") return kExitRunFailed;
-  if (r.strict && (!world->controller_errors.empty() || !world->unread_params.empty())) return kExitRunFailed;
-  return kExitOk;
+  return ExitCode(run, status);
+}
+
+/// Ends the run (final Lua hooks, metrics), closes and writes every output; the exit code.
+int FinishAndReport(ActiveRun& run, StepStatus status) {
+  Json metrics;
+  bool has_metrics = false;
+  EndRun(*run.world, status, &run.info, &metrics, &has_metrics);
+  std::string error;
+  if (!run.logs.Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
+  run.info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+  CloseStreams(run);
+  std::vector<std::string> unwritten = run.info.output_errors;
+  if (!WriteRunOutputs(run.out, *run.world, run.info, has_metrics ? &metrics : nullptr, &error))
+    unwritten.push_back(error);  // metrics, time series or summary
+  return Report(run, status, unwritten);
+}
+
+/// One run. `inputs` receives the files it read (to watch) as soon as they are known.
+int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
+  std::unique_ptr<Model> model;
+  if (std::optional<int> code = LoadModel(session, r, &model)) return *code;
+  *inputs = ExperimentInputs(*model, nullptr);
+  const std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
+  if (!OpenOutFolder(session, out)) return kExitBadInput;
+  auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
+  if (!PrepareLogs(*logs)) return kExitBadInput;
+  const SimOptions options = MakeSimOptions(session, r, *model, out, logs);
+  // Signals and the watchdog's last resort are handled from before init(): a controller
+  // stuck there still ends the run with its outputs.
+  SessionRun watched(session, out, r, *model);  // declared before the world, so it goes after it
+  ActiveRun run(session, r, *model, out, *logs);
+  if (std::optional<int> code = BuildWorld(run, options, inputs)) return *code;
+  if (std::optional<int> code = OpenOutputs(run)) return *code;
+  const StepStatus status = StepUntilDone(run);
+  return FinishAndReport(run, status);
 }
 
 /// --watch: run, then wait for a change to a file the run read, and run again, until
 /// Ctrl-C (exit 0; a run it interrupts still leaves whole outputs).
-static int WatchAndRun(const RunArgs& args) {
+int WatchAndRun(RunSession& session, const RunArgs& args) {
   FileWatcher watcher;
   if (!watcher.Ok()) {
     std::fprintf(stderr, "essaim run: --watch: %s\n", watcher.Error().c_str());
     return kExitBadInput;
   }
-  std::signal(SIGINT, OnSignal);
-  std::signal(SIGTERM, OnSignal);
+  session.signals.Listen();
   // Every file any run read: a run that failed on a broken module no longer lists it, and
   // its fix must still be seen.
   std::set<std::string> watched = {args.file};
   while (true) {
     RunArgs r = args;  // each run applies --set-file and the options afresh
     std::vector<std::string> inputs;
-    Run(r, &inputs);
+    Run(session, r, &inputs);
     std::fflush(stdout);
-    if (g_interrupted) return kExitOk;
+    if (session.signals.Caught()) return kExitOk;
     watched.insert(inputs.begin(), inputs.end());
     watcher.Watch({watched.begin(), watched.end()});
     if (!watcher.Error().empty()) std::fprintf(stderr, "essaim run: --watch: %s\n", watcher.Error().c_str());
     std::fprintf(stderr, "essaim run: watching %zu file(s) for changes (Ctrl-C ends)\n", watcher.Files().size());
     std::vector<std::string> changed;
-    while (!g_interrupted && !watcher.WaitForChange(1000, &changed)) {
+    while (!session.signals.Caught() && !watcher.WaitForChange(1000, &changed)) {
     }
-    if (g_interrupted) return kExitOk;
+    if (session.signals.Caught()) return kExitOk;
     std::fprintf(stderr, "essaim run: %s changed, running again\n", changed.front().c_str());
   }
 }
-
-CommandMain AddCheckCommand(CLI::App& app) {
-  auto r = std::make_shared<RunArgs>();
-  CLI::App* sub = app.add_subcommand("check", "validate an experiment and its scripts, list every error");
-  AddExperimentOptions(sub, r.get());
-  sub->add_flag("-q,--quiet", r->quiet, "errors only, no warnings");
-  sub->add_flag("--strict", r->strict, "unknown attributes in the file are errors (exit 2), not warnings");
-  sub->footer("Example:\n  essaim check arenas/foraging.argos --set arena.distribute.entity.quantity=60");
-  return [r] { return Check(*r); };
-}
+}  // namespace
 
 CommandMain AddRunCommand(CLI::App& app) {
   auto r = std::make_shared<RunArgs>();
@@ -538,10 +390,12 @@ CommandMain AddRunCommand(CLI::App& app) {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
     r->record_every = 0;
     if (sub->count("--record") > 0) r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
-    if (r->watch) return WatchAndRun(*r);
+    RunSession session;
+    if (r->watch) return WatchAndRun(session, *r);
     std::vector<std::string> inputs;
-    return Run(*r, &inputs);
+    return Run(session, *r, &inputs);
   };
 }
 
 }  // namespace essaim
+

@@ -2,7 +2,6 @@
 // (docs/live.md). The server itself is src/serve/.
 #include <CLI/CLI.hpp>
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -10,19 +9,15 @@
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/set_file.h"
+#include "app/signals.h"
 #include "app/web_pages.h"
 #include "core/paths.h"
-#include "lua/lua_guard.h"
+#include "lua/host/watchdog.h"
 #include "serve/live_server.h"
 
 namespace essaim {
 
 namespace {
-std::atomic<int> g_stop{0};
-void OnStopSignal(int sig) {
-  g_stop = sig;
-  RequestLuaInterrupt();  // a controller stuck in a long step lets go
-}
 
 struct ServeArgs {
   ServeOptions serve;
@@ -57,6 +52,9 @@ int Serve(ServeArgs& a) {
                  "can drive the simulator and read its scripts' state\n",
                  a.serve.host.c_str());
   a.serve.page = LivePage();
+  Watchdog watchdog(ExitStuck);
+  SignalCatcher signals(&watchdog);  // a controller stuck in a long step lets go
+  a.serve.watchdog = &watchdog;
   LiveServer server(a.serve);
   if (!server.Start(&error)) {
     std::fprintf(stderr, "essaim serve: %s\n", error.c_str());
@@ -64,9 +62,8 @@ int Serve(ServeArgs& a) {
   }
   std::printf("%s\n", server.Url().c_str());
   std::fflush(stdout);
-  std::signal(SIGINT, OnStopSignal);
-  std::signal(SIGTERM, OnStopSignal);
-  server.Run(g_stop);
+  signals.Listen();
+  server.Run(signals.CaughtFlag());
   return kExitOk;
 }
 }  // namespace

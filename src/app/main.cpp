@@ -91,6 +91,25 @@ int Help(CLI::App& app, const std::vector<std::string>& topic, const std::string
 }
 }  // namespace
 
+namespace {
+/// No command ran: the main help, the options left over, or the closest command's name.
+int NoCommand(CLI::App& app, const std::string& main_help) {
+  std::vector<std::string> rest = app.remaining();
+  if (rest.empty()) {
+    std::cerr << main_help;
+    return essaim::kExitBadInput;
+  }
+  if (rest[0].size() > 1 && rest[0][0] == '-') {
+    essaim::ReportLeftovers(app, "essaim");
+    return essaim::kExitBadInput;
+  }
+  std::string hint = essaim::ClosestName(rest[0], CommandNames(app));
+  std::fprintf(stderr, "essaim: unknown command '%s'%s\nsee 'essaim --help'\n", rest[0].c_str(),
+               hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
+  return essaim::kExitBadInput;
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app("essaim " ESSAIM_VERSION " - headless swarm simulator for ARGoS foot-bot experiments", "essaim");
   app.set_version_flag("--version", "essaim " ESSAIM_VERSION);
@@ -126,17 +145,5 @@ int main(int argc, char** argv) {
     if (essaim::ReportLeftovers(*sub, "essaim " + sub->get_name())) return essaim::kExitBadInput;
     return commands.at(sub->get_name())();
   }
-  std::vector<std::string> rest = app.remaining();
-  if (rest.empty()) {
-    std::cerr << main_help;
-    return essaim::kExitBadInput;
-  }
-  if (rest[0].size() > 1 && rest[0][0] == '-') {
-    essaim::ReportLeftovers(app, "essaim");
-    return essaim::kExitBadInput;
-  }
-  std::string hint = essaim::ClosestName(rest[0], CommandNames(app));
-  std::fprintf(stderr, "essaim: unknown command '%s'%s\nsee 'essaim --help'\n", rest[0].c_str(),
-               hint.empty() ? "" : (" (did you mean '" + hint + "'?)").c_str());
-  return essaim::kExitBadInput;
+  return NoCommand(app, main_help);
 }

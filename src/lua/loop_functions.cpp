@@ -9,10 +9,10 @@
 #include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
-#include "lua/lua_math_types.h"
-#include "lua/lua_params.h"
-#include "lua/lua_random.h"
-#include "lua/lua_require.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_params.h"
+#include "lua/robot/lua_random.h"
+#include "lua/host/lua_require.h"
 #include "lua/loop_handles.h"
 
 namespace essaim {

@@ -9,9 +9,9 @@
 #include "devices/entity_store.h"
 #include "devices/robot_state.h"
 #include "lua/lua_copy.h"
-#include "lua/lua_guard.h"
-#include "lua/lua_params.h"
-#include "lua/lua_state.h"
+#include "lua/host/lua_guard.h"
+#include "lua/robot/lua_params.h"
+#include "lua/robot/lua_controller.h"
 #include "model/model.h"
 #include "physics/physics_world.h"
 

@@ -42,45 +42,9 @@ bool LuaTape::RecordAt(lua_State* L, int idx, int depth) {
       strings_.emplace_back(s, len);
       break;
     }
-    case LUA_TTABLE: {
-      const void* address = lua_topointer(L, idx);
-      auto it = seen_.find(address);
-      if (it != seen_.end()) {  // shared or cyclic: the copy shares it the same way
-        item.type = Type::TableRef;
-        item.integer = it->second;
-        break;
-      }
-      if (depth >= kMaxDepth || !lua_checkstack(L, 3)) {
-        bad_type_ = "table nested too deep";
-        return false;
-      }
-      const int64_t id = tables_++;
-      seen_.emplace(address, id);
-      items_.push_back({Type::TableBegin, id, 0});
-      lua_pushnil(L);
-      while (lua_next(L, idx)) {
-        const int key = lua_type(L, -2), value = lua_type(L, -1);
-        const bool plain_key = key == LUA_TNUMBER || key == LUA_TSTRING || key == LUA_TBOOLEAN || key == LUA_TTABLE;
-        const bool plain_value = value != LUA_TFUNCTION && value != LUA_TUSERDATA && value != LUA_TLIGHTUSERDATA &&
-                                 value != LUA_TTHREAD;
-        if (!plain_key || !plain_value) {
-          if (plain_only_) {
-            bad_type_ = lua_typename(L, plain_key ? value : key);
-            lua_pop(L, 2);
-            return false;
-          }
-          lua_pop(L, 1);  // becomes nil: the pair is absent from the copy
-          continue;
-        }
-        if (!RecordAt(L, lua_gettop(L) - 1, depth + 1) || !RecordAt(L, lua_gettop(L), depth + 1)) {
-          lua_pop(L, 2);
-          return false;
-        }
-        lua_pop(L, 1);
-      }
-      item.type = Type::TableEnd;
+    case LUA_TTABLE:
+      if (!RecordTable(L, idx, depth, &item)) return false;
       break;
-    }
     default:
       if (plain_only_) {
         bad_type_ = lua_typename(L, lua_type(L, idx));
@@ -89,6 +53,46 @@ bool LuaTape::RecordAt(lua_State* L, int idx, int depth) {
       break;  // function, userdata, thread: nil
   }
   items_.push_back(item);
+  return true;
+}
+
+bool LuaTape::RecordTable(lua_State* L, int idx, int depth, Item* item) {
+  const void* address = lua_topointer(L, idx);
+  auto it = seen_.find(address);
+  if (it != seen_.end()) {  // shared or cyclic: the copy shares it the same way
+    item->type = Type::TableRef;
+    item->integer = it->second;
+    return true;
+  }
+  if (depth >= kMaxDepth || !lua_checkstack(L, 3)) {
+    bad_type_ = "table nested too deep";
+    return false;
+  }
+  const int64_t id = tables_++;
+  seen_.emplace(address, id);
+  items_.push_back({Type::TableBegin, id, 0});
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    const int key = lua_type(L, -2), value = lua_type(L, -1);
+    const bool plain_key = key == LUA_TNUMBER || key == LUA_TSTRING || key == LUA_TBOOLEAN || key == LUA_TTABLE;
+    const bool plain_value = value != LUA_TFUNCTION && value != LUA_TUSERDATA && value != LUA_TLIGHTUSERDATA &&
+                             value != LUA_TTHREAD;
+    if (!plain_key || !plain_value) {
+      if (plain_only_) {
+        bad_type_ = lua_typename(L, plain_key ? value : key);
+        lua_pop(L, 2);
+        return false;
+      }
+      lua_pop(L, 1);  // becomes nil: the pair is absent from the copy
+      continue;
+    }
+    if (!RecordAt(L, lua_gettop(L) - 1, depth + 1) || !RecordAt(L, lua_gettop(L), depth + 1)) {
+      lua_pop(L, 2);
+      return false;
+    }
+    lua_pop(L, 1);
+  }
+  item->type = Type::TableEnd;
   return true;
 }
 

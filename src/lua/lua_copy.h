@@ -42,6 +42,8 @@ class LuaTape {
     double number = 0;
   };
   bool RecordAt(lua_State* L, int idx, int depth);
+  /// A table's pairs between TableBegin and TableEnd (`item`), or a TableRef to one seen.
+  bool RecordTable(lua_State* L, int idx, int depth, Item* item);
   void ReplayAt(lua_State* L, size_t* pos, int refs) const;
   bool JsonAt(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;
   bool JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;

@@ -11,7 +11,7 @@
 
 #include "core/json.h"
 #include "core/strings.h"
-#include "lua/lua_math_types.h"
+#include "lua/robot/lua_math_types.h"
 
 namespace essaim {
 

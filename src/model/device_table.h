@@ -1,6 +1,6 @@
 // The one table of foot-bot devices: XML name, kind, Lua key and attributes.
 // A new device = one enum value, one row here, one sense/act function in devices/, one
-// Lua binding in lua/lua_devices.cpp, one test. `essaim devices` prints this table.
+// Lua binding in lua/robot/lua_devices.cpp, one test. `essaim devices` prints this table.
 #pragma once
 #include <string>
 #include <vector>

@@ -6,7 +6,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -14,6 +17,7 @@
 
 #include "output/atomic_file.h"
 #include "core/paths.h"
+#include "lua/host/watchdog.h"
 #include "lua/lua_copy.h"
 #include "output/out_folder.h"
 #include "model/xml_loader.h"
@@ -140,6 +144,7 @@ class Simulation {
     opt.strict = strict_;
     opt.lua.memory_limit = 64u << 20;  // the CLI's limits
     opt.lua.instruction_limit = 100000000;
+    opt.lua.watchdog = &watchdog_;
     opt.log_sink = [this](char stream, const std::string& line, const LogOrigin& from) {
       logs_.push_back({stream, line, from});
     };
@@ -397,6 +402,13 @@ class Simulation {
   bool strict_ = false;
   std::string out_;
   std::unique_ptr<Model> model_;
+  // The watchdog of this simulation's Lua states, declared before the World so it outlives
+  // them. A call stuck inside a C function cannot be unwound: the process ends, as the CLI's.
+  Watchdog watchdog_{[](const std::string& message) {
+    std::fprintf(stderr, "essaim: %s\n", message.c_str());
+    std::fflush(stderr);
+    _exit(1);
+  }};
   std::unique_ptr<World> world_;
   std::vector<LogLine> logs_;
   py::list errors_;

@@ -92,8 +92,8 @@ Json SceneJson(const World& w) {
   return j;
 }
 
-LiveExperiment::LiveExperiment(std::string file, LoadOptions load, LogSink log_sink)
-    : file_(std::move(file)), load_(std::move(load)), log_sink_(std::move(log_sink)) {}
+LiveExperiment::LiveExperiment(std::string file, LoadOptions load, LogSink log_sink, Watchdog* watchdog)
+    : file_(std::move(file)), load_(std::move(load)), log_sink_(std::move(log_sink)), watchdog_(watchdog) {}
 
 LiveExperiment::~LiveExperiment() = default;
 
@@ -108,6 +108,7 @@ bool LiveExperiment::Load() {
     SimOptions opt;
     opt.output_dir = "";
     opt.log_sink = log_sink_;
+    opt.lua.watchdog = watchdog_;
     world = World::Create(*model, opt, &error);
   } else {
     error = errors.Format();

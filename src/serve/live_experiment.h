@@ -14,6 +14,8 @@
 
 namespace essaim {
 
+class Watchdog;
+
 using LogSink = std::function<void(char stream, const std::string& line, const LogOrigin& from)>;
 
 /// What a frame says besides the world itself.
@@ -36,7 +38,7 @@ Json SceneJson(const World& world);
 
 class LiveExperiment {
  public:
-  LiveExperiment(std::string file, LoadOptions load, LogSink log_sink);
+  LiveExperiment(std::string file, LoadOptions load, LogSink log_sink, Watchdog* watchdog = nullptr);
   ~LiveExperiment();
 
   /// Reads the files again and builds a fresh world (run + 1). On failure the last good
@@ -65,6 +67,7 @@ class LiveExperiment {
   std::string file_;
   LoadOptions load_;
   LogSink log_sink_;
+  Watchdog* watchdog_;  // null: each World makes its own
   std::unique_ptr<Model> model_;
   std::unique_ptr<World> world_;
   std::vector<std::string> inputs_;

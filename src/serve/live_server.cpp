@@ -399,7 +399,8 @@ bool LiveServer::Start(std::string* error) {
   }
   s.experiment = std::make_unique<LiveExperiment>(
       s.options.file, s.options.load,
-      [&s](char stream, const std::string& line, const LogOrigin& from) { s.AddLog(stream, line, from); });
+      [&s](char stream, const std::string& line, const LogOrigin& from) { s.AddLog(stream, line, from); },
+      s.options.watchdog);
   s.AfterLoad(s.experiment->Load(), "load");
   s.watcher.Watch(s.experiment->InputFiles());
   const std::string token = s.options.token.empty() ? NewToken() : s.options.token;

@@ -11,6 +11,8 @@
 
 namespace essaim {
 
+class Watchdog;
+
 struct ServeOptions {
   std::string file;
   LoadOptions load;
@@ -19,6 +21,8 @@ struct ServeOptions {
   std::string token;  // "" : a fresh random one
   /// The page's HTML, with the drawing and chart code already in it.
   std::string page;
+  /// The watchdog of every experiment's Lua states (the command's, which signals reach).
+  Watchdog* watchdog = nullptr;
 };
 
 class LiveServer {

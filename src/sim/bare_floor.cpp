@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "lua/bare_controller.h"
+#include "lua/robot/bare_controller.h"
 #include "sim/step.h"
 
 namespace essaim {

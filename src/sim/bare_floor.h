@@ -22,7 +22,7 @@ struct BareFloor {
 
 /// Runs the experiment (its length, one thread) and, after each tick, replays every robot's
 /// readings of that tick through the same script in a bare lua_State of its own
-/// (lua/bare_controller.h): the readings are pushed into its tables first, untimed, then
+/// (lua/robot/bare_controller.h): the readings are pushed into its tables first, untimed, then
 /// only the step() calls are timed. Recording and replay go tick by tick, so the readings
 /// never need storing. False with `error` if a script fails to load or raises.
 bool MeasureBareFloor(const Model& model, BareFloor* out, std::string* error);

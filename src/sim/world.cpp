@@ -84,6 +84,10 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   w->inputs = options.inputs ? options.inputs : std::make_shared<InputFiles>();
   ListModelInputs(model, w->inputs.get());
   w->options.lua.inputs = w->inputs.get();
+  if (!w->options.lua.watchdog) {
+    w->own_watchdog = std::make_unique<Watchdog>();
+    w->options.lua.watchdog = w->own_watchdog.get();
+  }
   // Loop functions load first so the floor exists before anything senses it.
   w->loop_functions.SetLimits(w->options.lua);
   if (!w->loop_functions.Load(w->model, &w->robots, &w->physics, &w->entities, &w->controllers, options.output_dir, error))

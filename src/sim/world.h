@@ -11,8 +11,9 @@
 #include "devices/floor.h"
 #include "devices/media.h"
 #include "devices/robot_state.h"
+#include "lua/host/watchdog.h"
 #include "lua/loop_functions.h"
-#include "lua/lua_state.h"
+#include "lua/robot/lua_controller.h"
 #include "model/model.h"
 #include "physics/physics_world.h"
 
@@ -84,6 +85,9 @@ class World {
   /// What every stage reads: the scene, const.
   const Model& model;
   SimOptions options;
+  /// The watchdog of this World's Lua states when options.lua gave none; declared before
+  /// the states, so that it outlives them.
+  std::unique_ptr<Watchdog> own_watchdog;
   uint64_t tick = 0;
   /// Every file the run read, modules loaded by `require` included. Before the Lua states,
   /// whose `require` adds to it, so that it outlives them.

@@ -9,7 +9,7 @@
 
 #include "core/rng.h"
 #include "devices/media.h"
-#include "lua/bind_byte.h"
+#include "lua/robot/bind_byte.h"
 #include "support/scene.h"
 
 namespace essaim {

@@ -1,9 +1,9 @@
-// The guarded allocator every Lua state runs on (lua/lua_guard.h, over the small-block
-// pool of lua/small_block_pool.h): its accounting is exact on every path it takes.
+// The guarded allocator every Lua state runs on (lua/host/lua_guard.h, over the small-block
+// pool of lua/host/small_block_pool.h): its accounting is exact on every path it takes.
 #include <gtest/gtest.h>
 #include <lua.hpp>
 
-#include "lua/lua_guard.h"
+#include "lua/host/lua_guard.h"
 
 namespace essaim {
 namespace {

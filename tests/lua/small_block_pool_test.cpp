@@ -1,4 +1,4 @@
-// The Lua states' small-block pool (lua/small_block_pool.h): classes, reuse, alignment.
+// The Lua states' small-block pool (lua/host/small_block_pool.h): classes, reuse, alignment.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "lua/small_block_pool.h"
+#include "lua/host/small_block_pool.h"
 
 namespace essaim {
 namespace {

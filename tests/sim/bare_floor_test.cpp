@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <lua.hpp>
 
-#include "lua/bare_controller.h"
+#include "lua/robot/bare_controller.h"
 #include "sim/bare_floor.h"
 #include "support/scene.h"
 

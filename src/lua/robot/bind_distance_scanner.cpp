@@ -9,7 +9,7 @@
 // new readings instead of the old ones; docs/compatibility.md.)
 #include <cmath>
 
-#include "lua/lua_devices.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

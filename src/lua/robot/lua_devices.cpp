@@ -1,4 +1,4 @@
-#include "lua/lua_devices.h"
+#include "lua/robot/lua_devices.h"
 
 #include <cmath>
 

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
-#include "lua/lua_guard.h"
-#include "lua/lua_params.h"
+#include "lua/robot/lua_device_refs.h"
+#include "lua/host/lua_guard.h"
+#include "lua/robot/lua_params.h"
 #include "model/model.h"
 
 struct lua_State;
@@ -35,7 +35,6 @@ class LuaController {
   /// A state that hit its memory limit is closed and its memory freed.
   bool CallInit(std::string* error) { return Call("init", false, error); }
   bool CallStep(std::string* error) { return Call("step", true, error); }
-  bool CallReset(std::string* error) { return Call("reset", false, error); }
   bool CallDestroy(std::string* error) { return Call("destroy", false, error); }
   /// io.write's text: each completed line goes to the log buffer as a print() line.
   void WriteText(const char* text, size_t len);
@@ -54,6 +53,12 @@ class LuaController {
 
  private:
   bool Call(const char* fn, bool required, std::string* error);
+  /// The globals every controller script sees: log, logerr, print, io.write, vector types.
+  void OpenGlobals(::lua_State* L);
+  /// The robot table, in ARGoS's order: id, random, actuators, sensors, params.
+  void CreateRobotTable(::lua_State* L, const RobotDef& def, RobotState* robot);
+  /// Runs the script's top-level chunk, guarded; false with `error`.
+  bool RunChunk(std::string* error);
   /// After a guarded pcall: the error (robot id, what stopped it, `where`) and the state
   /// closed if it ran out of memory; true if the call went through. The error ends with
   /// " (" where name ")", e.g. " (in step)".

@@ -1,11 +1,11 @@
 // Lua tables of the foot-bot devices (spec §8.3): created once per robot, refreshed in
-// place every tick. One Create/Push pair per device family in lua/bind_*.cpp; the
+// place every tick. One Create/Push pair per device family in lua/robot/bind_*.cpp; the
 // switches in lua_devices.cpp dispatch on DeviceType.
 #pragma once
 #include <lua.hpp>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
+#include "lua/robot/lua_device_refs.h"
 #include "model/model.h"
 
 namespace essaim {
@@ -41,7 +41,7 @@ double CheckFiniteNumber(lua_State* L, int arg, const char* fn);
 constexpr double kMaxWheelSpeed = 10.0;          // m/s: 1 m per tick at 10 ticks/s, under Box2D's 2 m step cap
 constexpr double kMaxTurretSpeed = 20 * 3.141592653589793;  // rad/s (600 in set_rotation_speed units)
 
-// ---- device families (lua/bind_*.cpp)
+// ---- device families (lua/robot/bind_*.cpp)
 void CreateWheelsActuator(lua_State* L, int t, RobotState* robot);
 void CreateWheelsSensor(lua_State* L, int t);
 void PushWheels(lua_State* L, int ref, const Readings& rd);

@@ -3,7 +3,7 @@
 // once with their constant angle; each tick only `value` is rewritten in place, so
 // controllers may keep references to them (ARGoS does the same).
 #include "devices/devices.h"
-#include "lua/lua_devices.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

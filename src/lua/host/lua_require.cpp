@@ -1,4 +1,4 @@
-#include "lua/lua_require.h"
+#include "lua/host/lua_require.h"
 
 #include <exception>
 

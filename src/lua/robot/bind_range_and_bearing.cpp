@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lua/bind_byte.h"
-#include "lua/lua_devices.h"
+#include "lua/robot/bind_byte.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

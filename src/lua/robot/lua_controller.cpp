@@ -1,18 +1,19 @@
-#include "lua/lua_state.h"
+#include "lua/robot/lua_controller.h"
 
 #include <cstdlib>
 #include <cstring>
 
 #include <lua.hpp>
 
-#include "core/rng.h"
 #include "core/paths.h"
+#include "core/rng.h"
 #include "core/strings.h"
-#include "lua/lua_devices.h"
-#include "lua/lua_math_types.h"
-#include "lua/lua_params.h"
-#include "lua/lua_random.h"
-#include "lua/lua_require.h"
+#include "lua/host/lua_host.h"
+#include "lua/host/lua_require.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_params.h"
+#include "lua/robot/lua_random.h"
 
 namespace essaim {
 
@@ -117,17 +118,21 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   OpenGuardedLibraries(L, options.sandbox);
   RecordRequiredFiles(L, options.inputs);
   // Lua 5.4 seeds math.random from the clock: reseed from the experiment seed.
-  {
-    uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index);
-    lua_getglobal(L, "math");
-    lua_getfield(L, -1, "randomseed");
-    lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
-    lua_pushinteger(L, static_cast<lua_Integer>(robot->index));
-    lua_call(L, 2, 0);
-    lua_pop(L, 1);
-  }
+  SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index), robot->index);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  OpenGlobals(L);
+  CreateRobotTable(L, def, robot);
+  if (!PushReadings(error)) return false;
+
+  const std::string& script = controller_->script;
+  if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
+  SetRequireRoots(&guard_, {DirName(model.file), DirName(script)});
+  PrependScriptFolder(L, script);
+  return RunChunk(error);
+}
+
+void LuaController::OpenGlobals(lua_State* L) {
   for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
     lua_pushlightuserdata(L, &log_);
     lua_pushcclosure(L, fn, 1);
@@ -135,8 +140,9 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   }
   RouteIoWrite(L);
   OpenMathTypes(L);
+}
 
-  // The robot table, in ARGoS's order: id, random, actuators, sensors, params.
+void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotState* robot) {
   lua_newtable(L);
   lua_pushstring(L, def.id.c_str());
   lua_setfield(L, -2, "id");
@@ -151,22 +157,12 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   PushTrackedParams(L, &params_);
   lua_setfield(L, -2, "params");
   lua_setglobal(L, "robot");
-  if (!PushReadings(error)) return false;
+}
 
+bool LuaController::RunChunk(std::string* error) {
+  lua_State* L = L_;
   const std::string& script = controller_->script;
-  if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
-  // `require` finds modules next to the script.
-  std::string dir = DirName(script);
-  SetRequireRoots(&guard_, {DirName(model.file), dir});
-  std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "path");
-  std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
-  lua_pop(L, 1);
-  lua_pushstring(L, path.c_str());
-  lua_setfield(L, -2, "path");
-  lua_pop(L, 1);
-
+  const RobotDef& def = *def_;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
   if (luaL_loadfile(L, script.c_str()) != LUA_OK) {

@@ -1,6 +1,6 @@
 // Lua table of the light sensor (spec §7.3): robot.light[1..24] = {value, angle}, the
-// proximity ring's layout (lua/bind_proximity.cpp).
-#include "lua/lua_devices.h"
+// proximity ring's layout (lua/robot/bind_proximity.cpp).
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

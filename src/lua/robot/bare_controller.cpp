@@ -1,13 +1,13 @@
-#include "lua/bare_controller.h"
+#include "lua/robot/bare_controller.h"
 
 #include <lua.hpp>
 
 #include "core/paths.h"
 #include "core/rng.h"
-#include "lua/lua_devices.h"
-#include "lua/lua_guard.h"
-#include "lua/lua_math_types.h"
-#include "lua/lua_random.h"
+#include "lua/host/lua_host.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_random.h"
 
 namespace essaim {
 
@@ -41,6 +41,16 @@ void SilenceActuators(lua_State* L, int robot) {
 }
 }  // namespace
 
+lua_State* BareController::NewState(BareAllocator allocator) {
+  if (allocator == BareAllocator::Stock) return NewStockState();
+  guard_ = std::make_unique<LuaGuard>();
+  LuaOptions unlimited;  // the allocator alone: no memory cap, budget or wall clock
+  unlimited.memory_limit = 0;
+  unlimited.instruction_limit = 0;
+  unlimited.wall_seconds = 0;
+  return NewGuardedState(guard_.get(), unlimited);
+}
+
 BareController::~BareController() {
   if (guard_) CloseGuardedState(guard_.get());
   else if (L_) lua_close(L_);
@@ -53,16 +63,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
   scratch_.index = index;
   scratch_.controller_rng.Seed(DeriveSeed(experiment_seed, StreamKind::Controller, static_cast<uint64_t>(index)));
   scratch_.cmd.rab_data.assign(def.rab_data_size, 0);
-  if (allocator == BareAllocator::Pool) {
-    guard_ = std::make_unique<LuaGuard>();
-    LuaOptions unlimited;  // the allocator alone: no memory cap, budget or wall clock
-    unlimited.memory_limit = 0;
-    unlimited.instruction_limit = 0;
-    unlimited.wall_seconds = 0;
-    L_ = NewGuardedState(guard_.get(), unlimited);
-  } else {
-    L_ = luaL_newstate();
-  }
+  L_ = NewState(allocator);
   lua_State* L = L_;
   if (!L) {
     *error = "robot " + def.id + ": cannot create a Lua state";
@@ -70,13 +71,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
   }
   lua_gc(L, LUA_GCGEN, 0, 0);  // Lua's generational defaults; the run's own tuning is not the floor's
   luaL_openlibs(L);
-  lua_getglobal(L, "math");
-  lua_getfield(L, -1, "randomseed");
-  const uint64_t s = DeriveSeed(experiment_seed, StreamKind::LuaMath, static_cast<uint64_t>(index));
-  lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
-  lua_pushinteger(L, index);
-  lua_call(L, 2, 0);
-  lua_pop(L, 1);
+  SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, static_cast<uint64_t>(index)), index);
   for (const char* name : {"log", "logerr", "print"}) {
     lua_pushcfunction(L, NoOp);
     lua_setglobal(L, name);
@@ -101,14 +96,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
 
   const std::string& script = controller_->script;
   if (script.empty()) return true;
-  const std::string dir = DirName(script);
-  const std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "path");
-  const std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
-  lua_pop(L, 1);
-  lua_pushstring(L, path.c_str());
-  lua_setfield(L, -2, "path");
+  PrependScriptFolder(L, script);
   lua_settop(L, 0);
   if (luaL_loadfile(L, script.c_str()) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK) {
     *error = "robot " + def.id + ": " + lua_tostring(L, -1);

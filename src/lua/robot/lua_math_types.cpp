@@ -1,4 +1,4 @@
-#include "lua/lua_math_types.h"
+#include "lua/robot/lua_math_types.h"
 
 #include <cmath>
 #include <cstring>

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lua/lua_devices.h"
-#include "lua/lua_math_types.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/robot/lua_math_types.h"
 
 namespace essaim {
 

@@ -1,5 +1,5 @@
 // A controller script in a bare lua_State, fed readings from outside: the floor of a run's
-// cost (issue 12). The same robot table layout as LuaController, but the actuators are
+// cost. The same robot table layout as LuaController, but the actuators are
 // no-ops, log/print discard, there is no watchdog, and the readings are pushed by the
 // caller before the timed step() call, so that timing step() measures the script alone.
 #pragma once
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "devices/robot_state.h"
-#include "lua/lua_device_refs.h"
+#include "lua/robot/lua_device_refs.h"
 #include "model/model.h"
 
 struct lua_State;
@@ -17,7 +17,7 @@ namespace essaim {
 struct LuaGuard;
 
 /// Which allocator the bare state runs on. Stock: Lua's own (malloc), i.e. "bare Lua 5.4"
-/// as issue 12 defines the floor. Pool: the run's controllers' allocator (lua_guard's
+/// as the floor is defined. Pool: the run's controllers' allocator (lua_guard's
 /// small-block pool and accounting, no limits), so that a run/floor ratio compares the same
 /// Lua runtime and measures only what the simulator adds.
 enum class BareAllocator { Stock, Pool };
@@ -42,6 +42,7 @@ class BareController {
 
  private:
   bool Call(const char* fn, std::string* error);
+  lua_State* NewState(BareAllocator allocator);
 
   lua_State* L_ = nullptr;
   std::unique_ptr<LuaGuard> guard_;  // BareAllocator::Pool only

@@ -1,6 +1,6 @@
 // robot.gripper (spec §7.5): lock_positive() / lock_negative() / unlock() set the
 // aperture (+pi/2, -pi/2, 0) applied in the next Act. Arguments are ignored, as ARGoS.
-#include "lua/lua_devices.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

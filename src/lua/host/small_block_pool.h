@@ -1,4 +1,4 @@
-// Per-lua_State free lists for small blocks (issue 12). Lua's tables, strings and closures
+// Per-lua_State free lists for small blocks. Lua's tables, strings and closures
 // are mostly under 256 bytes and die young (a range-and-bearing message is four blocks per
 // tick); glibc's malloc/free took ~14% of a foraging run. Lua tells the allocator each
 // block's size on free and realloc, so a block needs no header: its size class comes from

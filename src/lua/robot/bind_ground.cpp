@@ -2,8 +2,8 @@
 // robot.motor_ground[1..4] = {value, offset}, offset a vector2 in cm set once, value
 // rewritten in place each tick (0 until the first sense, so init() sees 0).
 #include "devices/devices.h"
-#include "lua/lua_devices.h"
-#include "lua/lua_math_types.h"
+#include "lua/robot/lua_devices.h"
+#include "lua/robot/lua_math_types.h"
 
 namespace essaim {
 

@@ -5,8 +5,8 @@
 //
 // Lua 5.4 pays for a count hook at every instruction (the VM's trap path), whatever the
 // count: ~65% more Lua time on the foraging benchmark. So by default the hook is armed
-// only when a call has run kArmAfterSeconds (by a monitor thread); a normal step never
-// pays. Under --sandbox it is armed from the start and counts every instruction.
+// only when a call has run kArmAfterSeconds (by the run's Watchdog thread); a normal step
+// never pays. Under --sandbox it is armed from the start and counts every instruction.
 #pragma once
 #include <atomic>
 #include <cstddef>
@@ -14,13 +14,16 @@
 #include <string>
 #include <vector>
 
-#include "lua/small_block_pool.h"
+#include "lua/host/small_block_pool.h"
 
 struct lua_State;
+struct lua_Debug;
+typedef int (*lua_CFunction)(lua_State* L);
 
 namespace essaim {
 
 class InputFiles;
+class Watchdog;
 
 /// The watchdog's limits, on by default (--lua-budget, --lua-memory, <system lua_budget>).
 /// A call running this long gets the count hook (and, after a signal, is interrupted).
@@ -32,6 +35,9 @@ struct LuaOptions {
   long long instruction_limit = 1000000000;   // per call into Lua; 0 = unlimited
   double wall_seconds = 60;                   // per call, backstop for time in C functions; 0 = off
   InputFiles* inputs = nullptr;               // where `require` lists the files it loads; null: nowhere
+  /// The run's monitor thread (arms long calls, wall clock, interrupts, stuck calls). Null:
+  /// the World makes its own; a state made with none is never watched.
+  Watchdog* watchdog = nullptr;
 };
 
 /// One state's accounting. Its address is the allocator's user data: never moved.
@@ -55,24 +61,29 @@ struct LuaGuard {
   std::string name;  // "robot fb3" or "loop functions", for the stuck-in-C message
   // --sandbox: the folders (canonical) `require` may load from, whatever package.path says.
   std::vector<std::string> require_roots;
-  // Wall clock: the monitor thread reads these while the owner's thread runs Lua.
+  // The library functions the guarded ones wrap, called directly: kept out of the Lua
+  // state, so that debug.getupvalue cannot hand a script the original.
+  lua_CFunction original_setmetatable = nullptr, original_debug_setmetatable = nullptr, original_xpcall = nullptr;
+  // Wall clock: the watchdog thread reads these while the owner's thread runs Lua.
   lua_State* state = nullptr;
+  Watchdog* watchdog = nullptr;  // the one this state is registered with, or null
   double wall_seconds = 0;
   std::atomic<long long> call_started_ns{0};  // 0: not inside a call
   std::atomic<bool> wall_exceeded{false};
   std::atomic<bool> interrupted{false};   // a signal arrived while this call was stuck
+  std::atomic<bool> stuck_reported{false};  // the watchdog reported this call stuck in C
   // Where a long call was last seen ("foo.lua:12"), for the stuck-in-C message: the hook
-  // records it once the monitor asks (calls over a second), so normal calls pay nothing.
+  // records it once the watchdog asks (calls over a second), so normal calls pay nothing.
   std::atomic<bool> track_where{false};
   char where[128] = "";                    // under thread_mutex
-  // The coroutine being resumed (null: the main thread), so that the monitor arms the
+  // The coroutine being resumed (null: the main thread), so that the watchdog arms the
   // thread that actually runs: hooks are per coroutine.
   std::mutex thread_mutex;
   lua_State* running = nullptr;
 };
 
 /// A new state whose allocator is `guard`'s, with the hook installed (budget, interrupts).
-/// Registers the state with the wall-clock monitor; close it with CloseGuardedState.
+/// Registers the state with options.watchdog (if any); close it with CloseGuardedState.
 lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options);
 void CloseGuardedState(LuaGuard* guard);
 
@@ -97,13 +108,5 @@ std::string EndGuardedCall(LuaGuard* guard, int status);
 /// Whether EndGuardedCall's message already starts with the script's file:line (os.exit,
 /// the memory limit), so the caller need not name the script.
 inline bool StopNamesItsLine(const LuaGuard& g) { return !g.exit_called.empty() || g.memory_where[0] != '\0'; }
-
-/// Called (from the monitor thread) just before the process exits because a call is stuck
-/// inside a C function: the last chance to write summary.json. Null: none.
-using LuaStuckHandler = void (*)(const std::string& message);
-void SetLuaStuckHandler(LuaStuckHandler handler);
-
-/// Asks every state to stop at its next hook (async-signal-safe): SIGINT/SIGTERM.
-void RequestLuaInterrupt();
 
 }  // namespace essaim

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "lua/lua_devices.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

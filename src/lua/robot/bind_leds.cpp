@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "core/color.h"
-#include "lua/bind_byte.h"
-#include "lua/lua_devices.h"
+#include "lua/robot/bind_byte.h"
+#include "lua/robot/lua_devices.h"
 
 namespace essaim {
 

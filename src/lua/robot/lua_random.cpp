@@ -1,4 +1,4 @@
-#include "lua/lua_random.h"
+#include "lua/robot/lua_random.h"
 
 namespace essaim {
 

@@ -1,4 +1,4 @@
-#include "lua/small_block_pool.h"
+#include "lua/host/small_block_pool.h"
 
 #include <cstdlib>
 

@@ -1,4 +1,4 @@
-#include "lua/lua_params.h"
+#include "lua/robot/lua_params.h"
 
 #include <algorithm>
 

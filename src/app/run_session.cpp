@@ -1,0 +1,61 @@
+#include "app/run_session.h"
+
+#include "app/run_args.h"
+#include "core/json.h"
+#include "core/paths.h"
+#include "output/atomic_file.h"
+#include "output/recording.h"
+#include "output/summary.h"
+#include "sim/world.h"
+
+namespace essaim {
+
+RunSession::RunSession() : watchdog([this](const std::string& message) { OnStuck(message); }), signals(&watchdog) {}
+
+void RunSession::Begin(const std::string& out, const RunArgs& args, const Model& model) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  out_ = out;
+  args_ = &args;
+  model_ = &model;
+  signals.Listen();
+}
+
+void RunSession::SetWorld(const World* world, RecordingWriter* recorder) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  world_ = world;
+  recorder_ = recorder;
+}
+
+void RunSession::End() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  out_.clear();
+  args_ = nullptr;
+  model_ = nullptr;
+  world_ = nullptr;
+  recorder_ = nullptr;
+}
+
+void RunSession::OnStuck(const std::string& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::string error;
+  if (!world_) {  // stuck in the loading or init() of a script
+    if (args_)
+      WriteFailureSummary(out_, ESSAIM_VERSION, args_->file, args_->load.overrides, model_, /*inputs=*/nullptr, message,
+                          &error);
+    ExitStuck(message);
+  }
+  RunInfo info;
+  info.version = ESSAIM_VERSION;
+  info.status = "failed";
+  info.finished_by = "error";
+  info.outputs = {"summary.json"};
+  // The frames written so far end at a whole tick: sealed as they are, never left as a
+  // temporary file.
+  if (recorder_ && recorder_->IsOpen() && recorder_->Seal(&error)) info.outputs.push_back(kRecordingFile);
+  Json s = BuildSummary(*world_, info);
+  s["failure"] = message;
+  WriteFileAtomic(JoinPath(out_, "summary.json"), DumpJson(s), &error);
+  ExitStuck(message);
+}
+
+}  // namespace essaim

@@ -1,0 +1,40 @@
+// What the guard's pieces (allocator, hook, libraries, watchdog thread) share inside
+// lua/host; not for the rest of the code.
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include "lua/host/lua_guard.h"
+
+namespace essaim {
+
+// The hook runs every kHookEvery instructions: the budget is checked to this precision,
+// and the per-instruction cost stays one decrement in the VM.
+constexpr int kHookEvery = 1000;
+
+/// Lua's allocator for every guarded state; `ud` is the LuaGuard.
+void* GuardedAlloc(void* ud, void* ptr, size_t osize, size_t nsize);
+
+/// The count hook: budget, interrupts, wall clock, os.exit.
+void GuardHook(lua_State* L, lua_Debug*);
+
+/// The guard of a state made by NewGuardedState (the allocator's user data).
+LuaGuard* GuardOf(lua_State* L);
+
+/// From now on the hook fires at every instruction, of this coroutine and of the state's
+/// main thread, so a pcall around the loop cannot swallow the stop.
+void HookEveryInstruction(lua_State* L, LuaGuard* g);
+
+/// "file:line" of the first Lua function up the stack of L (C functions have no line).
+/// lua_getinfo with "Sl" neither allocates nor collects: safe inside the allocator.
+bool ScriptLine(lua_State* L, char* out, size_t size);
+
+/// One look at a state from the watchdog thread, `now` in steady-clock nanoseconds: arms
+/// the hook of a long call, flags wall-clock overruns and `interrupt`. Returns the
+/// stuck-in-C message the first time the call has been inside a C function for another
+/// full limit, else "".
+std::string WatchGuard(LuaGuard* g, long long now, bool interrupt);
+
+long long SteadyNowNs();
+
+}  // namespace essaim
