@@ -1,6 +1,5 @@
 #include "output/recording.h"
 
-#include <png.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 
 #include "core/paths.h"
 #include "core/strings.h"
+#include "model/floor_image.h"
 #include "output/atomic_file.h"
 #include "sim/world.h"
 
@@ -156,17 +156,7 @@ bool EncodeFloor(const FloorRaster& f, std::string* png, int* out_w, int* out_h)
       d[2] = c.b;
     }
   }
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(w);
-  image.height = static_cast<png_uint_32>(h);
-  image.format = PNG_FORMAT_RGB;
-  png_alloc_size_t bytes = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &bytes, 0, rgb.data(), 0, nullptr)) return false;
-  png->resize(bytes);
-  if (!png_image_write_to_memory(&image, &(*png)[0], &bytes, 0, rgb.data(), 0, nullptr)) return false;
-  png->resize(bytes);
+  if (!EncodePngRgb(rgb, w, h, png)) return false;
   *out_w = w;
   *out_h = h;
   return true;
