@@ -27,7 +27,6 @@
 #include "output/out_folder.h"
 #include "output/memory_log.h"
 #include "output/recording.h"
-#include "output/run_end.h"
 #include "output/summary.h"
 #include "serve/experiment_inputs.h"
 #include "serve/file_watcher.h"
@@ -95,9 +94,8 @@ void OnLuaStuck(const std::string& message) {
   // The frames written so far end at a whole tick: sealed as they are, never left as a
   // temporary file.
   if (g_run.recorder && g_run.recorder->IsOpen() && g_run.recorder->Seal(&error)) info.outputs.push_back(kRecordingFile);
-  Json s = BuildSummary(*g_run.world, info);
-  s["failure"] = message;
-  WriteFileAtomic(JoinPath(g_run.out, "summary.json"), DumpJson(s), &error);
+  info.failure = message;
+  WriteFileAtomic(JoinPath(g_run.out, "summary.json"), SummaryJsonText(*g_run.world, info), &error);
 }
 
 // From before the scripts load to after the world goes: signals end the run as
@@ -415,7 +413,7 @@ static int Run(RunArgs& r, std::vector<std::string>* inputs) {
     status = StepStatus::Running;
     world->failure.clear();
   }
-  Json metrics;
+  Value metrics;
   bool has_metrics = false;
   EndRun(*world, status, &info, &metrics, &has_metrics);
   if (!logs->Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/json_fwd.h"
+#include "core/value.h"
 
 namespace essaim {
 
@@ -16,5 +17,7 @@ std::string DumpJson(const Json& doc);
 std::string DumpJsonLine(const Json& doc);
 /// False with "line L, column C: ..." in `error` when `text` is not one JSON document.
 bool ParseJson(const std::string& text, Json* out, std::string* error);
+/// A plain value tree as a document: maps keep their order, lists stay lists.
+Json ToJson(const Value& value);
 
 }  // namespace essaim

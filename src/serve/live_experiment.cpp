@@ -6,7 +6,7 @@
 #include "core/error_list.h"
 #include "core/json.h"
 #include "core/strings.h"
-#include "lua/lua_inspect.h"
+#include "lua/loop/lua_inspect.h"
 #include "serve/experiment_inputs.h"
 #include "output/recording.h"
 
@@ -164,8 +164,8 @@ Json LiveExperiment::Inspect(int robot) const {
   for (const Color& c : r.leds) leds.push_back(Rgb(c));
   j["actuators"] = {{"wheels_m_per_s", {r.wheel_left, r.wheel_right}}, {"leds", leds}};
   lua_State* L = w.controllers[robot] ? w.controllers[robot]->State() : nullptr;
-  j["readings"] = LuaGlobalTree(L, "robot");
-  j["globals"] = LuaGlobalsTree(L);
+  j["readings"] = ToJson(LuaGlobalTree(L, "robot"));
+  j["globals"] = ToJson(LuaGlobalsTree(L));
   return j;
 }
 

@@ -11,7 +11,7 @@
 #include "devices/floor.h"
 #include "devices/media.h"
 #include "devices/robot_state.h"
-#include "lua/loop_functions.h"
+#include "lua/loop/loop_functions.h"
 #include "lua/lua_state.h"
 #include "model/model.h"
 #include "physics/physics_world.h"

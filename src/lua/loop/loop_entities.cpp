@@ -14,8 +14,8 @@
 #include "model/limits.h"
 
 #include "core/color.h"
-#include "lua/loop_functions.h"
-#include "lua/loop_handles.h"
+#include "lua/loop/loop_functions.h"
+#include "lua/loop/loop_handles.h"
 
 namespace essaim {
 

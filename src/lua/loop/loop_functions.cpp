@@ -1,4 +1,4 @@
-#include "lua/loop_functions.h"
+#include "lua/loop/loop_functions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,14 +6,14 @@
 #include <lua.hpp>
 
 #include "core/color.h"
-#include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
 #include "lua/lua_math_types.h"
 #include "lua/lua_params.h"
 #include "lua/lua_random.h"
 #include "lua/lua_require.h"
-#include "lua/loop_handles.h"
+#include "lua/loop/loop_handles.h"
+#include "lua/loop/lua_to_value.h"
 
 namespace essaim {
 
@@ -238,104 +238,6 @@ int LoopLog(lua_State* L) {
   return 0;
 }
 
-std::string LuaString(lua_State* L, int idx) {
-  size_t len = 0;
-  const char* p = lua_tolstring(L, idx, &len);
-  return std::string(p, len);  // whole, NUL bytes included
-}
-
-// A Lua value as JSON: a table with keys 1..n only is an array (empty → []); other
-// tables are objects with keys sorted, so metrics.json does not depend on hashing.
-// JSON has no NaN or infinity: those become null and their key path goes to `nonfinite`.
-bool ToJson(lua_State* L, int idx, Json* out, int depth, const std::string& where,
-            std::vector<std::string>* nonfinite, std::string* error) {
-  idx = lua_absindex(L, idx);
-  if (depth > 32) {
-    *error = "table nested too deep (cycle?)";
-    return false;
-  }
-  // Runs outside any pcall, one level per nesting: grow the stack without raising.
-  if (!lua_checkstack(L, 4)) {
-    *error = "out of Lua stack";
-    return false;
-  }
-  switch (lua_type(L, idx)) {
-    case LUA_TNIL: *out = nullptr; return true;
-    case LUA_TBOOLEAN: *out = lua_toboolean(L, idx) != 0; return true;
-    case LUA_TNUMBER:
-      if (lua_isinteger(L, idx)) {
-        *out = static_cast<int64_t>(lua_tointeger(L, idx));
-      } else {
-        double v = lua_tonumber(L, idx);
-        if (std::isfinite(v)) *out = v;
-        else *out = nullptr, nonfinite->push_back(where);
-      }
-      return true;
-    case LUA_TSTRING: *out = LuaString(L, idx); return true;
-    case LUA_TTABLE: {
-      lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, idx));
-      size_t count = 0;
-      bool all_int = true;
-      std::vector<std::string> keys;
-      lua_pushnil(L);
-      while (lua_next(L, idx)) {
-        ++count;
-        if (lua_type(L, -2) == LUA_TSTRING) keys.push_back(LuaString(L, -2));
-        else if (lua_isinteger(L, -2)) keys.push_back(std::to_string(lua_tointeger(L, -2)));
-        else {
-          lua_pop(L, 2);
-          *error = "table keys must be strings or integers";
-          return false;
-        }
-        all_int &= lua_isinteger(L, -2) != 0;
-        lua_pop(L, 1);
-      }
-      // A metatable field __jsontype = "array" | "object" settles empty or ambiguous tables.
-      std::string forced;
-      if (luaL_getmetafield(L, idx, "__jsontype") != LUA_TNIL) {
-        if (lua_type(L, -1) == LUA_TSTRING) forced = lua_tostring(L, -1);
-        lua_pop(L, 1);
-      }
-      bool as_array = forced.empty() ? count == static_cast<size_t>(n) && all_int : forced == "array";
-      if (as_array) {
-        *out = Json::array();
-        for (lua_Integer k = 1; k <= n; ++k) {
-          lua_rawgeti(L, idx, k);
-          Json v;
-          bool ok = ToJson(L, -1, &v, depth + 1, where + "[" + std::to_string(k) + "]", nonfinite, error);
-          lua_pop(L, 1);
-          if (!ok) return false;
-          out->push_back(std::move(v));
-        }
-        return true;
-      }
-      std::sort(keys.begin(), keys.end());
-      *out = Json::object();
-      for (const std::string& k : keys) {
-        // Keys were collected as text; integer keys are looked up as integers.
-        auto as_int = ParseInt(k);
-        bool found = false;
-        if (as_int) {
-          found = lua_rawgeti(L, idx, *as_int) != LUA_TNIL;
-          if (!found) lua_pop(L, 1);
-        }
-        if (!found) {
-          lua_pushlstring(L, k.data(), k.size());
-          lua_gettable(L, idx);
-        }
-        Json v;
-        bool ok = ToJson(L, -1, &v, depth + 1, where.empty() ? k : where + "." + k, nonfinite, error);
-        lua_pop(L, 1);
-        if (!ok) return false;
-        (*out)[k] = std::move(v);
-      }
-      return true;
-    }
-    default:
-      *error = std::string("cannot write a ") + luaL_typename(L, idx) + " to JSON";
-      return false;
-  }
-}
 }  // namespace
 
 LoopFunctions::~LoopFunctions() {
@@ -548,7 +450,7 @@ bool LoopFunctions::IsExperimentFinished(bool* finished, std::string* error) {
   return true;
 }
 
-bool LoopFunctions::PostExperiment(Json* metrics, bool* has_metrics, std::string* error) {
+bool LoopFunctions::PostExperiment(Value* metrics, bool* has_metrics, std::string* error) {
   *has_metrics = false;
   if (!L_) return true;
   if (RawGlobal(L_, "post_experiment") != LUA_TFUNCTION) {
@@ -559,7 +461,7 @@ bool LoopFunctions::PostExperiment(Json* metrics, bool* has_metrics, std::string
   if (lua_istable(L_, -1)) {
     std::string err;
     std::vector<std::string> nonfinite;
-    if (!ToJson(L_, -1, metrics, 0, "", &nonfinite, &err)) {
+    if (!LuaToValue(L_, -1, metrics, &nonfinite, &err)) {
       *error = "loop functions: post_experiment() result: " + err;
       lua_settop(L_, 0);
       return false;

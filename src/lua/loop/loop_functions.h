@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 #include "devices/entity_store.h"
 #include "devices/robot_state.h"
-#include "lua/lua_copy.h"
+#include "lua/loop/lua_copy.h"
 #include "lua/lua_guard.h"
 #include "lua/lua_params.h"
 #include "lua/lua_state.h"
@@ -48,8 +48,8 @@ class LoopFunctions {
   bool FloorColor(double x, double y, Color* out, std::string* error);
   bool Call(const char* name, std::string* error);  // init, pre_step, post_step, reset, destroy
   bool IsExperimentFinished(bool* finished, std::string* error);
-  /// post_experiment(): the returned table as JSON (`has_metrics` false when nil).
-  bool PostExperiment(Json* metrics, bool* has_metrics, std::string* error);
+  /// post_experiment(): the returned table as a value tree (`has_metrics` false when nil).
+  bool PostExperiment(Value* metrics, bool* has_metrics, std::string* error);
 
   const Timeseries& Series() const { return series_; }
   const LuaGuard& Memory() const { return guard_; }
