@@ -17,187 +17,6 @@
 
 namespace essaim {
 
-struct LoopFunctionsAccess {
-  static LoopFunctions* Self(lua_State* L) { return LoopFunctionsOf(L); }
-  static int RobotIndex(lua_State* L) {
-    EntityHandle* h = ToEntityHandle(L, 1);
-    if (!h || h->ref.kind != EntityKind::FootBot) luaL_typeerror(L, 1, "robot handle");
-    return static_cast<int>(h->ref.serial);
-  }
-  static int Battery(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
-    lua_pushnumber(L, (*lf->robots_)[i].battery.charge / lf->model_->robots[i].battery.full_charge);
-    return 1;
-  }
-  static int SetBattery(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
-    double c = luaL_checknumber(L, 2);
-    if (c < 0 || c > 1) return luaL_error(L, "set_battery: charge must be in [0, 1], got %f", c);
-    (*lf->robots_)[i].battery.charge = c * lf->model_->robots[i].battery.full_charge;
-    return 0;
-  }
-  static int Alive(lua_State* L) {
-    lua_pushboolean(L, (*Self(L)->robots_)[RobotIndex(L)].alive);
-    return 1;
-  }
-  static int Kill(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
-    RobotState& r = (*lf->robots_)[i];
-    r.alive = false;
-    r.wheel_left = r.wheel_right = 0;
-    lf->physics_->FreezeRobot(i);
-    return 0;
-  }
-  static int ControllerOk(lua_State* L) {
-    lua_pushboolean(L, (*Self(L)->robots_)[RobotIndex(L)].controller_ok);
-    return 1;
-  }
-  static int Led(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    int i = RobotIndex(L);
-    lua_Integer k = luaL_checkinteger(L, 2);
-    if (k < 1 || k > footbot::kLedCount) return luaL_error(L, "led index must be 1..13");
-    const Color& c = (*lf->robots_)[i].leds[k - 1];
-    lua_pushinteger(L, c.r);
-    lua_pushinteger(L, c.g);
-    lua_pushinteger(L, c.b);
-    return 3;
-  }
-  // r:lua_global / r:set_lua_global: CLuaController::GetLuaState(). The copy crosses
-  // states through the tape; the controller's side runs under its own pcall, so a memory
-  // error there stays there.
-  struct CopyJob {
-    LuaTape* tape;
-    const char* name;
-    const char* bad;
-    bool ok;
-  };
-  static int CollectGlobal(lua_State* C) {
-    auto* job = static_cast<CopyJob*>(lua_touserdata(C, 1));
-    lua_rawgeti(C, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
-    lua_pushstring(C, job->name);
-    lua_rawget(C, -2);
-    job->ok = job->tape->Record(C, -1, false, &job->bad);
-    return 0;
-  }
-  static int StoreGlobal(lua_State* C) {
-    auto* job = static_cast<CopyJob*>(lua_touserdata(C, 1));
-    lua_rawgeti(C, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
-    lua_pushstring(C, job->name);
-    job->tape->Replay(C);
-    lua_rawset(C, -3);
-    job->ok = true;
-    return 0;
-  }
-  static bool RunInController(lua_State* C, lua_CFunction fn, CopyJob* job) {
-    if (!lua_checkstack(C, 3)) return false;
-    const int top = lua_gettop(C);
-    lua_pushcfunction(C, fn);
-    lua_pushlightuserdata(C, job);
-    const bool ok = lua_pcall(C, 1, 0, 0) == LUA_OK;
-    lua_settop(C, top);
-    return ok && job->ok;
-  }
-  static lua_State* ControllerState(LoopFunctions* lf, int i) {
-    if (!lf->controllers_ || static_cast<size_t>(i) >= lf->controllers_->size()) return nullptr;
-    return (*lf->controllers_)[i]->State();  // null: no script, or closed after its memory limit
-  }
-  static int LuaGlobal(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    const int i = RobotIndex(L);
-    const char* name = luaL_checkstring(L, 2);
-    lua_State* C = ControllerState(lf, i);
-    if (!C) return lua_pushnil(L), 1;
-    CopyJob job{&lf->tape_, name, nullptr, false};
-    if (!RunInController(C, CollectGlobal, &job))
-      return luaL_error(L, "lua_global: cannot copy '%s' from robot '%s': %s", name, lf->model_->robots[i].id.c_str(),
-                        job.bad ? job.bad : "its Lua state is out of memory");
-    lf->tape_.Replay(L);
-    return 1;
-  }
-  static int SetLuaGlobal(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    const int i = RobotIndex(L);
-    const char* name = luaL_checkstring(L, 2);
-    luaL_checkany(L, 3);
-    const char* bad = nullptr;
-    if (!lf->tape_.Record(L, 3, true, &bad))
-      return luaL_error(L, "set_lua_global: '%s' must be plain data (numbers, strings, booleans, tables): %s", name,
-                        bad ? bad : "?");
-    lua_State* C = ControllerState(lf, i);
-    if (!C) return luaL_error(L, "set_lua_global: robot '%s' has no running controller", lf->model_->robots[i].id.c_str());
-    CopyJob job{&lf->tape_, name, nullptr, false};
-    if (!RunInController(C, StoreGlobal, &job))
-      return luaL_error(L, "set_lua_global: robot '%s': its Lua state is out of memory", lf->model_->robots[i].id.c_str());
-    return 0;
-  }
-  static int HandleIndex(lua_State* L) {
-    EntityHandle* h = ToEntityHandle(L, 1);
-    if (!h) luaL_typeerror(L, 1, "entity handle");
-    const char* k = luaL_checkstring(L, 2);
-    if (!std::strcmp(k, "id")) return lua_getiuservalue(L, 1, 1), 1;  // kept after removal, for messages
-    if (!std::strcmp(k, "kind")) return lua_pushstring(L, EntityKindName(h->ref.kind)), 1;
-    if (!std::strcmp(k, "index")) {
-      if (h->ref.kind == EntityKind::FootBot) lua_pushinteger(L, static_cast<lua_Integer>(h->ref.serial) + 1);
-      else lua_pushnil(L);
-      return 1;
-    }
-    lua_getmetatable(L, 1);
-    lua_pushvalue(L, 2);
-    lua_rawget(L, -2);
-    return 1;
-  }
-  // Two passes, so no Lua error unwinds through a C++ object (Debian's Lua longjmps, and a
-  // half-appended row would be left behind): the first checks every item and leaves its
-  // name and value on the stack; the second calls nothing that can raise and copies them.
-  static int Timeseries(lua_State* L) {
-    LoopFunctions* lf = Self(L);
-    luaL_checktype(L, 1, LUA_TTABLE);
-    const lua_Integer n = luaL_len(L, 1);
-    const std::vector<std::string>& columns = lf->series_.columns;
-    const bool first = columns.empty() && lf->series_.rows.empty();
-    if (!first && static_cast<size_t>(n) != columns.size())
-      return luaL_error(L, "timeseries: row has %d columns, the first row had %d", (int)n, (int)columns.size());
-    if (n < 0 || n > 100000) return luaL_error(L, "timeseries: a row has 0 to 100000 columns, got %d", (int)n);
-    luaL_checkstack(L, static_cast<int>(2 * n) + 3, "timeseries: too many columns");
-    for (lua_Integer k = 1; k <= n; ++k) {
-      lua_rawgeti(L, 1, k);
-      if (!lua_istable(L, -1)) return luaL_error(L, "timeseries: each item must be {name, value}");
-      lua_rawgeti(L, -1, 1);
-      lua_rawgeti(L, -2, 2);
-      size_t len = 0;
-      const char* name = lua_isstring(L, -2) ? lua_tolstring(L, -2, &len) : nullptr;  // a number becomes text here
-      if (!name || !lua_isnumber(L, -1)) return luaL_error(L, "timeseries: item %d must be {name, number}", (int)k);
-      if (!first && (columns[k - 1].size() != len || std::memcmp(columns[k - 1].data(), name, len) != 0))
-        return luaL_error(L, "timeseries: column %d is '%s', expected '%s'", (int)k, name, columns[k - 1].c_str());
-      lua_remove(L, -3);  // the item; its name and value stay
-    }
-    const int base = lua_gettop(L) - static_cast<int>(2 * n);
-    std::vector<double>& row = lf->series_.rows.emplace_back();
-    row.reserve(static_cast<size_t>(n));
-    int nonfinite = -1;
-    for (int k = 0; k < n; ++k) {
-      size_t len = 0;
-      const char* name = lua_tolstring(L, base + 1 + 2 * k, &len);
-      if (first) lf->series_.columns.emplace_back(name, len);  // whole, NUL bytes included
-      row.push_back(lua_tonumber(L, base + 2 + 2 * k));
-      if (nonfinite < 0 && !std::isfinite(row.back())) nonfinite = k;
-    }
-    if (nonfinite >= 0 && !lf->warned_nonfinite_row_) {
-      lf->warned_nonfinite_row_ = true;
-      std::string column = lf->series_.columns[static_cast<size_t>(nonfinite)];
-      std::replace(column.begin(), column.end(), '\n', ' ');  // one log line
-      lf->log_ += "Eloop functions: warning: timeseries(): NaN or infinite value in column '" + column +
-                  "' at tick " + std::to_string(lf->tick_) +
-                  ", written as NaN, Inf or -Inf in timeseries.csv (warned once per run)\n";
-    }
-    return 0;
-  }
-};
-
 namespace {
 // _G[name] read raw: these lookups run outside any pcall, so a script's metamethod on _G
 // must not run there.
@@ -244,59 +63,68 @@ LoopFunctions::~LoopFunctions() {
   CloseGuardedState(&guard_);
 }
 
-bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics,
-                         EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
-                         const std::string& output_dir, std::string* error) {
-  model_ = &model;
-  robots_ = robots;
-  physics_ = physics;
-  entities_ = entities;
-  controllers_ = controllers;
-  script_ = model.loop_functions.script;
-  if (script_.empty()) return true;
-  guard_.name = "loop functions";
-  L_ = NewGuardedState(&guard_, limits_);
-  if (!L_) {
-    *error = "loop functions: cannot create a Lua state";
-    return false;
-  }
-  lua_State* L = L_;
-  OpenGuardedLibraries(L, limits_.sandbox);
-  RecordRequiredFiles(L, limits_.inputs);
-  *static_cast<LoopFunctions**>(lua_getextraspace(L)) = this;  // LoopFunctionsOf
-  lua_pushcfunction(L, Traceback);
-  traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-  OpenMathTypes(L);
+void LoopFunctions::OpenLogs() {
   const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}, {"print", 'P'}};
   for (auto [name, stream] : logs) {
-    lua_pushlightuserdata(L, &log_);
-    lua_pushinteger(L, stream == 'P' ? 'O' : stream);
-    lua_pushcclosure(L, LoopLog, 2);
-    lua_setglobal(L, name);
+    lua_pushlightuserdata(L_, &context_.log);
+    lua_pushinteger(L_, stream == 'P' ? 'O' : stream);
+    lua_pushcclosure(L_, LoopLog, 2);
+    lua_setglobal(L_, name);
   }
-  {
-    // math.random seeded from the experiment, like the controllers'.
-    uint64_t s = DeriveSeed(model.experiment.seed, StreamKind::LoopFunctions, 1);
-    lua_getglobal(L, "math");
-    lua_getfield(L, -1, "randomseed");
-    lua_pushinteger(L, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
-    lua_call(L, 1, 0);
-    lua_pop(L, 1);
-  }
-  static const luaL_Reg handle_methods[] = {
-      {"battery", LoopFunctionsAccess::Battery},
-      {"lua_global", LoopFunctionsAccess::LuaGlobal}, {"set_lua_global", LoopFunctionsAccess::SetLuaGlobal},
-      {"set_battery", LoopFunctionsAccess::SetBattery}, {"alive", LoopFunctionsAccess::Alive},
-      {"kill", LoopFunctionsAccess::Kill},         {"led", LoopFunctionsAccess::Led},
-      {"controller_ok", LoopFunctionsAccess::ControllerOk}, {nullptr, nullptr}};
-  lua_newtable(L);  // the robot-handle metatable
-  luaL_setfuncs(L, handle_methods, 0);
-  lua_pushcfunction(L, LoopFunctionsAccess::HandleIndex);
-  lua_setfield(L, -2, "__index");
-  handle_meta_ = lua_topointer(L, -1);  // kept alive by the registry
-  lua_rawsetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
+}
 
-  lua_newtable(L);  // experiment
+// math.random seeded from the experiment, like the controllers'.
+void LoopFunctions::SeedMathRandom(uint64_t seed) {
+  const uint64_t s = DeriveSeed(seed, StreamKind::LoopFunctions, 1);
+  lua_getglobal(L_, "math");
+  lua_getfield(L_, -1, "randomseed");
+  lua_pushinteger(L_, static_cast<lua_Integer>(s & 0x7fffffffffffffffull));
+  lua_call(L_, 1, 0);
+  lua_pop(L_, 1);
+}
+
+namespace {
+// experiment.params: <loop_functions> attributes, and each child element as a table of its
+// own (<params reset_all="true"/> gives params.params.reset_all).
+void PushParamsTable(lua_State* L, const LoopFunctionsDef& def, TrackedParams* tracked) {
+  lua_newtable(L);
+  for (const auto& kv : def.params) {
+    lua_pushstring(L, kv.second.c_str());
+    lua_setfield(L, -2, kv.first.c_str());
+  }
+  for (const auto& child : def.children) {
+    lua_newtable(L);
+    for (const auto& kv : child.second) {
+      lua_pushstring(L, kv.second.c_str());
+      lua_setfield(L, -2, kv.first.c_str());
+    }
+    lua_setfield(L, -2, child.first.c_str());
+  }
+  PushTrackedParams(L, tracked);
+}
+
+void PushArenaTable(lua_State* L, const ArenaDef& arena) {
+  lua_newtable(L);
+  const std::pair<const char*, double> fields[] = {{"size_x", arena.size.x()}, {"size_y", arena.size.y()},
+                                                   {"center_x", arena.center.x()}, {"center_y", arena.center.y()}};
+  for (auto [k, v] : fields) {
+    lua_pushnumber(L, v);
+    lua_setfield(L, -2, k);
+  }
+}
+
+void PushRobotHandles(lua_State* L, const Model& model) {
+  lua_createtable(L, static_cast<int>(model.robots.size()), 0);
+  for (size_t i = 0; i < model.robots.size(); ++i) {
+    PushEntityHandle(L, {EntityKind::FootBot, static_cast<uint32_t>(i)}, model.robots[i].id.c_str());
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+}
+}  // namespace
+
+void LoopFunctions::PushExperiment(const Model& model, const std::string& output_dir) {
+  lua_State* L = L_;
+  lua_newtable(L);
   lua_pushinteger(L, 0);
   lua_setfield(L, -2, "tick");
   lua_pushinteger(L, model.experiment.ticks_per_second);
@@ -307,57 +135,64 @@ bool LoopFunctions::Load(const Model& model, std::vector<RobotState>* robots, Ph
   lua_setfield(L, -2, "seed");
   lua_pushstring(L, output_dir.c_str());
   lua_setfield(L, -2, "output_dir");
-  lua_newtable(L);
-  for (const auto& kv : model.loop_functions.params) {
-    lua_pushstring(L, kv.second.c_str());
-    lua_setfield(L, -2, kv.first.c_str());
-  }
-  for (const auto& child : model.loop_functions.children) {  // <params reset_all="true"/> → params.params.reset_all
-    lua_newtable(L);
-    for (const auto& kv : child.second) {
-      lua_pushstring(L, kv.second.c_str());
-      lua_setfield(L, -2, kv.first.c_str());
-    }
-    lua_setfield(L, -2, child.first.c_str());
-  }
-  PushTrackedParams(L, &params_);
+  PushParamsTable(L, model.loop_functions, &params_);
   lua_setfield(L, -2, "params");
-  lua_newtable(L);
-  const std::pair<const char*, double> arena[] = {{"size_x", model.arena.size.x()}, {"size_y", model.arena.size.y()},
-                                                  {"center_x", model.arena.center.x()}, {"center_y", model.arena.center.y()}};
-  for (auto [k, v] : arena) {
-    lua_pushnumber(L, v);
-    lua_setfield(L, -2, k);
-  }
+  PushArenaTable(L, model.arena);
   lua_setfield(L, -2, "arena");
   OpenEntityApi(L, -1);
-  lua_createtable(L, static_cast<int>(robots->size()), 0);
-  for (size_t i = 0; i < robots->size(); ++i) {
-    PushEntityHandle(L, {EntityKind::FootBot, static_cast<uint32_t>(i)}, model.robots[i].id.c_str());
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
+  PushRobotHandles(L, model);
   lua_setfield(L, -2, "robots");
   rng_.Seed(DeriveSeed(model.experiment.seed, StreamKind::LoopFunctions, 0));
   PushRandomTable(L, &rng_);
   lua_setfield(L, -2, "random");
-  lua_pushcfunction(L, LoopFunctionsAccess::Timeseries);
+  lua_pushcfunction(L, AppendTimeseriesRow);
   lua_setfield(L, -2, "timeseries");
-  lua_pushvalue(L, -1);
-  experiment_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-  lua_setglobal(L, "experiment");
+}
 
-  std::string dir = DirName(script_);
+// `require` finds modules next to the script first, and reads only below the .argos
+// file's folder and the script's.
+void LoopFunctions::SetPackagePath(const Model& model) {
+  const std::string dir = DirName(context_.script);
   SetRequireRoots(&guard_, {DirName(model.file), dir});
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "path");
-  std::string path = (dir.empty() ? std::string("./?.lua;") : dir + "/?.lua;") + lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_pushstring(L, path.c_str());
-  lua_setfield(L, -2, "path");
-  lua_pop(L, 1);
+  lua_getglobal(L_, "package");
+  lua_getfield(L_, -1, "path");
+  std::string path = (dir.empty() ? std::string("./?.lua;") : dir + "/?.lua;") + lua_tostring(L_, -1);
+  lua_pop(L_, 1);
+  lua_pushstring(L_, path.c_str());
+  lua_setfield(L_, -2, "path");
+  lua_pop(L_, 1);
+}
 
-  if (luaL_loadfile(L, script_.c_str()) != LUA_OK) {
-    *error = "loop functions: " + std::string(lua_tostring(L, -1));
+bool LoopFunctions::Load(const Model& model, EntityStore* entities,
+                         std::vector<std::unique_ptr<LuaController>>* controllers, const std::string& output_dir,
+                         std::string* error) {
+  context_.model = &model;
+  context_.entities = entities;
+  context_.controllers = controllers;
+  context_.script = model.loop_functions.script;
+  if (context_.script.empty()) return true;
+  guard_.name = "loop functions";
+  L_ = NewGuardedState(&guard_, limits_);
+  if (!L_) {
+    *error = "loop functions: cannot create a Lua state";
+    return false;
+  }
+  OpenGuardedLibraries(L_, limits_.sandbox);
+  RecordRequiredFiles(L_, limits_.inputs);
+  *static_cast<LoopContext**>(lua_getextraspace(L_)) = &context_;  // LoopContextOf
+  lua_pushcfunction(L_, Traceback);
+  traceback_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);
+  OpenMathTypes(L_);
+  OpenLogs();
+  SeedMathRandom(model.experiment.seed);
+  OpenRobotApi(L_);
+  PushExperiment(model, output_dir);
+  lua_pushvalue(L_, -1);
+  experiment_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);
+  lua_setglobal(L_, "experiment");
+  SetPackagePath(model);
+  if (luaL_loadfile(L_, context_.script.c_str()) != LUA_OK) {
+    *error = "loop functions: " + std::string(lua_tostring(L_, -1));
     return false;
   }
   return PCall(0, 0, "top level", error);
@@ -368,7 +203,7 @@ void LoopFunctions::ParamReads(std::vector<std::string>* unread, std::vector<std
 }
 
 void LoopFunctions::SetTick(uint64_t tick) {
-  tick_ = tick;
+  context_.tick = tick;
   if (!L_) return;
   // The host's own reference and a raw set, outside any pcall: no global a script rebinds
   // (`experiment = nil`) and no metamethod it adds can make this raise (a Lua panic).
@@ -389,7 +224,7 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
-    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : script_ + ": ") + stopped : msg ? msg : "error");
+    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : context_.script + ": ") + stopped : msg ? msg : "error");
     lua_settop(L, 0);
     return false;
   }
@@ -469,10 +304,11 @@ bool LoopFunctions::PostExperiment(Value* metrics, bool* has_metrics, std::strin
     *has_metrics = true;
     // One warning per run: metrics.json stays valid JSON, the user learns which keys were lost.
     if (!nonfinite.empty()) {
-      log_ += "Eloop functions: warning: post_experiment() result: NaN or infinite number at ";
-      for (size_t i = 0; i < nonfinite.size() && i < 5; ++i) log_ += (i ? ", " : "") + nonfinite[i];
-      if (nonfinite.size() > 5) log_ += " and " + std::to_string(nonfinite.size() - 5) + " more";
-      log_ += ", written as null in metrics.json\n";
+      context_.log += "Eloop functions: warning: post_experiment() result: NaN or infinite number at ";
+      std::string& log = context_.log;
+      for (size_t i = 0; i < nonfinite.size() && i < 5; ++i) log += (i ? ", " : "") + nonfinite[i];
+      if (nonfinite.size() > 5) log += " and " + std::to_string(nonfinite.size() - 5) + " more";
+      log += ", written as null in metrics.json\n";
     }
   }
   lua_settop(L_, 0);
