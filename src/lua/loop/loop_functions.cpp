@@ -1,13 +1,11 @@
 #include "lua/loop/loop_functions.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
+#include <cstdio>
 #include <lua.hpp>
 
 #include "core/color.h"
 #include "core/paths.h"
-#include "core/strings.h"
 #include "lua/lua_math_types.h"
 #include "lua/lua_params.h"
 #include "lua/lua_random.h"
