@@ -5,10 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/json_fwd.h"
 #include "core/value.h"
 
 namespace essaim {
+
+/// A JSON document; objects keep insertion order, so output is deterministic.
+using Json = nlohmann::ordered_json;
 
 /// Pretty-printed with 2-space indentation, newline-terminated. Strings are escaped
 /// (control characters and NUL as \uXXXX); invalid UTF-8 is replaced, never an error.
