@@ -19,17 +19,16 @@
 #include "app/run_args.h"
 #include "app/run_report.h"
 #include "app/run_session.h"
-#include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
 #include "output/memory_log.h"
 #include "output/out_folder.h"
 #include "output/recording.h"
-#include "output/run_end.h"
 #include "output/summary.h"
 #include "serve/experiment_inputs.h"
 #include "serve/file_watcher.h"
 #include "sim/error_groups.h"
+#include "sim/run_end.h"
 #include "sim/step.h"
 
 namespace essaim {
@@ -281,7 +280,7 @@ int Report(const ActiveRun& run, StepStatus status, const std::vector<std::strin
 
 /// Ends the run (final Lua hooks, metrics), closes and writes every output; the exit code.
 int FinishAndReport(ActiveRun& run, StepStatus status) {
-  Json metrics;
+  Value metrics;
   bool has_metrics = false;
   EndRun(*run.world, status, &run.info, &metrics, &has_metrics);
   std::string error;

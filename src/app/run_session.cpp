@@ -1,7 +1,6 @@
 #include "app/run_session.h"
 
 #include "app/run_args.h"
-#include "core/json.h"
 #include "core/paths.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -52,9 +51,8 @@ void RunSession::OnStuck(const std::string& message) {
   // The frames written so far end at a whole tick: sealed as they are, never left as a
   // temporary file.
   if (recorder_ && recorder_->IsOpen() && recorder_->Seal(&error)) info.outputs.push_back(kRecordingFile);
-  Json s = BuildSummary(*world_, info);
-  s["failure"] = message;
-  WriteFileAtomic(JoinPath(out_, "summary.json"), DumpJson(s), &error);
+  info.failure = message;
+  WriteFileAtomic(JoinPath(out_, "summary.json"), SummaryJsonText(*world_, info), &error);
   ExitStuck(message);
 }
 

@@ -10,6 +10,29 @@ std::string DumpJsonLine(const Json& doc) {
   return doc.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
+Json ToJson(const Value& value) {
+  switch (value.kind) {
+    case Value::Kind::Null: return Json();
+    case Value::Kind::Bool: return Json(value.boolean);
+    case Value::Kind::Integer: return Json(value.integer);
+    case Value::Kind::Number: return Json(value.number);
+    case Value::Kind::String: return Json(value.text);
+    case Value::Kind::List: {
+      Json out = Json::array();
+      for (const Value& item : value.list) out.push_back(ToJson(item));
+      return out;
+    }
+    case Value::Kind::Map: {
+      Json out = Json::object();
+      for (const auto& [key, item] : value.map) out[key] = ToJson(item);
+      return out;
+    }
+  }
+  return Json();
+}
+
+std::string ValueJsonText(const Value& value) { return DumpJson(ToJson(value)); }
+
 bool ParseJson(const std::string& text, Json* out, std::string* error) {
   try {
     *out = Json::parse(text);

@@ -5,9 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 
 namespace essaim {
+
+/// A JSON document; objects keep insertion order, so output is deterministic.
+using Json = nlohmann::ordered_json;
 
 /// Pretty-printed with 2-space indentation, newline-terminated. Strings are escaped
 /// (control characters and NUL as \uXXXX); invalid UTF-8 is replaced, never an error.
@@ -16,5 +19,7 @@ std::string DumpJson(const Json& doc);
 std::string DumpJsonLine(const Json& doc);
 /// False with "line L, column C: ..." in `error` when `text` is not one JSON document.
 bool ParseJson(const std::string& text, Json* out, std::string* error);
+/// A plain value tree as a document: maps keep their order, lists stay lists.
+Json ToJson(const Value& value);
 
 }  // namespace essaim

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "model/distribute.h"
+#include "model/limits.h"
+
 namespace essaim {
 
 namespace {
@@ -19,9 +22,10 @@ bool ParseEntityKind(const char* name, EntityKind* kind) {
   return false;
 }
 
-void EntityStore::Init(Model* scene, PhysicsWorld* physics) {
+void EntityStore::Init(Model* scene, PhysicsWorld* physics, std::vector<RobotState>* robots) {
   scene_ = scene;
   physics_ = physics;
+  robots_ = robots;
   order_.clear();
   added_.clear();
   obstacle_serial_.clear(), light_serial_.clear(), obstacle_index_.clear(), light_index_.clear();
@@ -111,5 +115,110 @@ void EntityStore::SetObstaclePose(int index, const Pose2& pose) {
   scene_->obstacles[index].pose = pose;
   MarkChanged(false);
 }
+
+const std::string& EntityStore::IdOf(const EntityRef& e) const {
+  const int i = IndexOf(e);
+  if (e.kind == EntityKind::FootBot) return scene_->robots[i].id;
+  if (e.kind == EntityKind::Light) return scene_->lights[i].id;
+  return scene_->obstacles[i].id;
+}
+
+size_t EntityStore::Count() const {
+  return scene_->robots.size() + scene_->obstacles.size() + scene_->lights.size();
+}
+
+namespace {
+bool IsObstacle(const EntityRef& e) { return e.kind == EntityKind::Box || e.kind == EntityKind::Cylinder; }
+}  // namespace
+
+Vec3 EntityStore::Position(const EntityRef& e, int index) const {
+  if (e.kind == EntityKind::Light) return scene_->lights[index].position;
+  const bool robot = e.kind == EntityKind::FootBot;
+  const Pose2 pose = robot ? physics_->RobotPose(index) : physics_->ObstaclePose(index);
+  return Vec3(pose.x, pose.y, robot ? scene_->robots[index].z : scene_->obstacles[index].z);
+}
+
+double EntityStore::Yaw(const EntityRef& e, int index) const {
+  if (e.kind == EntityKind::FootBot) return physics_->RobotPose(index).yaw;
+  if (e.kind == EntityKind::Light) return 0;
+  return physics_->ObstaclePose(index).yaw;
+}
+
+void EntityStore::SetPose(const EntityRef& e, int index, const Pose2& pose) {
+  if (e.kind == EntityKind::FootBot) {
+    physics_->SetRobotPose(index, pose);
+  } else if (e.kind == EntityKind::Light) {
+    scene_->lights[index].position.x() = pose.x, scene_->lights[index].position.y() = pose.y;
+  } else {
+    SetObstaclePose(index, pose);
+  }
+  MarkChanged(false);
+}
+
+bool EntityStore::Movable(const EntityRef& e, int index) const {
+  return e.kind == EntityKind::FootBot || (IsObstacle(e) && scene_->obstacles[index].movable);
+}
+
+int EntityStore::LedCount(const EntityRef& e, int index) const {
+  if (e.kind == EntityKind::FootBot) return footbot::kLedCount;
+  if (IsObstacle(e)) return static_cast<int>(scene_->obstacles[index].leds.size());
+  return 0;
+}
+
+Color EntityStore::Led(const EntityRef& e, int index, int k) const {
+  if (e.kind == EntityKind::FootBot) return (*robots_)[index].leds[k];
+  return scene_->obstacles[index].leds[k].color;
+}
+
+void EntityStore::SetLed(const EntityRef& e, int index, int k, const Color& color) {
+  const int count = LedCount(e, index);
+  for (int j = 0; j < count; ++j) {
+    if (k >= 0 && j != k) continue;
+    if (e.kind == EntityKind::FootBot) (*robots_)[index].leds[j] = color;
+    else scene_->obstacles[index].leds[j].color = color;
+  }
+  MarkChanged(false);  // cameras see it from the next sense
+}
+
+void EntityStore::SetLightIntensity(int index, double intensity) {
+  scene_->lights[index].intensity = intensity;
+  MarkChanged(false);
+}
+
+void EntityStore::SetLightColor(int index, const Color& color) {
+  scene_->lights[index].color = color;
+  MarkChanged(false);
+}
+
+double EntityStore::BatteryLevel(int i) const {
+  return (*robots_)[i].battery.charge / scene_->robots[i].battery.full_charge;
+}
+
+void EntityStore::SetBatteryLevel(int i, double level) {
+  (*robots_)[i].battery.charge = level * scene_->robots[i].battery.full_charge;
+}
+
+void EntityStore::KillRobot(int i) {
+  RobotState& r = (*robots_)[i];
+  r.alive = false;
+  r.wheel_left = r.wheel_right = 0;
+  physics_->FreezeRobot(i);
+}
+
+std::string EntityStore::ObstacleProblemNow(const ObstacleDef& def) const {
+  std::string problem = ObstacleProblem(def, scene_->experiment.limits);
+  if (!problem.empty()) return problem;
+  const Footprint f = ObstacleFootprint(def);
+  for (size_t i = 0; i < scene_->robots.size(); ++i) {
+    const Pose2 pose = physics_->RobotPose(static_cast<int>(i));
+    Footprint robot;
+    robot.center = {pose.x, pose.y};
+    robot.radius = footbot::kRadius;
+    if (FootprintsOverlap(f, robot)) return "it would overlap foot-bot '" + scene_->robots[i].id + "'";
+  }
+  return "";
+}
+
+std::string EntityStore::RoomProblem() const { return EntityCountProblem(Count() + 1, scene_->experiment.limits); }
 
 }  // namespace essaim

@@ -1,14 +1,17 @@
 // The entities of a run as loop functions see them (ARGoS's CSpace): foot-bots, boxes,
 // cylinders and lights in creation order, each with a serial that stays valid while
-// indices shift. It edits the World's scene (a mutable copy of the Model that every
-// sensor reads) and the physics together, and raises a "scene changed" flag that the
-// step turns into a media refresh before anything senses again.
+// indices shift. This is the one interface through which loop functions read and change
+// the World: it edits the World's scene (a mutable copy of the Model that every sensor
+// reads), the physics and the robots' states together, and raises a "scene changed" flag
+// that the step turns into a media refresh before anything senses again. Loop functions
+// call it only between stages.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "model/model.h"
+#include "devices/robot_state.h"
 #include "physics/physics_world.h"
 
 namespace essaim {
@@ -25,8 +28,9 @@ struct EntityRef {
 
 class EntityStore {
  public:
-  /// Registers the scene's robots, obstacles and lights. `scene` and `physics` outlive it.
-  void Init(Model* scene, PhysicsWorld* physics);
+  /// Registers the scene's robots, obstacles and lights. `scene`, `physics` and `robots`
+  /// (filled later, one per scene robot) outlive it.
+  void Init(Model* scene, PhysicsWorld* physics, std::vector<RobotState>* robots);
 
   /// Every live entity, creation order (the model's robots, obstacles, lights, then added ones).
   const std::vector<EntityRef>& All() const { return order_; }
@@ -42,6 +46,46 @@ class EntityStore {
   }
   /// Whether `id` names a live entity.
   bool HasId(const std::string& id) const;
+  /// The id of live entity `e`.
+  const std::string& IdOf(const EntityRef& e) const;
+  /// Live entities of every kind.
+  size_t Count() const;
+
+  // ---- reading and moving an entity `e` that is live at `index` (IndexOf)
+  /// x, y from the physics (lights: the scene), z from the scene.
+  Vec3 Position(const EntityRef& e, int index) const;
+  /// Heading as the physics has it (unbounded); 0 for lights.
+  double Yaw(const EntityRef& e, int index) const;
+  /// A robot or obstacle through the physics, a light's x, y in the scene.
+  void SetPose(const EntityRef& e, int index, const Pose2& pose);
+  /// Robots and movable obstacles.
+  bool Movable(const EntityRef& e, int index) const;
+  const ObstacleDef& Obstacle(int index) const { return scene_->obstacles[index]; }
+  const LightDef& Light(int index) const { return scene_->lights[index]; }
+
+  // ---- LEDs (robots' own and obstacles') and lights
+  int LedCount(const EntityRef& e, int index) const;
+  Color Led(const EntityRef& e, int index, int k) const;
+  /// LED `k`, or every LED when k < 0.
+  void SetLed(const EntityRef& e, int index, int k, const Color& color);
+  void SetLightIntensity(int index, double intensity);
+  void SetLightColor(int index, const Color& color);
+
+  // ---- robots, by index
+  const RobotState& Robot(int i) const { return (*robots_)[i]; }
+  Pose2 RobotPose(int i) const { return physics_->RobotPose(i); }
+  /// Charge as a fraction of the robot's full charge.
+  double BatteryLevel(int i) const;
+  void SetBatteryLevel(int i, double level);
+  /// Stops a robot for good: dead, wheels at rest, its body frozen.
+  void KillRobot(int i);
+
+  // ---- adding and removing, checked as the loader checks the .argos file
+  /// Why `def` cannot be added now (over the limits, or overlapping a foot-bot where it
+  /// stands), or "".
+  std::string ObstacleProblemNow(const ObstacleDef& def) const;
+  /// Why one entity more is over the experiment's limit, or "".
+  std::string RoomProblem() const;
 
   /// Adds a box or cylinder (kind from `def.kind`) to the scene and the physics.
   EntityRef AddObstacle(const ObstacleDef& def);
@@ -50,16 +94,16 @@ class EntityStore {
   bool Remove(const EntityRef& e);
   void SetObstaclePose(int index, const Pose2& pose);
 
-  Model& scene() { return *scene_; }
-  /// Something sensors index changed (layout, poses, colours) since the last Take.
-  void MarkChanged(bool layout) { changed_ = true, layout_changed_ |= layout; }
+  /// Something sensors index changed (layout, poses, colours) since the last ClearChanged.
   bool changed() const { return changed_; }
   bool layout_changed() const { return layout_changed_; }
   void ClearChanged() { changed_ = layout_changed_ = false; }
 
  private:
+  void MarkChanged(bool layout) { changed_ = true, layout_changed_ |= layout; }
   Model* scene_ = nullptr;
   PhysicsWorld* physics_ = nullptr;
+  std::vector<RobotState>* robots_ = nullptr;
   std::vector<EntityRef> order_;
   std::vector<EntityRef> added_;
   std::vector<uint32_t> obstacle_serial_, light_serial_;  // by current index

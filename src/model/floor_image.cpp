@@ -54,4 +54,19 @@ bool LoadPngBottomUp(const std::string& path, long long max_pixels, int* width, 
   return true;
 }
 
+bool EncodePngRgb(const std::vector<uint8_t>& rgb, int width, int height, std::string* png) {
+  png_image image;
+  std::memset(&image, 0, sizeof image);
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(width);
+  image.height = static_cast<png_uint_32>(height);
+  image.format = PNG_FORMAT_RGB;
+  png_alloc_size_t bytes = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &bytes, 0, rgb.data(), 0, nullptr)) return false;
+  png->resize(bytes);
+  if (!png_image_write_to_memory(&image, &(*png)[0], &bytes, 0, rgb.data(), 0, nullptr)) return false;
+  png->resize(bytes);
+  return true;
+}
+
 }  // namespace essaim

@@ -1,6 +1,8 @@
-// Floor images: PNG files read with libpng, stored bottom row first (spec §4.3: the
-// image's bottom-left pixel sits at the arena's min corner).
+// PNG through libpng, the one adapter for it: floor images read from files, stored bottom
+// row first (the image's bottom-left pixel sits at the arena's min corner, as in ARGoS), and
+// images written to memory (a recording's floor).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,5 +15,8 @@ namespace essaim {
 /// (read from its header) before anything is decoded: a small file can declare billions.
 bool LoadPngBottomUp(const std::string& path, long long max_pixels, int* width, int* height,
                      std::vector<Color>* pixels, std::string* error);
+/// `rgb` (8-bit RGB, top row first, width x height) as PNG bytes in `png`; false when
+/// libpng refuses it.
+bool EncodePngRgb(const std::vector<uint8_t>& rgb, int width, int height, std::string* png);
 
 }  // namespace essaim

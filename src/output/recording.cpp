@@ -1,6 +1,5 @@
 #include "output/recording.h"
 
-#include <png.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 
 #include "core/paths.h"
 #include "core/strings.h"
+#include "model/floor_image.h"
 #include "output/atomic_file.h"
 #include "sim/world.h"
 
@@ -156,17 +156,7 @@ bool EncodeFloor(const FloorRaster& f, std::string* png, int* out_w, int* out_h)
       d[2] = c.b;
     }
   }
-  png_image image;
-  std::memset(&image, 0, sizeof image);
-  image.version = PNG_IMAGE_VERSION;
-  image.width = static_cast<png_uint_32>(w);
-  image.height = static_cast<png_uint_32>(h);
-  image.format = PNG_FORMAT_RGB;
-  png_alloc_size_t bytes = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &bytes, 0, rgb.data(), 0, nullptr)) return false;
-  png->resize(bytes);
-  if (!png_image_write_to_memory(&image, &(*png)[0], &bytes, 0, rgb.data(), 0, nullptr)) return false;
-  png->resize(bytes);
+  if (!EncodePngRgb(rgb, w, h, png)) return false;
   *out_w = w;
   *out_h = h;
   return true;
@@ -353,7 +343,7 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   std::string header = SerializeScene(scene_, frame_bytes);
   errno = 0;
   if (std::fwrite(header.data(), 1, header.size(), file_) != header.size()) Fail(errno);
-  bytes_ = header_bytes_ = header.size();
+  header_bytes_ = header.size();
   if (file_) WriteFrame(world);
   if (!failure_.empty()) {
     *error = failure_;
@@ -393,7 +383,6 @@ void RecordingWriter::WriteFrame(const World& w) {
   RecordLate(w, center, unit);
   errno = 0;
   if (std::fwrite(frame_.data(), 1, frame_.size(), file_) != frame_.size()) return Fail(errno);
-  bytes_ += frame_.size();
   ++frames_;
   last_tick_ = w.tick;
 }
@@ -553,10 +542,13 @@ bool Recording::Read(const std::string& path, Recording* out, std::string* error
   return true;
 }
 
-bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
-  Recording r;
-  r.bytes_ = std::move(bytes);
-  ByteSource in{reinterpret_cast<const uint8_t*>(r.bytes_.data()), r.bytes_.size()};
+namespace {
+/// Entity counts in a recording's header.
+struct SceneCounts {
+  uint32_t robots = 0, obstacles = 0, movable = 0, lights = 0;
+};
+
+bool ReadPreamble(ByteSource& in, std::string* error) {
   const uint8_t* magic = in.Take(8);
   if (!magic || std::memcmp(magic, kMagic, 8) != 0) {
     *error = "not an essaim recording";
@@ -568,79 +560,112 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
              std::to_string(kRecordingVersion) + ")";
     return false;
   }
+  return true;
+}
+
+/// The header's numbers after the two sizes: timing, counts, seed, arena, scale.
+SceneCounts ReadSceneNumbers(ByteSource& in, RecordingScene* s) {
+  s->every = in.U32();
+  s->ticks_per_second = in.U32();
+  s->length_ticks = in.U32();
+  SceneCounts n;
+  n.robots = in.U32();
+  n.obstacles = in.U32();
+  n.movable = in.U32();
+  n.lights = in.U32();
+  s->seed = in.U64();
+  double mx = in.F64(), my = in.F64(), sx = in.F64(), sy = in.F64();
+  s->arena_min = Vec2(mx, my);
+  s->arena_size = Vec2(sx, sy);
+  s->position_unit = in.F64();
+  s->robot_radius = in.F64();
+  return n;
+}
+
+RecordedObstacle ReadObstacle(ByteSource& in) {
+  RecordedObstacle o;
+  o.cylinder = in.U8() != 0;
+  o.movable = in.U8() != 0;
+  o.pose.x = in.F32();
+  o.pose.y = in.F32();
+  o.pose.yaw = in.F32();
+  o.size_x = in.F32();
+  o.size_y = in.F32();
+  o.radius = in.F32();
+  o.height = in.F32();
+  o.led = UnpackRgb565(in.U16());
+  o.id = in.Str();
+  return o;
+}
+
+// The movable list names obstacles in increasing order: every one flagged movable, and
+// those added during the run (static or not), whose poses the frames hold too.
+void ReadMovableList(ByteSource& in, const SceneCounts& n, RecordingScene* s) {
+  size_t flagged = 0, flagged_listed = 0;
+  for (const RecordedObstacle& o : s->obstacles) flagged += o.movable ? 1 : 0;
+  for (uint32_t i = 0; i < n.movable && in.ok; ++i) {
+    uint32_t k = in.U32();
+    if (k >= n.obstacles || (i > 0 && k <= static_cast<uint32_t>(s->movable.back()))) {
+      in.ok = false;
+      break;
+    }
+    flagged_listed += s->obstacles[k].movable ? 1 : 0;
+    s->movable.push_back(static_cast<int>(k));
+  }
+  if (flagged_listed != flagged) in.ok = false;
+}
+
+RecordedLight ReadLight(ByteSource& in) {
+  RecordedLight l;
+  double x = in.F32(), y = in.F32(), z = in.F32();
+  l.position = Vec3(x, y, z);
+  l.color.r = in.U8();
+  l.color.g = in.U8();
+  l.color.b = in.U8();
+  l.color.a = in.U8();
+  l.intensity = in.F32();
+  l.id = in.Str();
+  return l;
+}
+
+/// The scene after the header's numbers: names, obstacles, the movable list, lights, floor.
+/// Stops at the first short read (in.ok false).
+void ReadSceneEntities(ByteSource& in, const SceneCounts& n, RecordingScene* s) {
+  s->experiment = in.Str();
+  for (uint32_t i = 0; i < n.robots && in.ok; ++i) s->robot_ids.push_back(in.Str());
+  for (uint32_t i = 0; i < n.obstacles && in.ok; ++i) s->obstacles.push_back(ReadObstacle(in));
+  ReadMovableList(in, n, s);
+  for (uint32_t i = 0; i < n.lights && in.ok; ++i) s->lights.push_back(ReadLight(in));
+  s->floor_width = in.U16();
+  s->floor_height = in.U16();
+  uint32_t png_bytes = in.U32();
+  const uint8_t* png = in.Take(png_bytes);
+  if (png) s->floor_png.assign(reinterpret_cast<const char*>(png), png_bytes);
+}
+}  // namespace
+
+bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
+  Recording r;
+  r.bytes_ = std::move(bytes);
+  ByteSource in{reinterpret_cast<const uint8_t*>(r.bytes_.data()), r.bytes_.size()};
+  if (!ReadPreamble(in, error)) return false;
   RecordingScene& s = r.scene_;
   r.header_bytes_ = in.U32();
   r.frame_bytes_ = in.U32();
-  s.every = in.U32();
-  s.ticks_per_second = in.U32();
-  s.length_ticks = in.U32();
-  uint32_t robots = in.U32(), obstacles = in.U32(), movable = in.U32(), lights = in.U32();
-  s.seed = in.U64();
-  double mx = in.F64(), my = in.F64(), sx = in.F64(), sy = in.F64();
-  s.arena_min = Vec2(mx, my);
-  s.arena_size = Vec2(sx, sy);
-  s.position_unit = in.F64();
-  s.robot_radius = in.F64();
+  const SceneCounts n = ReadSceneNumbers(in, &s);
   // In 64 bits: a damaged count must not wrap the product into a plausible frame size.
-  const uint64_t frame_bytes = uint64_t{kFrameTickBytes} + uint64_t{kRecordedRobotBytes} * robots +
-                               uint64_t{kRecordedMovableBytes} * movable;
-  if (!in.ok || r.header_bytes_ > r.bytes_.size() || r.frame_bytes_ != frame_bytes || movable > obstacles ||
+  const uint64_t frame_bytes = uint64_t{kFrameTickBytes} + uint64_t{kRecordedRobotBytes} * n.robots +
+                               uint64_t{kRecordedMovableBytes} * n.movable;
+  if (!in.ok || r.header_bytes_ > r.bytes_.size() || r.frame_bytes_ != frame_bytes || n.movable > n.obstacles ||
       !SaneScale(s)) {
     *error = "corrupt recording header";
     return false;
   }
-  s.experiment = in.Str();
-  for (uint32_t i = 0; i < robots && in.ok; ++i) s.robot_ids.push_back(in.Str());
-  for (uint32_t i = 0; i < obstacles && in.ok; ++i) {
-    RecordedObstacle o;
-    o.cylinder = in.U8() != 0;
-    o.movable = in.U8() != 0;
-    o.pose.x = in.F32();
-    o.pose.y = in.F32();
-    o.pose.yaw = in.F32();
-    o.size_x = in.F32();
-    o.size_y = in.F32();
-    o.radius = in.F32();
-    o.height = in.F32();
-    o.led = UnpackRgb565(in.U16());
-    o.id = in.Str();
-    s.obstacles.push_back(o);
-  }
-  // The movable list names obstacles in increasing order: every one flagged movable, and
-  // those added during the run (static or not), whose poses the frames hold too.
-  size_t flagged = 0, flagged_listed = 0;
-  for (const RecordedObstacle& o : s.obstacles) flagged += o.movable ? 1 : 0;
-  for (uint32_t i = 0; i < movable && in.ok; ++i) {
-    uint32_t k = in.U32();
-    if (k >= obstacles || (i > 0 && k <= static_cast<uint32_t>(s.movable.back()))) {
-      in.ok = false;
-      break;
-    }
-    flagged_listed += s.obstacles[k].movable ? 1 : 0;
-    s.movable.push_back(static_cast<int>(k));
-  }
-  if (flagged_listed != flagged) in.ok = false;
-  for (uint32_t i = 0; i < lights && in.ok; ++i) {
-    RecordedLight l;
-    double x = in.F32(), y = in.F32(), z = in.F32();
-    l.position = Vec3(x, y, z);
-    l.color.r = in.U8();
-    l.color.g = in.U8();
-    l.color.b = in.U8();
-    l.color.a = in.U8();
-    l.intensity = in.F32();
-    l.id = in.Str();
-    s.lights.push_back(l);
-  }
-  s.floor_width = in.U16();
-  s.floor_height = in.U16();
-  uint32_t png_bytes = in.U32();
-  const uint8_t* png = in.Take(png_bytes);
+  ReadSceneEntities(in, n, &s);
   if (!in.ok || in.pos > r.header_bytes_) {
     *error = "corrupt recording scene";
     return false;
   }
-  s.floor_png.assign(reinterpret_cast<const char*>(png), png_bytes);
   if (!SaneGeometry(s)) {
     *error = "corrupt recording scene (non-finite or out-of-range geometry, or a bad floor image)";
     return false;

@@ -108,7 +108,6 @@ class RecordingWriter {
   /// Why the recording stopped ("" while it goes on).
   const std::string& Failure() const { return failure_; }
   uint64_t FramesWritten() const { return frames_; }
-  uint64_t BytesWritten() const { return bytes_; }
 
  private:
   void WriteFrame(const World& world);
@@ -132,7 +131,7 @@ class RecordingWriter {
   std::vector<size_t> late_frame_end_;    // end of each such frame's slots in late_bytes_
   uint64_t late_first_frame_ = 0;
   uint64_t last_tick_ = UINT64_MAX;
-  uint64_t frames_ = 0, bytes_ = 0;
+  uint64_t frames_ = 0;
 };
 
 /// A recording read back whole into memory; frames are decoded on demand.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
 #include "output/atomic_file.h"
@@ -16,7 +17,6 @@ void AddInputs(Json& s, const std::string& version, const Model& m, const InputF
   for (const InputFile& f : inputs.List())
     s["inputs"].push_back(Json::object({{"path", f.path}, {"role", f.role}, {"hash", f.hash}}));
 }
-}  // namespace
 
 Json BuildSummary(const World& w, const RunInfo& info) {
   const Model& m = w.model;
@@ -58,6 +58,7 @@ Json BuildSummary(const World& w, const RunInfo& info) {
         Json::object({{"robot", e.robot}, {"tick", static_cast<uint64_t>(e.tick)}, {"message", e.message}}));
   std::string failure = w.failure;
   for (const std::string& e : info.output_errors) failure += (failure.empty() ? "" : "; ") + e;
+  if (!info.failure.empty()) failure = info.failure;
   if (!failure.empty()) s["failure"] = failure;
   s["unread_params"] = Json::array();
   for (const UnreadParam& u : w.unread_params) {
@@ -69,7 +70,6 @@ Json BuildSummary(const World& w, const RunInfo& info) {
   return s;
 }
 
-namespace {
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string out = "\"";
@@ -83,6 +83,8 @@ std::string CsvNumber(double v) {
   return FormatDouble(v);
 }
 }  // namespace
+
+std::string SummaryJsonText(const World& world, const RunInfo& info) { return DumpJson(BuildSummary(world, info)); }
 
 std::string TimeseriesCsv(const Timeseries& series) {
   std::string out;
@@ -119,7 +121,7 @@ bool WriteFailureSummary(const std::string& dir, const std::string& version, con
   return WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(s), error);
 }
 
-bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Json* metrics, std::string* error) {
+bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Value* metrics, std::string* error) {
   std::vector<std::string> failed;  // this function's own failures, for `error`
   auto write = [&](const char* name, const std::string& content) {
     std::string err;
@@ -127,13 +129,13 @@ bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const
     else failed.push_back(err);
   };
   if (!MakeDirs(dir, error)) return false;
-  if (metrics) write("metrics.json", DumpJson(*metrics));
+  if (metrics) write("metrics.json", DumpJson(ToJson(*metrics)));
   const Timeseries& ts = w.loop_functions.Series();
   if (!ts.columns.empty()) write("timeseries.csv", TimeseriesCsv(ts));
   info.output_errors.insert(info.output_errors.end(), failed.begin(), failed.end());
   info.outputs.insert(info.outputs.begin(), "summary.json");
   std::string err;
-  if (!WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(BuildSummary(w, info)), &err)) failed.push_back(err);
+  if (!WriteFileAtomic(JoinPath(dir, "summary.json"), SummaryJsonText(w, info), &err)) failed.push_back(err);
   error->clear();
   for (const std::string& e : failed) *error += (error->empty() ? "" : "; ") + e;
   return failed.empty();

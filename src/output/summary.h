@@ -4,23 +4,28 @@
 #include <string>
 #include <vector>
 
-#include "core/json.h"
+#include "core/value.h"
+#include "sim/run_end.h"
 #include "sim/world.h"
 
 namespace essaim {
 
-struct RunInfo {
+/// What summary.json says besides the World: the run's outcome (status, finished_by) and
+/// what only the caller knows.
+struct RunInfo : RunOutcome {
   std::string version;
   double wall_seconds = 0;
-  std::string status = "ok";        // ok | controller_error | failed | interrupted
-  std::string finished_by = "length";
   std::vector<std::string> outputs; // file names written
   /// Outputs that could not be written (a full disk): they make the status "failed" and
   /// go into summary.json's "failure".
   std::vector<std::string> output_errors;
+  /// When not empty, summary.json's "failure" instead of the World's (a run the watchdog
+  /// stopped for good).
+  std::string failure;
 };
 
-Json BuildSummary(const World& world, const RunInfo& info);
+/// summary.json's text.
+std::string SummaryJsonText(const World& world, const RunInfo& info);
 /// RFC 4180: a column name holding a comma, a quote or a line break is quoted, quotes
 /// doubled. Values are shortest round-trip; NaN and infinities are NaN, Inf and -Inf
 /// (what pandas, numpy and R read back).
@@ -36,7 +41,7 @@ bool WriteFailureSummary(const std::string& dir, const std::string& version, con
 /// summary.json last, so a folder with summary.json holds a finished run. One that cannot
 /// be written does not stop the others: summary.json is still attempted, with status
 /// "failed" and the reasons. False when anything failed, `error` listing what ("; ").
-bool WriteRunOutputs(const std::string& dir, const World& world, RunInfo info, const Json* metrics,
+bool WriteRunOutputs(const std::string& dir, const World& world, RunInfo info, const Value* metrics,
                      std::string* error);
 
 }  // namespace essaim

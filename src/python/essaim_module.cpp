@@ -18,11 +18,11 @@
 #include "output/atomic_file.h"
 #include "core/paths.h"
 #include "lua/host/watchdog.h"
-#include "lua/lua_copy.h"
+#include "lua/loop/lua_copy.h"
 #include "output/out_folder.h"
 #include "model/xml_loader.h"
 #include "output/recording.h"
-#include "output/run_end.h"
+#include "sim/run_end.h"
 #include "output/summary.h"
 #include "sim/step.h"
 #ifdef ESSAIM_HAVE_CAIRO
@@ -39,9 +39,9 @@ constexpr uint64_t kSignalCheckTicks = 256;
 // Log lines held before they are handed to Python (stepping pauses for it).
 constexpr size_t kMaxHeldLogLines = 10000;
 
-py::object FromJson(const Json& j) {
-  // Through Python's json module: the Json class stays an implementation detail.
-  return py::module_::import("json").attr("loads")(DumpJson(j));
+py::object FromJsonText(const std::string& text) {
+  // Through Python's json module: the JSON library stays an implementation detail.
+  return py::module_::import("json").attr("loads")(text);
 }
 
 /// Yaw in (-pi, pi], as numpy users expect angles (Box2D's angle is unbounded).
@@ -284,7 +284,7 @@ class Simulation {
     RunInfo info;
     info.version = ESSAIM_VERSION;
     if (status_ == StepStatus::Running) info.finished_by = "finish";  // stopped before the end
-    Json metrics;
+    Value metrics;
     bool has_metrics = false;
     {
       py::gil_scoped_release nogil;
@@ -295,8 +295,8 @@ class Simulation {
     info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     finished_ = true;
     Report();
-    summary_ = FromJson(BuildSummary(w, info));
-    metrics_ = has_metrics ? FromJson(metrics) : py::dict();
+    summary_ = FromJsonText(SummaryJsonText(w, info));
+    metrics_ = has_metrics ? FromJsonText(ValueJsonText(metrics)) : py::dict();
     if (!out_.empty() && !WriteRunOutputs(out_, w, info, has_metrics ? &metrics : nullptr, &error)) throw Error(error);
     if (!ok) throw Error(w.failure);
     return metrics_;
@@ -310,7 +310,7 @@ class Simulation {
     info.status = status_ == StepStatus::Running ? "running" : status_ == StepStatus::Failed ? "failed" : "ok";
     info.finished_by = status_ == StepStatus::Running ? "" : "not finished: call finish()";
     info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    return FromJson(BuildSummary(Live(), info));
+    return FromJsonText(SummaryJsonText(Live(), info));
   }
 
   py::list Errors() const { return errors_; }
@@ -319,11 +319,11 @@ class Simulation {
   py::object LuaGlobal(const py::object& robot, const std::string& name) const {
     const World& w = Live();
     const size_t i = RobotIndex(robot);
-    Json value;
+    Value value;
     std::string error;
-    if (!LuaGlobalToJson(w.controllers[i]->State(), name, &value, &error))
+    if (!LuaGlobalToValue(w.controllers[i]->State(), name, &value, &error))
       throw Error("lua_global: robot '" + model_->robots[i].id + "', '" + name + "': " + error);
-    return FromJson(value);
+    return FromJsonText(ValueJsonText(value));
   }
 
   /// The arena now as a PNG, drawn as `essaim snapshot` draws a recorded tick: bytes, or

@@ -6,7 +6,7 @@
 #include "core/error_list.h"
 #include "core/json.h"
 #include "core/strings.h"
-#include "lua/lua_inspect.h"
+#include "lua/loop/lua_inspect.h"
 #include "serve/experiment_inputs.h"
 #include "output/recording.h"
 
@@ -40,6 +40,7 @@ Json RobotJson(const World& w, size_t i) {
 }
 }  // namespace
 
+namespace {
 Json FrameJson(const World& w, const FrameInfo& info) {
   Json f = Json::object();
   f["tick"] = w.tick;
@@ -91,6 +92,11 @@ Json SceneJson(const World& w) {
   j["floor"] = s.floor_png.empty() ? std::string() : Base64Encode(s.floor_png);
   return j;
 }
+}  // namespace
+
+std::string FrameText(const World& world, const FrameInfo& info) { return DumpJsonLine(FrameJson(world, info)); }
+
+std::string SceneText(const World& world) { return DumpJsonLine(SceneJson(world)); }
 
 LiveExperiment::LiveExperiment(std::string file, LoadOptions load, LogSink log_sink, Watchdog* watchdog)
     : file_(std::move(file)), load_(std::move(load)), log_sink_(std::move(log_sink)), watchdog_(watchdog) {}
@@ -148,25 +154,48 @@ std::vector<std::string> LiveExperiment::InputFiles() const {
   return files;
 }
 
-Json LiveExperiment::Inspect(int robot) const {
-  if (!world_ || robot < 0 || static_cast<size_t>(robot) >= world_->robots.size()) return Json();
+namespace {
+Value RgbValue(const Color& c) {
+  Value v = Value::EmptyList();
+  for (unsigned char part : {c.r, c.g, c.b}) v.list.push_back(Value::OfInteger(part));
+  return v;
+}
+
+Value PairValue(const char* a, Value va, const char* b, Value vb) {
+  Value v = Value::EmptyMap();
+  v.Set(a, std::move(va));
+  v.Set(b, std::move(vb));
+  return v;
+}
+
+Value ActuatorsValue(const RobotState& r) {
+  Value wheels = Value::EmptyList();
+  wheels.list = {Value::OfNumber(r.wheel_left), Value::OfNumber(r.wheel_right)};
+  Value leds = Value::EmptyList();
+  for (const Color& c : r.leds) leds.list.push_back(RgbValue(c));
+  return PairValue("wheels_m_per_s", std::move(wheels), "leds", std::move(leds));
+}
+}  // namespace
+
+Value LiveExperiment::Inspect(int robot) const {
+  if (!world_ || robot < 0 || static_cast<size_t>(robot) >= world_->robots.size()) return Value();
   const World& w = *world_;
   const RobotState& r = w.robots[robot];
   const RobotDef& def = w.model.robots[robot];
   Pose2 pose = w.physics.RobotPose(robot);
-  Json j = Json::object();
-  j["index"] = robot;
-  j["id"] = def.id;
-  j["pose"] = {{"x", pose.x}, {"y", pose.y}, {"yaw_deg", Heading(pose.yaw) * 180 / M_PI}};
-  j["alive"] = r.alive;
-  j["controller_ok"] = r.controller_ok;
-  j["battery"] = def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0;
-  Json leds = Json::array();
-  for (const Color& c : r.leds) leds.push_back(Rgb(c));
-  j["actuators"] = {{"wheels_m_per_s", {r.wheel_left, r.wheel_right}}, {"leds", leds}};
+  Value j = Value::EmptyMap();
+  j.Set("index", Value::OfInteger(robot));
+  j.Set("id", Value::OfString(def.id));
+  Value where = PairValue("x", Value::OfNumber(pose.x), "y", Value::OfNumber(pose.y));
+  where.Set("yaw_deg", Value::OfNumber(Heading(pose.yaw) * 180 / M_PI));
+  j.Set("pose", std::move(where));
+  j.Set("alive", Value::OfBool(r.alive));
+  j.Set("controller_ok", Value::OfBool(r.controller_ok));
+  j.Set("battery", Value::OfNumber(def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0));
+  j.Set("actuators", ActuatorsValue(r));
   lua_State* L = w.controllers[robot] ? w.controllers[robot]->State() : nullptr;
-  j["readings"] = LuaGlobalTree(L, "robot");
-  j["globals"] = LuaGlobalsTree(L);
+  j.Set("readings", LuaGlobalTree(L, "robot"));
+  j.Set("globals", LuaGlobalsTree(L));
   return j;
 }
 

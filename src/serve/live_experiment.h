@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 #include "model/xml_loader.h"
 #include "sim/step.h"
 
@@ -30,11 +30,12 @@ struct FrameInfo {
 
 /// One frame: {tick, run, paused, speed, error, robots: [{id, x, y, yaw, led, alive, ok}],
 /// movable: [[x, y, yaw, led] or null when removed], series_rows, log_lines}. Positions are
-/// rounded to 0.1 mm and yaws to 1e-4 rad (a page needs no more; frames stay small).
-Json FrameJson(const World& world, const FrameInfo& info);
+/// rounded to 0.1 mm and yaws to 1e-4 rad (a page needs no more; frames stay small). JSON
+/// text on one line.
+std::string FrameText(const World& world, const FrameInfo& info);
 /// What does not change between frames: the arena, obstacles, lights, the floor (a PNG in
-/// base64), robot ids. Field names as the replay page's scene.
-Json SceneJson(const World& world);
+/// base64), robot ids. Field names as the replay page's scene. JSON text on one line.
+std::string SceneText(const World& world);
 
 class LiveExperiment {
  public:
@@ -61,7 +62,7 @@ class LiveExperiment {
   std::vector<std::string> InputFiles() const;
   /// A robot's inspector: pose, battery, actuators, its `robot` table (readings), its
   /// controller's own globals. Null for an index out of range.
-  Json Inspect(int robot) const;
+  Value Inspect(int robot) const;
 
  private:
   std::string file_;

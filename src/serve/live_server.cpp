@@ -254,7 +254,7 @@ void LiveServer::Impl::AnswerInspections() {
     todo.swap(inspections);
   }
   for (auto& in : todo) {
-    Json j = experiment->Inspect(in->robot);
+    Json j = ToJson(experiment->Inspect(in->robot));
     if (!j.is_null()) {
       Json lines = Json::array();
       std::lock_guard<std::mutex> lock(mutex);
@@ -275,7 +275,7 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
                  experiment->Error().c_str());
     return;
   }
-  std::string scene_json = experiment->world() ? DumpJsonLine(SceneJson(*experiment->world())) : "null";
+  std::string scene_json = experiment->world() ? SceneText(*experiment->world()) : "null";
   {
     std::lock_guard<std::mutex> lock(mutex);
     scene = std::move(scene_json);
@@ -358,9 +358,9 @@ void LiveServer::Impl::Publish() {
     info.log_lines = log_total;
   }
   const World* w = experiment->world();
-  Json frame = w ? FrameJson(*w, info) : Json{{"tick", 0}, {"run", info.run}, {"paused", true}, {"speed", speed},
-                                               {"error", info.error}, {"robots", Json::array()}};
-  frames.Publish(DumpJsonLine(frame));
+  frames.Publish(w ? FrameText(*w, info)
+                   : DumpJsonLine(Json{{"tick", 0}, {"run", info.run}, {"paused", true}, {"speed", speed},
+                                       {"error", info.error}, {"robots", Json::array()}}));
 }
 
 void LiveServer::Impl::Loop(const std::atomic<int>& stop) {

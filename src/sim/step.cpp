@@ -158,21 +158,4 @@ StepStatus Step(World& w) {
   return LengthReached(w) ? StepStatus::Finished : StepStatus::Running;
 }
 
-bool FinishRun(World& w, Json* metrics, bool* has_metrics, std::string* error) {
-  bool ok = w.loop_functions.PostExperiment(metrics, has_metrics, error);
-  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
-  for (size_t i = 0; i < w.controllers.size(); ++i) {
-    std::string err;
-    if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err)) {
-      w.controller_errors.push_back({w.model.robots[i].id, w.tick, err});
-      if (w.controllers[i]->ExitCalled() && ok) {
-        ok = false;
-        *error = err;
-      }
-    }
-    FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
-  }
-  return ok;
-}
-
 }  // namespace essaim

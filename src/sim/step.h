@@ -20,7 +20,5 @@ enum class StepStatus { Running, Finished, Failed };
 StepStatus Step(World& world);
 /// True when the experiment length is reached (length 0 = unlimited).
 bool LengthReached(const World& world);
-/// End of run: loop functions' post_experiment, controllers' destroy.
-bool FinishRun(World& world, Json* metrics, bool* has_metrics, std::string* error);
 
 }  // namespace essaim

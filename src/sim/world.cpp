@@ -8,7 +8,7 @@
 namespace essaim {
 
 World::World(const Model& m, const SimOptions& o) : scene(m), model(scene), options(o), physics(scene) {
-  entities.Init(&scene, &physics);
+  entities.Init(&scene, &physics, &robots);
 }
 World::~World() = default;
 
@@ -90,7 +90,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   }
   // Loop functions load first so the floor exists before anything senses it.
   w->loop_functions.SetLimits(w->options.lua);
-  if (!w->loop_functions.Load(w->model, &w->robots, &w->physics, &w->entities, &w->controllers, options.output_dir, error))
+  if (!w->loop_functions.Load(w->model, &w->entities, &w->controllers, options.output_dir, error))
     return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
 

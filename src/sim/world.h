@@ -12,7 +12,7 @@
 #include "devices/media.h"
 #include "devices/robot_state.h"
 #include "lua/host/watchdog.h"
-#include "lua/loop_functions.h"
+#include "lua/loop/loop_functions.h"
 #include "lua/robot/lua_controller.h"
 #include "model/model.h"
 #include "physics/physics_world.h"

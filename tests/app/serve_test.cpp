@@ -160,7 +160,7 @@ TEST(ServeFrames, FrameJsonHasTheRobotsAndTheRunState) {
   info.run = 4;
   info.paused = false;
   info.error = "x.lua:3: oops";
-  std::string line = DumpJsonLine(FrameJson(*s.world, info));
+  std::string line = FrameText(*s.world, info);
   EXPECT_EQ(line.find('\n'), std::string::npos);  // one SSE data: line
   Json f;
   std::string error;
@@ -178,7 +178,8 @@ TEST(ServeFrames, FrameJsonHasTheRobotsAndTheRunState) {
   EXPECT_GT(r0["y"].get<double>(), 2.0);  // drove north
   EXPECT_EQ(r0["led"], Json::array({255, 0, 0}));
   EXPECT_EQ(r0["alive"], true);
-  Json scene = SceneJson(*s.world);
+  Json scene;
+  ASSERT_TRUE(ParseJson(SceneText(*s.world), &scene, &error)) << error;
   EXPECT_EQ(scene["ids"], Json::array({"fb0", "fb1"}));
   EXPECT_EQ(scene["sizeX"], 10);
 }
@@ -232,7 +233,7 @@ TEST(ServeLiveExperiment, AScriptErrorKeepsTheLastGoodWorldAndAFixClearsIt) {
     EXPECT_NE(std::find(inputs.begin(), inputs.end(), d.path() + "/" + name), inputs.end()) << name;
   for (int i = 0; i < 5; ++i) EXPECT_EQ(live.Step(), StepStatus::Running);
 
-  Json inspected = live.Inspect(0);
+  Json inspected = ToJson(live.Inspect(0));
   EXPECT_EQ(inspected["id"], "fb0");
   EXPECT_EQ(inspected["globals"]["count"], 5);
   EXPECT_EQ(inspected["globals"]["state"]["target"]["x"], 1.5);
@@ -240,7 +241,7 @@ TEST(ServeLiveExperiment, AScriptErrorKeepsTheLastGoodWorldAndAFixClearsIt) {
   EXPECT_FALSE(inspected["globals"].contains("string"));  // the standard library is left out
   EXPECT_FALSE(inspected["globals"].contains("step"));    // and functions
   EXPECT_TRUE(inspected["readings"].contains("positioning"));
-  EXPECT_TRUE(live.Inspect(7).is_null());
+  EXPECT_TRUE(live.Inspect(7).IsNull());
 
   d.Write("ctrl.lua", "function step()\n  robot.wheels.set_velocity(1, 1\nend\n");
   EXPECT_FALSE(live.Load());

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/json.h"
+#include "sim/run_end.h"
 #include "output/recording.h"
 #include "support/scene.h"
 
@@ -94,10 +95,11 @@ function post_experiment() return {order = order, moved = moved} end
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_NEAR(s.world->physics.ObstaclePose(1).x, -2, 1e-6);  // the box, moved in init
   Step(*s.world);
-  Json metrics;
+  Value metrics_tree;
   bool has = false;
   std::string err;
-  ASSERT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;
+  ASSERT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;
+  Json metrics = ToJson(metrics_tree);
   EXPECT_EQ(metrics["order"], "foot-bot:fb0,foot-bot:fb1,cylinder:cyl,box:bx,light:lt");
   EXPECT_EQ(metrics["moved"], true);
 }
@@ -285,10 +287,11 @@ function post_experiment() return {total = total, cfg = experiment.robots[1]:lua
   ASSERT_TRUE(s.ok()) << s.error;
   for (int i = 0; i < 3; ++i) ASSERT_EQ(Step(*s.world), StepStatus::Running) << s.world->failure;
   ASSERT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
-  Json metrics;
+  Value metrics_tree;
   bool has = false;
   std::string err;
-  ASSERT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;
+  ASSERT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;
+  Json metrics = ToJson(metrics_tree);
   EXPECT_EQ(metrics["total"], 4);  // bonus 2 added in ticks 2 and 3
   EXPECT_EQ(metrics["cfg"], "c");
 }
@@ -301,10 +304,11 @@ TEST(LoopEntities, LoopFunctionChildrenAreParams) {
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"), SensingController("c.lua"),
                                    "<params reset_all=\"true\"/><zone radius=\"0.5\"/>"));
   ASSERT_TRUE(s.ok()) << s.error;
-  Json metrics;
+  Value metrics_tree;
   bool has = false;
   std::string err;
-  ASSERT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;
+  ASSERT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;
+  Json metrics = ToJson(metrics_tree);
   EXPECT_EQ(metrics["r"], "true");
   EXPECT_EQ(metrics["n"], "0.5");
   EXPECT_EQ(metrics["s"], "loop.lua");

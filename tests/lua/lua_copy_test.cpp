@@ -1,8 +1,9 @@
-// A controller's Lua global as JSON (LuaGlobalToJson, behind the Python module's lua_global).
+// A controller's Lua global as a value tree, checked through its JSON form (LuaGlobalToValue,
+// behind the Python module's lua_global).
 #include <gtest/gtest.h>
 
 #include "core/json.h"
-#include "lua/lua_copy.h"
+#include "lua/loop/lua_copy.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -17,11 +18,14 @@ struct Globals {
     scene = Load(dir, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")));
   }
   bool Get(const std::string& name, Json* out, std::string* error) {
-    return LuaGlobalToJson(scene.world->controllers[0]->State(), name, out, error);
+    Value value;
+    if (!LuaGlobalToValue(scene.world->controllers[0]->State(), name, &value, error)) return false;
+    *out = ToJson(value);
+    return true;
   }
 };
 
-TEST(LuaGlobalToJson, PlainValuesArraysAndObjects) {
+TEST(LuaGlobalToValue, PlainValuesArraysAndObjects) {
   Globals g(R"(
 n, x, s, yes, f = 7, 0.25, "text", true, function() end
 list = {1, "two", {3}}
@@ -62,7 +66,7 @@ twice = {left = shared, right = shared}
   EXPECT_EQ(v["right"], Json::parse("[1]"));
 }
 
-TEST(LuaGlobalToJson, CyclesAndTableKeysAreRefused) {
+TEST(LuaGlobalToValue, CyclesAndTableKeysAreRefused) {
   Globals g(R"(
 loop = {}
 loop.self = loop
@@ -75,7 +79,8 @@ keyed = {[{}] = 1}
   EXPECT_NE(error.find("contains itself"), std::string::npos) << error;
   EXPECT_FALSE(g.Get("keyed", &v, &error));
   EXPECT_NE(error.find("used as a key"), std::string::npos) << error;
-  EXPECT_FALSE(LuaGlobalToJson(nullptr, "x", &v, &error));
+  Value none;
+  EXPECT_FALSE(LuaGlobalToValue(nullptr, "x", &none, &error));
   EXPECT_NE(error.find("not running"), std::string::npos) << error;
 }
 

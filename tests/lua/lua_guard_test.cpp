@@ -8,6 +8,7 @@
 
 #include "core/json.h"
 #include "lua/host/watchdog.h"
+#include "sim/run_end.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -172,10 +173,10 @@ TEST(LuaWatchdog, MemoryHogIsClosedAndFreedOthersUntouched) {
   EXPECT_EQ(s.world->controllers[0]->State(), nullptr);
   EXPECT_EQ(s.world->controllers[0]->Memory().bytes, 0u);
   EXPECT_GT(s.world->physics.RobotPose(1).x, 0.03);  // 9 ticks at 5 cm/s
-  Json metrics;
+  Value metrics_tree;
   bool has = false;
   std::string err;
-  EXPECT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;  // destroy skips the closed state
+  EXPECT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;  // destroy skips the closed state
 }
 
 // Filling the readings allocates (every received message is a fresh table): a state kept

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/json.h"
+#include "sim/run_end.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -242,10 +243,11 @@ end
   EXPECT_FALSE(s.world->robots[1].alive);
   double xb = s.world->physics.RobotPose(1).x;
   EXPECT_LT(xb, 0.08);  // killed at tick 7: braked since
-  Json metrics;
+  Value metrics_tree;
   bool has = false;
   std::string err;
-  ASSERT_TRUE(FinishRun(*s.world, &metrics, &has, &err)) << err;
+  ASSERT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;
+  Json metrics = ToJson(metrics_tree);
   ASSERT_TRUE(has);
   EXPECT_EQ(DumpJson(metrics),
             "{\n  \"alive2\": false,\n  \"id\": \"a\",\n  \"label\": \"hello\",\n  \"list\": [\n    1,\n    2,\n    3\n  ],\n"

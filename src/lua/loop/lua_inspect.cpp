@@ -1,4 +1,4 @@
-#include "lua/lua_inspect.h"
+#include "lua/loop/lua_inspect.h"
 
 #include <lua.hpp>
 
@@ -9,7 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/json.h"
 #include "core/strings.h"
 #include "lua/robot/lua_math_types.h"
 
@@ -32,7 +31,7 @@ struct TreeWalk {
   const LuaTreeLimits& limits;
   int budget;
 
-  // The key at `idx` as a JSON object key; false for keys that are neither strings nor numbers.
+  // The key at `idx` as a map key; false for keys that are neither strings nor numbers.
   static bool KeyText(lua_State* L, int idx, std::string* out) {
     int t = lua_type(L, idx);
     if (t == LUA_TSTRING) {
@@ -51,54 +50,54 @@ struct TreeWalk {
     return true;
   }
 
-  Json Value(int idx, int depth) {
+  Value At(int idx, int depth) {
     switch (lua_type(L, idx)) {
       case LUA_TNUMBER:
-        if (lua_isinteger(L, idx)) return Json(static_cast<long long>(lua_tointeger(L, idx)));
-        return Json(lua_tonumber(L, idx));
+        if (lua_isinteger(L, idx)) return Value::OfInteger(static_cast<int64_t>(lua_tointeger(L, idx)));
+        return Value::OfNumber(lua_tonumber(L, idx));
       case LUA_TBOOLEAN:
-        return Json(lua_toboolean(L, idx) != 0);
+        return Value::OfBool(lua_toboolean(L, idx) != 0);
       case LUA_TSTRING: {
         size_t n = 0;
         const char* s = lua_tolstring(L, idx, &n);
         std::string text(s, std::min(n, limits.string_chars));
-        return Json(n > limits.string_chars ? text + "..." : text);
+        return Value::OfString(n > limits.string_chars ? text + "..." : text);
       }
       case LUA_TTABLE:
-        return depth >= limits.depth ? Json("{...}") : Table(idx, depth + 1, false);
+        return depth >= limits.depth ? Value::OfString("{...}") : Table(idx, depth + 1, false);
       case LUA_TUSERDATA:
         return MathValue(idx);
       default:
-        return Json(lua_typename(L, lua_type(L, idx)));
+        return Value::OfString(lua_typename(L, lua_type(L, idx)));
     }
   }
 
   // A vector or quaternion as its components; other userdata by type name.
-  Json MathValue(int idx) {
+  Value MathValue(int idx) {
     const char* names[4];
     double values[4];
     int n = MathTypeFields(L, idx, names, values);
-    if (n == 0) return Json("userdata");
-    Json out = Json::object();
-    for (int i = 0; i < n; ++i) out[names[i]] = values[i];
+    if (n == 0) return Value::OfString("userdata");
+    Value out = Value::EmptyMap();
+    for (int i = 0; i < n; ++i) out.Set(names[i], Value::OfNumber(values[i]));
     return out;
   }
 
   // Keys in a stable order (pairs() order changes from run to run): numbers by value first,
   // then names.
-  static bool KeyBefore(const std::pair<std::string, Json>& a, const std::pair<std::string, Json>& b) {
+  static bool KeyBefore(const std::pair<std::string, Value>& a, const std::pair<std::string, Value>& b) {
     std::optional<long long> x = ParseInt(a.first), y = ParseInt(b.first);
     if (x && y) return *x < *y;
     if (x || y) return x.has_value();
     return a.first < b.first;
   }
 
-  Json Table(int idx, int depth, bool globals) {
-    Json out = Json::object();
+  Value Table(int idx, int depth, bool globals) {
+    Value out = Value::EmptyMap();
     if (!lua_checkstack(L, 4)) return out;
     idx = lua_absindex(L, idx);
     int more = 0;
-    std::vector<std::pair<std::string, Json>> entries;
+    std::vector<std::pair<std::string, Value>> entries;
     std::string key;
     lua_pushnil(L);
     while (lua_next(L, idx) != 0) {
@@ -108,35 +107,35 @@ struct TreeWalk {
         ++more;
       } else if (!skip) {
         --budget;
-        entries.emplace_back(key, Value(-1, depth));
+        entries.emplace_back(key, At(-1, depth));
       }
       lua_pop(L, 1);
     }
     std::sort(entries.begin(), entries.end(), KeyBefore);
-    for (auto& [k, v] : entries) out[k] = std::move(v);
-    if (more > 0) out["..."] = std::to_string(more) + " more";
+    for (auto& [k, v] : entries) out.Set(k, std::move(v));
+    if (more > 0) out.Set("...", Value::OfString(std::to_string(more) + " more"));
     return out;
   }
 };
 
 }  // namespace
 
-Json LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits) {
-  if (!L) return Json::object();
+Value LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits) {
+  if (!L) return Value::EmptyMap();
   TreeWalk walk{L, limits, limits.total};
   lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
-  Json out = walk.Table(-1, 1, true);
+  Value out = walk.Table(-1, 1, true);
   lua_pop(L, 1);
   return out;
 }
 
-Json LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits) {
-  if (!L) return Json();
+Value LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits) {
+  if (!L) return Value();
   TreeWalk walk{L, limits, limits.total};
   lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
   lua_pushstring(L, name);
   lua_rawget(L, -2);
-  Json out = lua_type(L, -1) == LUA_TTABLE ? walk.Table(-1, 1, false) : Json();
+  Value out = lua_type(L, -1) == LUA_TTABLE ? walk.Table(-1, 1, false) : Value();
   lua_pop(L, 2);
   return out;
 }

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 
 struct lua_State;
 
@@ -17,10 +17,10 @@ struct LuaTreeLimits {
   size_t string_chars = 200;
 };
 
-/// The script's own globals as a JSON tree: numbers, strings, booleans and tables, the
+/// The script's own globals as a value tree: numbers, strings, booleans and tables, the
 /// standard library, `robot` and functions left out. Null state: an empty object.
-Json LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits = {});
+Value LuaGlobalsTree(lua_State* L, const LuaTreeLimits& limits = {});
 /// One global table (e.g. "robot") as a tree, functions left out; null when not a table.
-Json LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits = {});
+Value LuaGlobalTree(lua_State* L, const char* name, const LuaTreeLimits& limits = {});
 
 }  // namespace essaim

@@ -1,10 +1,9 @@
-#include "lua/lua_copy.h"
+#include "lua/loop/lua_copy.h"
 
 #include <algorithm>
 
 #include <lua.hpp>
 
-#include "core/json.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -137,52 +136,52 @@ void LuaTape::ReplayAt(lua_State* L, size_t* pos, int refs) const {
   }
 }
 
-bool LuaTape::ToJson(Json* out, std::string* error) const {
-  if (items_.empty()) return *out = Json(), true;
-  std::vector<Json> tables(static_cast<size_t>(tables_));
+bool LuaTape::ToValue(Value* out, std::string* error) const {
+  if (items_.empty()) return *out = Value(), true;
+  std::vector<Value> tables(static_cast<size_t>(tables_));
   size_t pos = 0;
-  return JsonAt(&pos, &tables, out, error);
+  return ValueAt(&pos, &tables, out, error);
 }
 
-bool LuaTape::JsonAt(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const {
+bool LuaTape::ValueAt(size_t* pos, std::vector<Value>* tables, Value* out, std::string* error) const {
   const Item& item = items_[(*pos)++];
   switch (item.type) {
-    case Type::Nil: *out = Json(); return true;
-    case Type::False: *out = false; return true;
-    case Type::True: *out = true; return true;
-    case Type::Integer: *out = item.integer; return true;
-    case Type::Number: *out = item.number; return true;
-    case Type::String: *out = strings_[static_cast<size_t>(item.integer)]; return true;
+    case Type::Nil: *out = Value(); return true;
+    case Type::False: *out = Value::OfBool(false); return true;
+    case Type::True: *out = Value::OfBool(true); return true;
+    case Type::Integer: *out = Value::OfInteger(item.integer); return true;
+    case Type::Number: *out = Value::OfNumber(item.number); return true;
+    case Type::String: *out = Value::OfString(strings_[static_cast<size_t>(item.integer)]); return true;
     case Type::TableRef:
       *out = (*tables)[static_cast<size_t>(item.integer)];
-      if (out->is_null()) return *error = "a table that contains itself has no JSON form", false;
+      if (out->IsNull()) return *error = "a table that contains itself has no JSON form", false;
       return true;
-    case Type::TableBegin: return JsonTable(pos, tables, out, error);
-    case Type::TableEnd: break;  // not reached: consumed by JsonTable
+    case Type::TableBegin: return ValueTable(pos, tables, out, error);
+    case Type::TableEnd: break;  // not reached: consumed by ValueTable
   }
   return *error = "malformed copy", false;
 }
 
-bool LuaTape::JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const {
+bool LuaTape::ValueTable(size_t* pos, std::vector<Value>* tables, Value* out, std::string* error) const {
   const size_t id = static_cast<size_t>(items_[*pos - 1].integer);
-  Json object = Json::object();
-  std::vector<std::pair<int64_t, Json>> numbered;  // integer keys, to see whether it is an array
+  Value object = Value::EmptyMap();
+  std::vector<std::pair<int64_t, Value>> numbered;  // integer keys, to see whether it is an array
   while (items_[*pos].type != Type::TableEnd) {
     std::string key;
     const Item& k = items_[*pos];
-    if (!JsonKey((*pos)++, &key, error)) return false;
-    Json value;
-    if (!JsonAt(pos, tables, &value, error)) return false;
+    if (!KeyText((*pos)++, &key, error)) return false;
+    Value value;
+    if (!ValueAt(pos, tables, &value, error)) return false;
     if (k.type == Type::Integer) numbered.emplace_back(k.integer, value);
-    object[key] = std::move(value);
+    object.Set(key, std::move(value));
   }
   ++*pos;
   std::sort(numbered.begin(), numbered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  bool array = !numbered.empty() && numbered.size() == object.size();
+  bool array = !numbered.empty() && numbered.size() == object.map.size();
   for (size_t i = 0; array && i < numbered.size(); ++i) array = numbered[i].first == static_cast<int64_t>(i + 1);
   if (array) {
-    Json list = Json::array();
-    for (auto& kv : numbered) list.push_back(std::move(kv.second));
+    Value list = Value::EmptyList();
+    for (auto& kv : numbered) list.list.push_back(std::move(kv.second));
     object = std::move(list);
   }
   (*tables)[id] = object;
@@ -190,7 +189,7 @@ bool LuaTape::JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::
   return true;
 }
 
-bool LuaTape::JsonKey(size_t pos, std::string* key, std::string* error) const {
+bool LuaTape::KeyText(size_t pos, std::string* key, std::string* error) const {
   const Item& k = items_[pos];
   switch (k.type) {
     case Type::String: *key = strings_[static_cast<size_t>(k.integer)]; return true;
@@ -219,7 +218,7 @@ int RecordGlobal(lua_State* C) {
 }
 }  // namespace
 
-bool LuaGlobalToJson(lua_State* C, const std::string& name, Json* out, std::string* error) {
+bool LuaGlobalToValue(lua_State* C, const std::string& name, Value* out, std::string* error) {
   if (!C) return *error = "its controller is not running (no script, or stopped at its memory limit)", false;
   LuaTape tape;
   GlobalJob job{&tape, name.c_str(), false};
@@ -230,7 +229,7 @@ bool LuaGlobalToJson(lua_State* C, const std::string& name, Json* out, std::stri
   const bool called = lua_pcall(C, 1, 0, 0) == LUA_OK;
   lua_settop(C, top);
   if (!called || !job.ok) return *error = "its Lua state is out of memory or the value is nested too deep", false;
-  return tape.ToJson(out, error);
+  return tape.ToValue(out, error);
 }
 
 }  // namespace essaim

@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 
 struct lua_State;
 
@@ -27,10 +27,10 @@ class LuaTape {
   /// Pushes a copy of the recorded value onto `L` (raises on memory errors only).
   void Replay(lua_State* L) const;
 
-  /// The recorded value as JSON: a table whose keys are 1..n is an array, any other an
-  /// object (number and boolean keys as text). False with `error` for a cyclic table or a
-  /// table used as a key; a table shared twice is written twice.
-  bool ToJson(Json* out, std::string* error) const;
+  /// The recorded value as a tree with a JSON form: a table whose keys are 1..n is a list,
+  /// any other a map (number and boolean keys as text). False with `error` for a cyclic
+  /// table or a table used as a key; a table shared twice is written twice.
+  bool ToValue(Value* out, std::string* error) const;
 
   static constexpr int kMaxDepth = 100;
 
@@ -45,9 +45,9 @@ class LuaTape {
   /// A table's pairs between TableBegin and TableEnd (`item`), or a TableRef to one seen.
   bool RecordTable(lua_State* L, int idx, int depth, Item* item);
   void ReplayAt(lua_State* L, size_t* pos, int refs) const;
-  bool JsonAt(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;
-  bool JsonTable(size_t* pos, std::vector<Json>* tables, Json* out, std::string* error) const;
-  bool JsonKey(size_t pos, std::string* key, std::string* error) const;
+  bool ValueAt(size_t* pos, std::vector<Value>* tables, Value* out, std::string* error) const;
+  bool ValueTable(size_t* pos, std::vector<Value>* tables, Value* out, std::string* error) const;
+  bool KeyText(size_t pos, std::string* key, std::string* error) const;
   std::vector<Item> items_;
   std::vector<std::string> strings_;
   std::unordered_map<const void*, int64_t> seen_;  // table address → id
@@ -56,9 +56,9 @@ class LuaTape {
   const char* bad_type_ = nullptr;
 };
 
-/// A controller's global `name` as JSON (what r:lua_global reads, for the Python module),
-/// copied under a protected call. False with `error` when the state is closed, out of
-/// memory, or the value has no JSON form.
-bool LuaGlobalToJson(lua_State* C, const std::string& name, Json* out, std::string* error);
+/// A controller's global `name` as a value tree (what r:lua_global reads, for the Python
+/// module), copied under a protected call. False with `error` when the state is closed, out
+/// of memory, or the value has no JSON form.
+bool LuaGlobalToValue(lua_State* C, const std::string& name, Value* out, std::string* error);
 
 }  // namespace essaim

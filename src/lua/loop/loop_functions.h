@@ -5,26 +5,17 @@
 #include <string>
 #include <vector>
 
-#include "core/json_fwd.h"
+#include "core/value.h"
 #include "devices/entity_store.h"
-#include "devices/robot_state.h"
-#include "lua/lua_copy.h"
+#include "lua/loop/loop_context.h"
 #include "lua/host/lua_guard.h"
 #include "lua/robot/lua_params.h"
 #include "lua/robot/lua_controller.h"
 #include "model/model.h"
-#include "physics/physics_world.h"
 
 struct lua_State;
 
 namespace essaim {
-
-struct EntityHandle;
-
-struct Timeseries {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-};
 
 class LoopFunctions {
  public:
@@ -34,10 +25,10 @@ class LoopFunctions {
   LoopFunctions& operator=(const LoopFunctions&) = delete;
 
   /// Loads the script and runs its top-level chunk. Everything passed must outlive it;
-  /// `controllers` may still be empty (filled before init()).
-  bool Load(const Model& model, std::vector<RobotState>* robots, PhysicsWorld* physics, EntityStore* entities,
-            std::vector<std::unique_ptr<LuaController>>* controllers, const std::string& output_dir,
-            std::string* error);
+  /// `controllers` may still be empty (filled before init()). Scripts reach the World only
+  /// through `entities`.
+  bool Load(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
+            const std::string& output_dir, std::string* error);
   bool Loaded() const { return L_ != nullptr; }
   /// The watchdog's limits and the sandbox, as for controllers; set before Load.
   void SetLimits(const LuaOptions& options) { limits_ = options; }
@@ -48,45 +39,31 @@ class LoopFunctions {
   bool FloorColor(double x, double y, Color* out, std::string* error);
   bool Call(const char* name, std::string* error);  // init, pre_step, post_step, reset, destroy
   bool IsExperimentFinished(bool* finished, std::string* error);
-  /// post_experiment(): the returned table as JSON (`has_metrics` false when nil).
-  bool PostExperiment(Json* metrics, bool* has_metrics, std::string* error);
+  /// post_experiment(): the returned table as a value tree (`has_metrics` false when nil).
+  bool PostExperiment(Value* metrics, bool* has_metrics, std::string* error);
 
-  const Timeseries& Series() const { return series_; }
+  const Timeseries& Series() const { return context_.series; }
   const LuaGuard& Memory() const { return guard_; }
-  std::string& LogBuffer() { return log_; }
+  std::string& LogBuffer() { return context_.log; }
   ::lua_State* State() { return L_; }
   /// experiment.params attributes never read so far, and the keys read.
   void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
 
  private:
   bool PCall(int nargs, int nresults, const char* what, std::string* error);
+  void OpenLogs();
+  void SeedMathRandom(uint64_t seed);
+  /// The `experiment` table, left on the stack.
+  void PushExperiment(const Model& model, const std::string& output_dir);
+  void SetPackagePath(const Model& model);
   lua_State* L_ = nullptr;
   LuaGuard guard_;
   LuaOptions limits_;
-  std::string script_;
   int traceback_ref_ = -1;
   TrackedParams params_;     // experiment.params
   int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
-  std::string log_;
-  Timeseries series_;
-  bool warned_nonfinite_row_ = false;  // timeseries(): NaN/inf is warned about once per run
-  uint64_t tick_ = 0;
   Rng rng_;
-  // Context the robot handles reach through the registry.
-  const Model* model_ = nullptr;
-  std::vector<RobotState>* robots_ = nullptr;
-  PhysicsWorld* physics_ = nullptr;
-  EntityStore* entities_ = nullptr;
-  std::vector<std::unique_ptr<LuaController>>* controllers_ = nullptr;
-  // Scratch that Lua errors may unwind past without leaking: add_entity's spec, lua_global's
-  // copy (C++ locals with destructors must not live across a Lua error).
-  ObstacleDef obstacle_spec_;
-  LightDef light_spec_;
-  LuaTape tape_;
-  const void* handle_meta_ = nullptr;  // the handle metatable, compared by address
-  friend struct LoopFunctionsAccess;
-  friend EntityHandle* ToEntityHandle(lua_State* L, int idx);
-  friend struct LoopEntities;
+  LoopContext context_;      // what the bindings reach (LoopContextOf)
 };
 
 }  // namespace essaim
