@@ -1,6 +1,6 @@
 // Device stages as free functions over plain data: Act applies commands to the world,
-// Sense fills Readings. Dispatch is a switch on DeviceType (devices.cpp) — one case per
-// row of model/device_table.
+// Sense fills Readings. Each device's functions are found through its row in
+// device_functions.cpp, indexed by DeviceType as model/device_table.h's rows.
 #pragma once
 #include "devices/floor.h"
 #include "devices/media.h"

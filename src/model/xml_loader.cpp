@@ -411,7 +411,7 @@ static std::string UnknownDevice(const std::string& name, bool sensor) {
     return std::string("'") + name + "' is " + (sensor ? "an actuator" : "a sensor") + ", not " +
            (sensor ? "a sensor" : "an actuator") + ": it goes inside <" + (sensor ? "actuators" : "sensors") + ">";
   std::vector<std::string> names;
-  for (const DeviceRow& row : DeviceTable())
+  for (const DeviceRow& row : kDeviceRows)
     if (row.is_sensor == sensor) names.push_back(row.xml_name);
   std::string hint = ClosestName(name, names);
   return std::string("unknown ") + kind + (hint.empty() ? "" : "; did you mean <" + hint + ">?") +
