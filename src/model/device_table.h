@@ -75,10 +75,11 @@ struct DeviceRow {
   DeviceAttrs attrs;
 };
 
+// `inline`: one definition in the program, so every unit's kDeviceRows points at the same arrays.
 namespace device_attrs {
-constexpr DeviceAttr kNoise = {"noise_level", "0", "uniform noise amplitude added to each value"};
-constexpr DeviceAttr kShowRays = {"show_rays", "false", "accepted for compatibility; essaim is headless"};
-constexpr DeviceAttr kWheelsActuator[] = {
+inline constexpr DeviceAttr kNoise = {"noise_level", "0", "uniform noise amplitude added to each value"};
+inline constexpr DeviceAttr kShowRays = {"show_rays", "false", "accepted for compatibility; essaim is headless"};
+inline constexpr DeviceAttr kWheelsActuator[] = {
     {"bias_avg", "0", "per-robot wheel speed bias mean (m/s), drawn once"},
     {"bias_stddev", "0", "per-robot wheel speed bias std-dev (m/s)"},
     {"factor_avg", "1", "per-command multiplicative noise mean"},
@@ -87,23 +88,23 @@ constexpr DeviceAttr kWheelsActuator[] = {
     {"bias_stddev_left", "", "left-wheel override"}, {"bias_stddev_right", "", "right-wheel override"},
     {"factor_avg_left", "", "left-wheel override"}, {"factor_avg_right", "", "right-wheel override"},
     {"factor_stddev_left", "", "left-wheel override"}, {"factor_stddev_right", "", "right-wheel override"}};
-constexpr DeviceAttr kLeds[] = {{"medium", "", "id of the <led> medium", true}};
-constexpr DeviceAttr kWheelsSensor[] = {{"vel_noise_range", "0:0", "uniform noise on velocities (cm/s)"},
-                                        {"dist_noise_range", "0:0", "uniform noise on distances (cm)"}};
-constexpr DeviceAttr kPositioning[] = {
+inline constexpr DeviceAttr kLeds[] = {{"medium", "", "id of the <led> medium", true}};
+inline constexpr DeviceAttr kWheelsSensor[] = {{"vel_noise_range", "0:0", "uniform noise on velocities (cm/s)"},
+                                               {"dist_noise_range", "0:0", "uniform noise on distances (cm)"}};
+inline constexpr DeviceAttr kPositioning[] = {
     {"pos_noise_range", "0:0", "uniform noise per axis (m)"},
     {"angle_noise_range", "0:0", "uniform noise on the rotation angle (rad, as ARGoS parses it)"},
     {"axis_noise_range", "0:0", "uniform noise per rotation-axis component"}};
-constexpr DeviceAttr kRing[] = {kShowRays, kNoise};
-constexpr DeviceAttr kGround[] = {kNoise};
-constexpr DeviceAttr kRabSensor[] = {{"medium", "", "id of the <range_and_bearing> medium", true},
-                                     kShowRays,
-                                     {"noise_std_dev", "0", "std-dev of the position noise (m)"},
-                                     {"packet_drop_prob", "0", "probability of dropping each packet"}};
-constexpr DeviceAttr kScanner[] = {kShowRays, {"noise_range", "0:0", "parsed and ignored, as ARGoS"}};
-constexpr DeviceAttr kCamera[] = {{"medium", "", "id of the <led> medium", true}, kShowRays,
-                                  {"noise_std_dev", "0", "relative noise on the blob vector"}};
-constexpr DeviceAttr kBattery[] = {{"noise_range", "0:0", "uniform noise on the charge"}};
+inline constexpr DeviceAttr kRing[] = {kShowRays, kNoise};
+inline constexpr DeviceAttr kGround[] = {kNoise};
+inline constexpr DeviceAttr kRabSensor[] = {{"medium", "", "id of the <range_and_bearing> medium", true},
+                                            kShowRays,
+                                            {"noise_std_dev", "0", "std-dev of the position noise (m)"},
+                                            {"packet_drop_prob", "0", "probability of dropping each packet"}};
+inline constexpr DeviceAttr kScanner[] = {kShowRays, {"noise_range", "0:0", "parsed and ignored, as ARGoS"}};
+inline constexpr DeviceAttr kCamera[] = {{"medium", "", "id of the <led> medium", true}, kShowRays,
+                                         {"noise_std_dev", "0", "relative noise on the blob vector"}};
+inline constexpr DeviceAttr kBattery[] = {{"noise_range", "0:0", "uniform noise on the charge"}};
 }  // namespace device_attrs
 
 /// Indexed by DeviceType: kDeviceRows[int(type)].type == type (checked below).
