@@ -26,11 +26,12 @@ int Devices() {
   std::fputs(kAlwaysThere, stdout);
   for (int sensors = 0; sensors < 2; ++sensors) {
     std::printf("%s (inside <%s>)\n", sensors ? "SENSORS" : "ACTUATORS", sensors ? "sensors" : "actuators");
-    for (const DeviceRow& row : DeviceTable()) {
+    for (const DeviceRow& row : kDeviceRows) {
       if (row.is_sensor != (sensors == 1)) continue;
       std::printf("  <%s implementation=\"%s\">  -> robot.%s%s\n", row.xml_name, row.implementations, row.lua_key,
                   row.supported ? "" : "   [not supported yet]");
       std::printf("      %s\n", row.doc);
+      std::printf("      cost: %s\n", CostName(row.cost));
       for (const DeviceAttr& a : row.attrs)
         std::printf("      %-22s %s%s%s%s\n", a.name, a.doc, a.required ? " (required)" : "",
                     a.default_value[0] ? ", default " : "", a.default_value);

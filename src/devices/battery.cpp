@@ -1,4 +1,4 @@
-// Battery (spec §9). Deviation: essaim discharges any robot with a <battery> element, with
+// Battery. Deviation: essaim discharges any robot with a <battery> element, with
 // or without the battery sensor (ARGoS only when the sensor is declared), so experiment
 // rules such as foraging's hold for every controller; the first motion update does not
 // charge for the initial yaw (ARGoS quirk). Both are in docs/compatibility.md.

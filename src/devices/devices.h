@@ -1,6 +1,6 @@
 // Device stages as free functions over plain data: Act applies commands to the world,
-// Sense fills Readings. Dispatch is a switch on DeviceType (devices.cpp) — one case per
-// row of model/device_table.
+// Sense fills Readings. Each device's functions are found through its row in
+// device_functions.cpp, indexed by DeviceType as model/device_table.h's rows.
 #pragma once
 #include "devices/floor.h"
 #include "devices/media.h"
@@ -53,7 +53,8 @@ constexpr int kBaseGroundCount = 8;
 constexpr int kMotorGroundCount = 4;
 /// Angle of ring sensor k (0..23), robot frame: 7.5° + 15°·k, signed-normalized (rad).
 double RingSensorAngle(int k);
-/// Proximity value for a hit at `d` m from the ray start (spec §2).
+/// Proximity value for a hit at `d` m from the ray start: 1 when saturated, then ARGoS's
+/// decreasing curve (proximity.cpp).
 double ProximityValue(double d);
 /// Ground sensor points in the robot frame (cm, x forward, y left).
 extern const double kBaseGroundOffsets[kBaseGroundCount][2];
@@ -69,13 +70,13 @@ void SenseLight(const DeviceConfig& cfg, const Model& model, const RobotDef& def
                 const PhysicsWorld& physics);
 void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
 void SenseMotorGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
-// ---- gripper and turret (gripper.cpp, turret.cpp; spec §7.5)
+// ---- gripper and turret (gripper.cpp, turret.cpp)
 /// Locked: grips what touches the gripper disc (if holding nothing); unlocked: releases.
 void ActGripper(RobotState& robot, PhysicsWorld& physics);
 /// Advances the turret by one tick of `dt` s in its mode and turns a held object with it.
 void ActTurret(RobotState& robot, PhysicsWorld& physics, double dt);
 void SenseTurretEncoder(RobotState& robot);
-// ---- LEDs, range and bearing, camera (leds.cpp, range_and_bearing.cpp, camera.cpp; spec §5, §7.1, §7.2)
+// ---- LEDs, range and bearing, camera (leds.cpp, range_and_bearing.cpp, camera.cpp)
 void ActLeds(RobotState& robot);
 void ActRab(RobotState& robot);
 void SenseRab(const SenseContext& ctx, const DeviceConfig& cfg, RobotState& robot);

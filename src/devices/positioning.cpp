@@ -1,4 +1,4 @@
-// Positioning sensor (spec §6): position in m, orientation as a quaternion built from the
+// Positioning sensor: position in m, orientation as a quaternion built from the
 // unwrapped heading, optional uniform noise.
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 
 namespace essaim {
 
-/// Foot-bot constants (spec §1).
+/// Foot-bot constants, as ARGoS's foot-bot entity and its dynamics2d model define them.
 namespace footbot {
 constexpr double kRadius = 0.085036758;          // m
 constexpr double kHeight = 0.146899733;          // m
@@ -61,7 +61,7 @@ struct ControllerDef {
 enum class DischargeModel { None, Time, Motion, TimeMotion };
 
 struct BatteryDef {
-  DischargeModel model = DischargeModel::None;  // no <battery>: never depletes (spec §9)
+  DischargeModel model = DischargeModel::None;  // no <battery>: never depletes
   double start_charge = 1.0;
   double full_charge = 1.0;
   double delta = 1e-5;         // time: per tick
@@ -126,7 +126,7 @@ struct FloorDef {
   std::string path;          // image, resolved
   double pixels_per_meter = 100;  // loop-function floors are rasterised at this density
   /// Image pixels, bottom row first (row 0 = arena min y), RGB. Filled by the loader for
-  /// images, by the sim from floor_color() for loop functions.
+  /// images only; a loop-function floor is sampled into the World's FloorRaster (sim/world.cpp).
   int width = 0, height = 0;
   std::vector<Color> pixels;
   SourceLoc loc;

@@ -102,7 +102,29 @@ class Loader {
   bool LoadLight(const XMLElement* e, LightDef* l);
   void LoadFloor(const XMLElement* e);
   void LoadBody(const XMLElement* body, Pose2* pose, double* z);
+  // <distribute>: read the block, then place `quantity` copies of its prototype
+  struct DistributeBlock {
+    const XMLElement* element = nullptr;   // <distribute>
+    const XMLElement* position = nullptr;  // its <position>
+    const XMLElement* entity = nullptr;    // its <entity>
+    const XMLElement* proto = nullptr;     // the entity inside <entity>
+    Generator position_gen, orientation_gen;
+    long long quantity = 0, max_trials = 0, base_num = 0;
+    std::string kind;                      // foot-bot, box, cylinder or light
+    std::string base_id;
+    RobotDef robot;                        // the prototype of its kind, read once
+    ObstacleDef obstacle;
+    LightDef light;
+    int draw = 0;  // grid cell counter: every attempt consumes one (a retry is fatal on a grid)
+  };
+  enum class Placement { Placed, Overlaps, Failed };
   void LoadDistribute(const XMLElement* e);
+  bool ReadDistribute(const XMLElement* e, DistributeBlock* b);
+  bool ReadPrototype(DistributeBlock* b);
+  bool PlaceDistributed(DistributeBlock* b, const std::string& id);
+  Placement TryPlace(DistributeBlock* b, const std::string& id);
+  Placement PlaceFootBot(const DistributeBlock& b, const std::string& id, const Vec3& p, const Pose2& pose);
+  Placement PlaceObstacle(const DistributeBlock& b, const std::string& id, const Vec3& p, const Pose2& pose);
   bool ParseGenerator(const XMLElement* e, Generator* g);
   void CheckReferences();
 
@@ -411,7 +433,7 @@ static std::string UnknownDevice(const std::string& name, bool sensor) {
     return std::string("'") + name + "' is " + (sensor ? "an actuator" : "a sensor") + ", not " +
            (sensor ? "a sensor" : "an actuator") + ": it goes inside <" + (sensor ? "actuators" : "sensors") + ">";
   std::vector<std::string> names;
-  for (const DeviceRow& row : DeviceTable())
+  for (const DeviceRow& row : kDeviceRows)
     if (row.is_sensor == sensor) names.push_back(row.xml_name);
   std::string hint = ClosestName(name, names);
   return std::string("unknown ") + kind + (hint.empty() ? "" : "; did you mean <" + hint + ">?") +
@@ -823,119 +845,135 @@ bool Loader::ParseGenerator(const XMLElement* e, Generator* g) {
   return errors_->Size() == before;
 }
 
-void Loader::LoadDistribute(const XMLElement* e) {
+// Reads what a <distribute> block says, up to its prototype entity; false (errors reported)
+// when nothing can be placed.
+bool Loader::ReadDistribute(const XMLElement* e, DistributeBlock* b) {
   CheckChildren(e, {"position", "orientation", "entity"}, "expected position, orientation, entity");
-  const XMLElement* pos = e->FirstChildElement("position");
-  const XMLElement* ori = e->FirstChildElement("orientation");
-  const XMLElement* ent = e->FirstChildElement("entity");
-  if (!pos || !ori || !ent) {
+  b->element = e;
+  b->position = e->FirstChildElement("position");
+  const XMLElement* orientation = e->FirstChildElement("orientation");
+  const XMLElement* ent = b->entity = e->FirstChildElement("entity");
+  if (!b->position || !orientation || !ent) {
     Error(e, "needs <position>, <orientation> and <entity> children");
-    return;
+    return false;
   }
-  Generator gp, go;
-  bool ok = ParseGenerator(pos, &gp) & ParseGenerator(ori, &go);
-  long long quantity = Int(ent, "quantity", 0, true);
-  long long max_trials = Int(ent, "max_trials", 0, Has(ent, "max_trials") ? false : false);
-  long long base_num = Int(ent, "base_num", 0);
-  if (quantity < 0) Error(ent, "quantity must be >= 0");
-  else if (!RoomFor(ent, quantity)) return;
-  if (max_trials < 0) Error(ent, "max_trials must be >= 0");
-  const XMLElement* proto = ent->FirstChildElement();
-  if (!proto) {
+  // Both generators are read, so both report their errors.
+  bool ok = ParseGenerator(b->position, &b->position_gen) & ParseGenerator(orientation, &b->orientation_gen);
+  b->quantity = Int(ent, "quantity", 0, true);
+  b->max_trials = Int(ent, "max_trials", 0);
+  b->base_num = Int(ent, "base_num", 0);
+  if (b->quantity < 0) Error(ent, "quantity must be >= 0");
+  else if (!RoomFor(ent, b->quantity)) return false;
+  if (b->max_trials < 0) Error(ent, "max_trials must be >= 0");
+  b->proto = ent->FirstChildElement();
+  if (!b->proto) {
     Error(ent, "needs one entity element (e.g. <foot-bot>)");
-    return;
+    return false;
   }
-  std::string kind = proto->Name();
-  if (kind != "foot-bot" && kind != "box" && kind != "cylinder" && kind != "light") {
-    Error(proto, "cannot distribute this entity: foot-bot, box, cylinder or light");
-    return;
+  b->kind = b->proto->Name();
+  if (b->kind != "foot-bot" && b->kind != "box" && b->kind != "cylinder" && b->kind != "light") {
+    Error(b->proto, "cannot distribute this entity: foot-bot, box, cylinder or light");
+    return false;
   }
-  if (!ok) return;
-  std::string base_id = Str(proto, "id");
-  if (base_id.empty()) {
-    Error(proto, "missing required attribute 'id' (the base of the generated ids)");
-    return;
+  if (!ok) return false;
+  b->base_id = Str(b->proto, "id");
+  if (b->base_id.empty()) Error(b->proto, "missing required attribute 'id' (the base of the generated ids)");
+  return !b->base_id.empty();
+}
+
+// The prototype is read once (also when quantity is 0, so its attributes are checked); each
+// entity is a copy with its own id and pose. A distributed box or cylinder gets its <body>
+// from the generators.
+bool Loader::ReadPrototype(DistributeBlock* b) {
+  if (b->kind == "foot-bot") return LoadFootBot(b->proto, &b->robot);
+  if (b->kind == "light") return LoadLight(b->proto, &b->light);
+  return LoadObstacle(b->proto, &b->obstacle, false);
+}
+
+Loader::Placement Loader::PlaceFootBot(const DistributeBlock& b, const std::string& id, const Vec3& p,
+                                       const Pose2& pose) {
+  RobotDef r = b.robot;
+  r.id = id;
+  r.pose = pose;
+  r.z = p.z();
+  std::string outside = OutsideArena(r);
+  if (!outside.empty()) {  // a generator that reaches out of the arena: no retry helps
+    Error(b.proto, "generated foot-bot '" + id + "' " + outside);
+    return Placement::Failed;
   }
-  // The prototype is read once (also when quantity is 0, so its attributes are checked);
-  // each entity is a copy with its own id and pose.
-  RobotDef robot_proto;
-  ObstacleDef obstacle_proto;
-  LightDef light_proto;
-  if (kind == "foot-bot" && !LoadFootBot(proto, &robot_proto)) return;
-  // A distributed box or cylinder gets its <body> from the generators.
-  if ((kind == "box" || kind == "cylinder") && !LoadObstacle(proto, &obstacle_proto, false)) return;
-  if (kind == "light" && !LoadLight(proto, &light_proto)) return;
-  int draw = 0;  // grid cell counter: every attempt consumes one (a retry is fatal on a grid)
-  for (long long i = 0; i < quantity; ++i) {
-    std::string id = base_id + std::to_string(i + base_num);
+  Footprint f = FootprintOf(r);
+  if (Collides(f)) return Placement::Overlaps;
+  placed_.push_back(f);
+  model_->robots.push_back(std::move(r));
+  return Placement::Placed;
+}
+
+Loader::Placement Loader::PlaceObstacle(const DistributeBlock& b, const std::string& id, const Vec3& p,
+                                        const Pose2& pose) {
+  ObstacleDef ob = b.obstacle;
+  ob.id = id;
+  ob.pose = pose;
+  ob.z = p.z();
+  std::string problem = ObstacleProblem(ob, model_->experiment.limits);
+  if (!problem.empty()) {
+    Error(b.position, "'" + id + "': " + problem);
+    return Placement::Failed;
+  }
+  Footprint f = FootprintOf(ob);
+  if (Collides(f)) return Placement::Overlaps;
+  placed_.push_back(f);
+  model_->obstacles.push_back(std::move(ob));
+  return Placement::Placed;
+}
+
+// One attempt: the next draw of both generators, rounded as ARGoS writes them.
+Loader::Placement Loader::TryPlace(DistributeBlock* b, const std::string& id) {
+  Vec3 p, o;
+  if (!b->position_gen.Next(sim_rng_, b->draw, &p) || !b->orientation_gen.Next(sim_rng_, b->draw, &o)) {
+    Error(b->element, "grid exhausted: layout has fewer cells than quantity (or a placement failed)");
+    return Placement::Failed;
+  }
+  ++b->draw;
+  for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
+  if (!Placeable(b->position, p)) return Placement::Failed;
+  Pose2 pose{p.x(), p.y(), YawFromDegrees(o.x())};
+  if (b->kind == "foot-bot") return PlaceFootBot(*b, id, p, pose);
+  if (b->kind != "light") return PlaceObstacle(*b, id, p, pose);
+  LightDef l = b->light;
+  l.id = id;
+  l.position = p;
+  model_->lights.push_back(l);
+  return Placement::Placed;
+}
+
+// Up to max_trials + 1 attempts for one entity (one on a grid, as ARGoS); false (an error
+// reported) when it could not be placed.
+bool Loader::PlaceDistributed(DistributeBlock* b, const std::string& id) {
+  const bool grid = b->position_gen.kind == Generator::Kind::Grid;
+  for (long long trial = 0; trial <= b->max_trials; ++trial) {
+    Placement placement = TryPlace(b, id);
+    if (placement == Placement::Placed) return true;
+    if (placement == Placement::Failed) return false;
+    if (grid) break;  // ARGoS: a grid allows no retry
+  }
+  if (grid)
+    Error(b->entity, "could not place '" + id + "': its grid cell overlaps another entity (a grid allows no retry)");
+  else
+    Error(b->entity, "could not place '" + id + "' without overlap after " + std::to_string(b->max_trials + 1) +
+                         " attempts (raise max_trials or give more room)");
+  return false;
+}
+
+void Loader::LoadDistribute(const XMLElement* e) {
+  DistributeBlock b;
+  if (!ReadDistribute(e, &b) || !ReadPrototype(&b)) return;
+  for (long long i = 0; i < b.quantity; ++i) {
+    std::string id = b.base_id + std::to_string(i + b.base_num);
     if (!ids_.insert(id).second) {
-      Error(proto, "generated id '" + id + "' is already used");
+      Error(b.proto, "generated id '" + id + "' is already used");
       return;
     }
-    bool placed = false;
-    for (long long trial = 0; trial <= max_trials && !placed; ++trial) {
-      Vec3 p, o;
-      if (!gp.Next(sim_rng_, draw, &p) || !go.Next(sim_rng_, draw, &o)) {
-        Error(e, "grid exhausted: layout has fewer cells than quantity (or a placement failed)");
-        return;
-      }
-      ++draw;
-      for (int k = 0; k < 3; ++k) p[k] = RoundSignificant6(p[k]), o[k] = RoundSignificant6(o[k]);
-      if (!Placeable(pos, p)) return;
-      Pose2 pose{p.x(), p.y(), YawFromDegrees(o.x())};
-      if (kind == "light") {
-        LightDef l = light_proto;
-        l.id = id;
-        l.position = p;
-        model_->lights.push_back(l);
-        placed = true;
-      } else if (kind == "foot-bot") {
-        RobotDef r = robot_proto;
-        r.id = id;
-        r.pose = pose;
-        r.z = p.z();
-        std::string outside = OutsideArena(r);
-        if (!outside.empty()) {  // a generator that reaches out of the arena: no retry helps
-          Error(proto, "generated foot-bot '" + id + "' " + outside);
-          return;
-        }
-        Footprint f = FootprintOf(r);
-        if (Collides(f)) {
-          if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
-          continue;
-        }
-        placed_.push_back(f);
-        model_->robots.push_back(std::move(r));
-        placed = true;
-      } else {
-        ObstacleDef ob = obstacle_proto;
-        ob.id = id;
-        ob.pose = pose;
-        ob.z = p.z();
-        std::string problem = ObstacleProblem(ob, model_->experiment.limits);
-        if (!problem.empty()) {
-          Error(pos, "'" + id + "': " + problem);
-          return;
-        }
-        Footprint f = FootprintOf(ob);
-        if (Collides(f)) {
-          if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
-          continue;
-        }
-        placed_.push_back(f);
-        model_->obstacles.push_back(std::move(ob));
-        placed = true;
-      }
-    }
-    if (!placed && gp.kind == Generator::Kind::Grid) {
-      Error(ent, "could not place '" + id + "': its grid cell overlaps another entity (a grid allows no retry)");
-      return;
-    }
-    if (!placed) {
-      Error(ent, "could not place '" + id + "' without overlap after " + std::to_string(max_trials + 1) +
-                     " attempts (raise max_trials or give more room)");
-      return;
-    }
+    if (!PlaceDistributed(&b, id)) return;
   }
 }
 

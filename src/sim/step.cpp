@@ -46,21 +46,20 @@ bool LoopCall(World& w, const char* hook) {
   }
   return true;
 }
-}  // namespace
 
-bool LengthReached(const World& w) {
-  return w.model.experiment.length_ticks > 0 && w.tick >= w.model.experiment.length_ticks;
-}
+// ---- the stages, in the order Step runs them
 
-StepStatus Step(World& w) {
-  const Model& m = w.model;
-  const int n = static_cast<int>(w.robots.size());
-  const double dt = m.experiment.TickLength();
+void BeginTick(World& w) {
   ++w.tick;
   w.loop_functions.SetTick(w.tick);
+}
 
-  auto t0 = Clock::now();
-  // Each robot's wheels, scanner, LEDs and RAB payload: its own state and servo only.
+// Commands the controllers set last tick. First each robot's wheels, scanner, LEDs and RAB
+// payload (its own state and servo only: any thread), then gripper and turret, which make
+// joints in the one physics world (one thread, robot order).
+void ActStage(World& w) {
+  const Model& m = w.model;
+  const int n = static_cast<int>(w.robots.size());
   auto act = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) ActRobotOwnState(m, m.robots[i], w.robots[i], w.physics);
   };
@@ -70,78 +69,93 @@ StepStatus Step(World& w) {
   if (n >= kParallelActMin) w.pool->ParallelForBalanced(n, act);
   else act(0, n);
   for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
-  auto t1 = Clock::now();
-  w.physics.Step(dt, m.physics.iterations);
-  for (int i = 0; i < n; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
-  auto t2 = Clock::now();
+}
+
+// One Box2D step of `iterations` sub-steps, then what follows from the motion (battery
+// discharge, scanner rotation).
+void PhysicsStage(World& w) {
+  const Model& m = w.model;
+  w.physics.Step(m.experiment.TickLength(), m.physics.iterations);
+  for (size_t i = 0; i < w.robots.size(); ++i)
+    UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
+}
+
+// Who hears whom, where the LEDs are, after the robots moved.
+void MediaStage(World& w) {
   if (w.entities.layout_changed()) w.media.ready = false;  // changed by post_step or init
   w.entities.ClearChanged();
-  UpdateMedia(m, w.physics, w.robots, &w.media, MediaRunner(w));
-  auto t3 = Clock::now();
-  bool ok = LoopCall(w, "pre_step");
+  UpdateMedia(w.model, w.physics, w.robots, &w.media, MediaRunner(w));
+}
+
+bool PreStepStage(World& w) {
+  const bool ok = LoopCall(w, "pre_step");
   RefreshMediaIfSceneChanged(w);
   FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
-  auto t4 = Clock::now();
-  w.times.act += Seconds(t0, t1);
-  w.times.physics += Seconds(t1, t2);
-  w.times.media += Seconds(t2, t3);
-  w.times.loop_functions += Seconds(t3, t4);
-  if (!ok) return StepStatus::Failed;
+  return ok;
+}
 
-  // Sense + control: robots are independent here (each writes only its own state).
-  const SenseContext ctx{m, w.physics, w.media, w.floor, w.robots, w.tick, dt};
+// One robot's sensors, then its controller's step(). A controller that fails stops: zero
+// wheels from the next act on, never stepped again.
+void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::ChunkTimes* times) {
+  RobotState& r = w.robots[i];
+  if (!r.alive || !r.controller_ok) return;
+  const auto sense_start = Clock::now();
+  SenseRobot(ctx, w.model.robots[i], r);
+  LuaController& c = *w.controllers[i];
+  const bool pushed = c.PushReadings(&w.pending_errors[i]);
+  const auto control_start = Clock::now();
+  if (!pushed || !c.CallStep(&w.pending_errors[i])) {
+    r.controller_ok = false;
+    r.cmd.wheel_left = r.cmd.wheel_right = 0;
+    r.cmd.wheels_new = true;
+  }
+  times->sense += Seconds(sense_start, control_start);
+  times->control += Seconds(control_start, Clock::now());
+}
+
+// Robots are independent here (each writes only its own state), so threads split them.
+void SenseAndControlStage(World& w) {
+  const SenseContext ctx{w.model, w.physics, w.media, w.floor, w.robots, w.tick, w.model.experiment.TickLength()};
   auto work = [&](int begin, int end) {
     World::ChunkTimes local;
-    for (int i = begin; i < end; ++i) {
-      RobotState& r = w.robots[i];
-      if (!r.alive || !r.controller_ok) continue;
-      auto a = Clock::now();
-      SenseRobot(ctx, m.robots[i], r);
-      LuaController& c = *w.controllers[i];
-      const bool pushed = c.PushReadings(&w.pending_errors[i]);
-      auto b = Clock::now();
-      if (!pushed || !c.CallStep(&w.pending_errors[i])) {
-        r.controller_ok = false;
-        // The robot stops: zero wheels from the next act on (spec: never stepped again).
-        r.cmd.wheel_left = r.cmd.wheel_right = 0;
-        r.cmd.wheels_new = true;
-      }
-      auto e = Clock::now();
-      local.sense += Seconds(a, b);
-      local.control += Seconds(b, e);
-    }
+    for (int i = begin; i < end; ++i) SenseAndControlRobot(w, ctx, i, &local);
     // Ranges are disjoint, so the range's first robot names its slot: no shared writes.
     w.chunk_times[static_cast<size_t>(begin)] = local;
   };
   // Balanced: robots cost different amounts (crowds, dead ones) and a thread may lose its
   // core for a while; measured at 2 threads, equal static chunks differed by 1.6-2.1% in
   // thread CPU time per tick (the faster thread then idles at the barrier).
-  w.pool->ParallelForBalanced(n, work);
+  w.pool->ParallelForBalanced(static_cast<int>(w.robots.size()), work);
   for (World::ChunkTimes& t : w.chunk_times) {
     w.times.sense += t.sense;
     w.times.control += t.control;
     t = World::ChunkTimes();
   }
+}
 
-  auto t5 = Clock::now();
+// The controllers' logs in robot order, then this tick's errors (identical ones grouped).
+// False when an error ends the run (strict, or a controller called exit).
+bool CollectControllerErrors(World& w) {
   bool failed = false;
   const size_t errors_before = w.controller_errors.size();
-  for (int i = 0; i < n; ++i) {
+  for (size_t i = 0; i < w.controllers.size(); ++i) {
     FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
-    if (!w.pending_errors[i].empty()) {
-      w.controller_errors.push_back({m.robots[i].id, w.tick, w.pending_errors[i]});
-      w.pending_errors[i].clear();
-      if (w.options.strict || w.controllers[i]->ExitCalled()) {
-        w.failure = w.controller_errors.back().message;
-        failed = true;
-      }
+    if (w.pending_errors[i].empty()) continue;
+    w.controller_errors.push_back({w.model.robots[i].id, w.tick, w.pending_errors[i]});
+    w.pending_errors[i].clear();
+    if (w.options.strict || w.controllers[i]->ExitCalled()) {
+      w.failure = w.controller_errors.back().message;
+      failed = true;
     }
   }
-  // This tick's errors, identical ones grouped (after the logs, as before).
   if (w.options.log_sink && w.controller_errors.size() > errors_before)
-    for (const std::string& text : GroupControllerErrors(w.controller_errors, errors_before)) w.options.log_sink('E', text, {w.tick, kLogHost});
-  if (failed) return StepStatus::Failed;
-  ok = LoopCall(w, "post_step");
+    for (const std::string& text : GroupControllerErrors(w.controller_errors, errors_before))
+      w.options.log_sink('E', text, {w.tick, kLogHost});
+  return !failed;
+}
+
+StepStatus PostStepStage(World& w) {
+  bool ok = LoopCall(w, "post_step");
   bool finished = false;
   if (ok) {
     std::string err;
@@ -149,13 +163,41 @@ StepStatus Step(World& w) {
     if (!ok) w.failure = err;
   }
   FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
-  w.times.loop_functions += Seconds(t5, Clock::now());
   if (!ok) return StepStatus::Failed;
   if (finished) {
     w.finished_by_loop_functions = true;
     return StepStatus::Finished;
   }
   return LengthReached(w) ? StepStatus::Finished : StepStatus::Running;
+}
+
+// Runs `stage` and adds its duration to `*total` (s).
+template <class Stage>
+void Timed(double* total, Stage&& stage) {
+  const auto start = Clock::now();
+  stage();
+  *total += Seconds(start, Clock::now());
+}
+}  // namespace
+
+bool LengthReached(const World& w) {
+  return w.model.experiment.length_ticks > 0 && w.tick >= w.model.experiment.length_ticks;
+}
+
+StepStatus Step(World& w) {
+  BeginTick(w);
+  Timed(&w.times.act, [&] { ActStage(w); });
+  Timed(&w.times.physics, [&] { PhysicsStage(w); });
+  Timed(&w.times.media, [&] { MediaStage(w); });
+  bool ok = true;
+  Timed(&w.times.loop_functions, [&] { ok = PreStepStage(w); });
+  if (!ok) return StepStatus::Failed;
+  SenseAndControlStage(w);  // timed per robot: sense and control apart
+  StepStatus status = StepStatus::Failed;
+  Timed(&w.times.loop_functions, [&] {
+    if (CollectControllerErrors(w)) status = PostStepStage(w);
+  });
+  return status;
 }
 
 }  // namespace essaim

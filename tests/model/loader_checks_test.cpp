@@ -159,7 +159,7 @@ TEST(UnknownAttributes, UnknownElementsSuggestTheClosestOne) {
 TEST(UnknownAttributes, EveryAttributeDeviceParamsReadsIsInTheDeviceTable) {
   // The device table's rows are the schema for device attributes: a read outside them would
   // flag a user's correct attribute as unknown.
-  for (const DeviceRow& row : DeviceTable()) {
+  for (const DeviceRow& row : kDeviceRows) {
     DeviceConfig cfg;
     cfg.type = row.type;
     ErrorList errors;

@@ -107,8 +107,8 @@ void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {
   refs->scanner_short_count = refs->scanner_long_count = 0;
 }
 
-void PushScanner(lua_State* L, const Readings& rd, LuaDeviceRefs* refs) {
-  lua_rawgeti(L, LUA_REGISTRYINDEX, refs->scanner);
+void PushScanner(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) {
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int scanner = lua_gettop(L);
   Fill(L, scanner, "short_range", refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,
        rd.scanner_short_count, &refs->scanner_short_count);

@@ -1,6 +1,8 @@
 #include "lua/robot/lua_devices.h"
 
+#include <array>
 #include <cmath>
+#include <cstring>
 
 namespace essaim {
 
@@ -69,79 +71,100 @@ int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref) {
   return lua_gettop(L);
 }
 
-void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot,
-                        LuaDeviceRefs* refs) {
-  int robot_t = lua_gettop(L);
-  for (const DeviceConfig& d : c.actuators) {
-    switch (d.type) {
-      case DeviceType::WheelsActuator:
-        CreateWheelsActuator(L, DeviceTable(L, robot_t, "wheels", &refs->wheels), robot);
-        break;
-      case DeviceType::ScannerActuator:
-        CreateScannerActuator(L, DeviceTable(L, robot_t, "distance_scanner", &refs->scanner), robot);
-        break;
-      case DeviceType::GripperActuator:
-        CreateGripperActuator(L, DeviceTable(L, robot_t, "gripper", &refs->gripper), robot);
-        break;
-      case DeviceType::TurretActuator:
-        CreateTurretActuator(L, DeviceTable(L, robot_t, "turret", &refs->turret), robot);
-        break;
-      case DeviceType::LedsActuator:
-        CreateLedsActuator(L, DeviceTable(L, robot_t, "leds", &refs->leds), robot);
-        break;
-      case DeviceType::RabActuator:
-        CreateRabActuator(L, DeviceTable(L, robot_t, "range_and_bearing", &refs->rab), robot);
-        break;
-      default: break;
-    }
-    lua_settop(L, robot_t);
+namespace {
+// The Lua layer's row of a device: what its table holds beside the readings (closures,
+// fixed fields, arrays made once), and how a reading is copied in. nullptr: nothing.
+using CreateFn = void (*)(lua_State* L, int table, RobotState* robot, LuaDeviceRefs* refs);
+using PushFn = void (*)(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs);
+struct LuaDeviceRow {
+  DeviceType type;
+  CreateFn create;
+  PushFn push;  // sensors only
+};
+
+using T = DeviceType;
+// Each entry adapts a binding (lua_devices.h) to the row's signature.
+constexpr std::array<LuaDeviceRow, kDeviceCount> kRows = {{
+    // ---- actuators
+    {T::WheelsActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateWheelsActuator(L, t, r); },
+     nullptr},
+    {T::LedsActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateLedsActuator(L, t, r); },
+     nullptr},
+    {T::RabActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateRabActuator(L, t, r); },
+     nullptr},
+    {T::ScannerActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateScannerActuator(L, t, r); },
+     nullptr},
+    {T::GripperActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateGripperActuator(L, t, r); },
+     nullptr},
+    {T::TurretActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateTurretActuator(L, t, r); },
+     nullptr},
+    // ---- sensors
+    {T::WheelsSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateWheelsSensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushWheels(L, ref, rd); }},
+    {T::PositioningSensor, nullptr,
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushPositioning(L, ref, rd); }},
+    {T::ProximitySensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateProximitySensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushProximity(L, ref, rd); }},
+    {T::LightSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateLightSensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushLight(L, ref, rd); }},
+    {T::BaseGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateBaseGroundSensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushBaseGround(L, ref, rd); }},
+    {T::MotorGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateMotorGroundSensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushMotorGround(L, ref, rd); }},
+    {T::RabSensor, nullptr,
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushRab(L, ref, rd, &refs->rab_count); }},
+    {T::ScannerSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs* refs) { CreateScannerSensor(L, t, refs); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushScanner(L, ref, rd, refs); }},
+    {T::CameraSensor, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateCameraSensor(L, t, r); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushCamera(L, ref, rd, &refs->blob_count); }},
+    {T::BatterySensor, nullptr,
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushBattery(L, ref, rd); }},
+    {T::TurretEncoderSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateTurretSensor(L, t); },
+     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushTurret(L, ref, rd); }},
+}};
+
+// Every DeviceType has its row, in enum order; every sensor pushes its readings.
+constexpr bool RowsComplete() {
+  for (int i = 0; i < kDeviceCount; ++i) {
+    if (static_cast<int>(kRows[i].type) != i) return false;
+    if (kDeviceRows[i].is_sensor != (kRows[i].push != nullptr)) return false;
   }
-  for (const DeviceConfig& d : c.sensors) {
-    switch (d.type) {
-      case DeviceType::WheelsSensor: CreateWheelsSensor(L, DeviceTable(L, robot_t, "wheels", &refs->wheels)); break;
-      case DeviceType::PositioningSensor: DeviceTable(L, robot_t, "positioning", &refs->positioning); break;
-      case DeviceType::BatterySensor: DeviceTable(L, robot_t, "battery", &refs->battery); break;
-      case DeviceType::ProximitySensor:
-        CreateProximitySensor(L, DeviceTable(L, robot_t, "proximity", &refs->proximity));
-        break;
-      case DeviceType::LightSensor: CreateLightSensor(L, DeviceTable(L, robot_t, "light", &refs->light)); break;
-      case DeviceType::BaseGroundSensor:
-        CreateBaseGroundSensor(L, DeviceTable(L, robot_t, "base_ground", &refs->base_ground));
-        break;
-      case DeviceType::MotorGroundSensor:
-        CreateMotorGroundSensor(L, DeviceTable(L, robot_t, "motor_ground", &refs->motor_ground));
-        break;
-      case DeviceType::ScannerSensor:
-        CreateScannerSensor(L, DeviceTable(L, robot_t, "distance_scanner", &refs->scanner), refs);
-        break;
-      case DeviceType::TurretEncoderSensor: CreateTurretSensor(L, DeviceTable(L, robot_t, "turret", &refs->turret)); break;
-      case DeviceType::RabSensor: DeviceTable(L, robot_t, "range_and_bearing", &refs->rab); break;
-      case DeviceType::CameraSensor:
-        CreateCameraSensor(L, DeviceTable(L, robot_t, "colored_blob_omnidirectional_camera", &refs->camera), robot);
-        break;
-      default: break;
-    }
+  return true;
+}
+static_assert(RowsComplete(), "lua_devices.cpp: one row per DeviceType, in enum order, a push function per sensor");
+
+// The reference of a table this robot already has under the same key (an actuator's and a
+// sensor's wheels, turret...), or -1.
+int SharedRef(const LuaDeviceRefs& refs, DeviceType type) {
+  const char* key = GetDeviceRow(type).lua_key;
+  for (int i = 0; i < kDeviceCount; ++i)
+    if (refs.table[i] >= 0 && std::strcmp(kDeviceRows[i].lua_key, key) == 0) return refs.table[i];
+  return -1;
+}
+
+void CreateTables(lua_State* L, int robot_t, const std::vector<DeviceConfig>& devices, RobotState* robot,
+                  LuaDeviceRefs* refs) {
+  for (const DeviceConfig& d : devices) {
+    int& ref = refs->table[static_cast<int>(d.type)];
+    ref = SharedRef(*refs, d.type);
+    const int t = DeviceTable(L, robot_t, GetDeviceRow(d.type).lua_key, &ref);
+    if (CreateFn create = kRows[static_cast<int>(d.type)].create) create(L, t, robot, refs);
     lua_settop(L, robot_t);
   }
 }
+}  // namespace
+
+void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot,
+                        LuaDeviceRefs* refs) {
+  const int robot_t = lua_gettop(L);
+  CreateTables(L, robot_t, c.actuators, robot, refs);
+  CreateTables(L, robot_t, c.sensors, robot, refs);
+}
 
 void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs) {
-  const Readings& rd = robot.rd;
   for (const DeviceConfig& d : c.sensors) {
-    switch (d.type) {
-      case DeviceType::WheelsSensor: PushWheels(L, refs->wheels, rd); break;
-      case DeviceType::PositioningSensor: PushPositioning(L, refs->positioning, rd); break;
-      case DeviceType::BatterySensor: PushBattery(L, refs->battery, rd); break;
-      case DeviceType::ProximitySensor: PushProximity(L, refs->proximity, rd); break;
-      case DeviceType::LightSensor: PushLight(L, refs->light, rd); break;
-      case DeviceType::BaseGroundSensor: PushBaseGround(L, refs->base_ground, rd); break;
-      case DeviceType::MotorGroundSensor: PushMotorGround(L, refs->motor_ground, rd); break;
-      case DeviceType::ScannerSensor: PushScanner(L, rd, refs); break;
-      case DeviceType::TurretEncoderSensor: PushTurret(L, refs->turret, rd); break;
-      case DeviceType::RabSensor: PushRab(L, refs->rab, rd, &refs->rab_count); break;
-      case DeviceType::CameraSensor: PushCamera(L, refs->camera, rd, &refs->blob_count); break;
-      default: break;
-    }
+    const int i = static_cast<int>(d.type);
+    kRows[i].push(L, refs->table[i], robot.rd, refs);
   }
 }
 

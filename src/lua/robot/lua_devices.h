@@ -1,6 +1,7 @@
-// Lua tables of the foot-bot devices (spec §8.3): created once per robot, refreshed in
-// place every tick. One Create/Push pair per device family in lua/robot/bind_*.cpp; the
-// switches in lua_devices.cpp dispatch on DeviceType.
+// Lua tables of the foot-bot devices: created once per robot, refreshed in place every
+// tick. One Create/Push pair per device family in lua/robot/bind_*.cpp; lua_devices.cpp holds
+// the Lua layer's row of each device (its create and push functions), indexed by
+// DeviceType as model/device_table.h's rows.
 #pragma once
 #include <lua.hpp>
 
@@ -9,7 +10,6 @@
 #include "model/model.h"
 
 namespace essaim {
-
 
 /// With the `robot` table at the top of the stack, adds every device table of the
 /// controller (actuators then sensors, alphabetical, as ARGoS).
@@ -62,7 +62,7 @@ void PushMotorGround(lua_State* L, int ref, const Readings& rd);
 // distance scanner: enable/disable/set_angle/set_rpm; short_range/long_range arrays
 void CreateScannerActuator(lua_State* L, int t, RobotState* robot);
 void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs);
-void PushScanner(lua_State* L, const Readings& rd, LuaDeviceRefs* refs);
+void PushScanner(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs);
 // gripper (lock_positive/lock_negative/unlock) and turret (set_* and rotation)
 void CreateGripperActuator(lua_State* L, int t, RobotState* robot);
 void CreateTurretActuator(lua_State* L, int t, RobotState* robot);
