@@ -51,10 +51,6 @@ struct RayCandidates {
   std::vector<int> bucket_ends;       // the gather's counting sort
 };
 
-struct PhysicsProfile {
-  double step_seconds = 0;
-};
-
 class PhysicsWorld {
  public:
   explicit PhysicsWorld(const Model& model);
@@ -105,10 +101,6 @@ class PhysicsWorld {
   /// shapes skipped once the nearest-first scan passes the closest hit cannot beat it).
   /// Kind and index are those of the first closest in that order (ties are rare).
   RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
-  /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
-  /// bounding box within the square of half-side `radius` around `center`. A cheap,
-  /// conservative pre-test: false means no ray of that length from there can hit anything.
-  bool AnyShapeNear(const Vec2& center, double radius, double z, int exclude_robot) const;
   /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
   void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
 
