@@ -14,6 +14,7 @@
 #include "core/strings.h"
 #include "model/attribute_ledger.h"
 #include "model/distribute.h"
+#include "model/placement.h"
 #include "model/floor_image.h"
 #include "model/limits.h"
 #include "model/xml_overrides.h"
@@ -115,11 +116,7 @@ class Loader {
   Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
   std::string OutsideArena(const RobotDef& r) const;
   std::string Overlap(const RobotDef& r, size_t robots_before) const;
-  bool Collides(const Footprint& f) const {
-    for (const Footprint& p : placed_)
-      if (FootprintsOverlap(f, p)) return true;
-    return false;
-  }
+  bool Collides(const Footprint& f) const { return placed_.Collides(f); }
 
   std::string path_;
   std::string dir_;
@@ -128,7 +125,7 @@ class Loader {
   ErrorList* warnings_;
   std::unique_ptr<Model> model_;
   std::set<std::string> ids_;
-  std::vector<Footprint> placed_;
+  PlacedFootprints placed_;
   Rng sim_rng_;
   AttributeLedger ledger_;
   std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
@@ -720,6 +717,7 @@ void Loader::LoadArena(const XMLElement* e) {
   model_->arena.size = Vector3(e, "size", Vec3(10, 10, 1), true);
   model_->arena.center = Vector3(e, "center", Vec3::Zero());
   CheckArenaSize(e);
+  placed_.Cover(model_->arena.Min(), model_->arena.Max());
   if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
   // Explicit entities in document order, then <distribute> blocks (spec §10.4).
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -727,13 +725,13 @@ void Loader::LoadArena(const XMLElement* e) {
     if (name == "foot-bot") {
       RobotDef r;
       if (LoadFootBot(c, &r)) {
-        placed_.push_back(FootprintOf(r));
+        placed_.Add(FootprintOf(r));
         model_->robots.push_back(std::move(r));
       }
     } else if (name == "box" || name == "cylinder") {
       ObstacleDef o;
       if (LoadObstacle(c, &o)) {
-        placed_.push_back(FootprintOf(o));
+        placed_.Add(FootprintOf(o));
         model_->obstacles.push_back(std::move(o));
       }
     } else if (name == "light") {
@@ -835,7 +833,7 @@ void Loader::LoadDistribute(const XMLElement* e) {
   Generator gp, go;
   bool ok = ParseGenerator(pos, &gp) & ParseGenerator(ori, &go);
   long long quantity = Int(ent, "quantity", 0, true);
-  long long max_trials = Int(ent, "max_trials", 0, Has(ent, "max_trials") ? false : false);
+  long long max_trials = Int(ent, "max_trials", 0);
   long long base_num = Int(ent, "base_num", 0);
   if (quantity < 0) Error(ent, "quantity must be >= 0");
   else if (!RoomFor(ent, quantity)) return;
@@ -904,7 +902,7 @@ void Loader::LoadDistribute(const XMLElement* e) {
           if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
           continue;
         }
-        placed_.push_back(f);
+        placed_.Add(f);
         model_->robots.push_back(std::move(r));
         placed = true;
       } else {
@@ -922,7 +920,7 @@ void Loader::LoadDistribute(const XMLElement* e) {
           if (gp.kind == Generator::Kind::Grid) break;  // ARGoS: a grid allows no retry
           continue;
         }
-        placed_.push_back(f);
+        placed_.Add(f);
         model_->obstacles.push_back(std::move(ob));
         placed = true;
       }
