@@ -1,5 +1,5 @@
-// Colored-blob omnidirectional camera, rot_z_only (spec §7.2). Looks up the lit LEDs of
-// the LED medium's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
+// Colored-blob omnidirectional camera, rot_z_only (as ARGoS's). Looks up the lit LEDs of
+// the LED field's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
 //
 // Occlusion in 2D: ARGoS casts a 3D ray from the camera (0.2887 m up) down to the LED; we
 // cast one planar ray from the robot's centre to the LED at the LED's height, ignoring

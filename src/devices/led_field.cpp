@@ -87,7 +87,8 @@ void InitLedField(const Model& model, Media* m) {
     capacity += def.leds.size();
   }
   m->light_medium.assign(model.lights.size(), -1);
-  for (size_t k = 0; k < model.lights.size(); ++k) m->light_medium[k] = MediumIndex(model.led_media, model.lights[k].medium);
+  for (size_t k = 0; k < model.lights.size(); ++k)
+    m->light_medium[k] = MediumIndex(model.led_media, model.lights[k].medium);
   capacity += model.lights.size();
   m->leds.clear();
   m->leds.reserve(capacity);

@@ -144,7 +144,8 @@ void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2Polyg
   float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
   for (int ix = 0; ix < nx; ++ix)
     for (int iy = 0; iy < ny; ++iy) {
-      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx), static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
+      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
+               static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
       poly->SetAsBox(hx, hy, c, 0);
       body->CreateFixture(fd);
     }
@@ -545,8 +546,8 @@ void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double
   out->scratch.clear();
   const double r = radius + kCircleSlack;
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, impl_->ray_circles, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center, r, z,
-          exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
+  Collect(impl_->ray_grid, impl_->ray_circles, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center,
+          r, z, exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -570,9 +571,9 @@ void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, cons
   for (const Vec2& axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
     if (NearWedge(axis.x(), axis.y(), 0, u0, u1)) cover(axis);
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, impl_->ray_circles, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack, y1 + kCircleSlack, center, r,
-          z, exclude_robot, [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); },
-          &out->scratch, &lo, &hi);
+  Collect(impl_->ray_grid, impl_->ray_circles, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack,
+          y1 + kCircleSlack, center, r, z, exclude_robot,
+          [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); }, &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }

@@ -80,7 +80,8 @@ class UniformGrid {
   Vec2 origin_ = Vec2::Zero();  // m, lower-left corner of cell (0, 0)
   double cell_ = 1, inv_cell_ = 1;
   int columns_ = 1, rows_ = 1;
-  std::vector<int> cell_start_ = {0, 0};  // (cells + 1): cell k's items are items_[cell_start_[k] .. cell_start_[k + 1])
+  /// (cells + 1): cell k's items are items_[cell_start_[k] .. cell_start_[k + 1]).
+  std::vector<int> cell_start_ = {0, 0};
   std::vector<int> items_;               // item numbers grouped by cell
   std::vector<int> first_column_, first_row_;  // per item: the first cell it is filed in
 };

@@ -137,7 +137,8 @@ TEST(UniformGrid, PointsInABoxMatchBruteForceInAscendingOrderPerCell) {
     for (size_t i = 0; i < points.size(); ++i) {
       const Vec2 d = (points[i] - c).cwiseAbs();
       if (d.x() <= h && d.y() <= h)
-        ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), static_cast<int>(i))) << "point " << i << " missed";
+        ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), static_cast<int>(i))) << "point " << i
+                                                                                            << " missed";
     }
     const bool any = grid.AnyInBox(c.x() - h, c.y() - h, c.x() + h, c.y() + h, [](int) { return true; });
     EXPECT_EQ(any, !seen.empty());
