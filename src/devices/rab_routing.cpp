@@ -138,8 +138,9 @@ bool ProbeBlockers(const Device& d, int occluders, RabScratch& scratch) {
 
 /// Whether a body's circle is entered before the partner's: the rest of
 /// CircleEntry(from, to, body, r) < t_partner (t_partner <= 1, so "t in [0, 1]" reduces to
-/// t >= 0); the cheap tests reject almost every occluder before sqrt.
-bool Enters(const RabOccluder& o, const Pair& p) {
+/// t >= 0); the cheap tests reject almost every occluder before sqrt. Inlined: a call per
+/// occluder was a sixth of the routing's instructions.
+[[gnu::always_inline]] inline bool Enters(const RabOccluder& o, const Pair& p) {
   const double along = o.offset_x * p.dx + o.offset_y * p.dy;
   const double disc = along * along - p.dd * o.tangent2;
   if (disc < 0) return false;
