@@ -44,6 +44,20 @@ void PlacedFootprints::Refile() {
   grid_.FileBoxes(static_cast<int>(filed_), [&](int i) { return lo_[i]; }, [&](int i) { return hi_[i]; });
 }
 
+int PlacedFootprints::FirstOverlap(const Footprint& f) const {
+  Vec2 lo, hi;
+  BoundingBox(f, &lo, &hi);
+  int first = -1;
+  auto consider = [&](int i) {
+    if (first >= 0 && i >= first) return;
+    if (hi.x() < lo_[i].x() || lo.x() > hi_[i].x() || hi.y() < lo_[i].y() || lo.y() > hi_[i].y()) return;
+    if (FootprintsOverlap(f, placed_[i])) first = i;
+  };
+  grid_.ForEachInBox(lo.x(), lo.y(), hi.x(), hi.y(), consider);
+  for (size_t i = filed_; i < placed_.size(); ++i) consider(static_cast<int>(i));
+  return first;
+}
+
 bool PlacedFootprints::Collides(const Footprint& f) const {
   Vec2 lo, hi;
   BoundingBox(f, &lo, &hi);

@@ -17,6 +17,8 @@ class PlacedFootprints {
   /// True when `f` overlaps a placed footprint (FootprintsOverlap): the same answer as
   /// testing every one of them.
   bool Collides(const Footprint& f) const;
+  /// The lowest index (in the order added) of a placed footprint that `f` overlaps, -1 if none.
+  int FirstOverlap(const Footprint& f) const;
   size_t Size() const { return placed_.size(); }
 
  private:

@@ -115,7 +115,8 @@ class Loader {
   }
   Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
   std::string OutsideArena(const RobotDef& r) const;
-  std::string Overlap(const RobotDef& r, size_t robots_before) const;
+  std::string Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
+                      const PlacedFootprints& robots_before) const;
   bool Collides(const Footprint& f) const { return placed_.Collides(f); }
 
   std::string path_;
@@ -749,10 +750,15 @@ void Loader::LoadArena(const XMLElement* e) {
     }
   }
   RoomFor(e, 0);
+  PlacedFootprints obstacles, robots_before;
+  obstacles.Cover(model_->arena.Min(), model_->arena.Max());
+  robots_before.Cover(model_->arena.Min(), model_->arena.Max());
+  for (const ObstacleDef& o : model_->obstacles) obstacles.Add(FootprintOf(o));
   for (size_t i = 0; i < model_->robots.size(); ++i) {
     const RobotDef& r = model_->robots[i];
     std::string problem = OutsideArena(r);
-    if (problem.empty()) problem = Overlap(r, i);
+    if (problem.empty()) problem = Overlap(r, obstacles, robots_before);
+    robots_before.Add(FootprintOf(r));
     if (!problem.empty()) errors_->Add(r.loc.file, r.loc.line, r.loc.element, "foot-bot '" + r.id + "' " + problem);
   }
   for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute"))
@@ -769,17 +775,20 @@ std::string Loader::OutsideArena(const RobotDef& r) const {
 }
 
 // ARGoS refuses a robot that overlaps another entity. Checks `r` against every obstacle and
-// the first `robots_before` robots; "" when it stands free. (Obstacles may overlap each
-// other: walls share corners.)
-std::string Loader::Overlap(const RobotDef& r, size_t robots_before) const {
-  Footprint f = FootprintOf(r);
-  for (const ObstacleDef& o : model_->obstacles)
-    if (FootprintsOverlap(f, FootprintOf(o)))
-      return std::string("overlaps ") + (o.kind == ShapeKind::Box ? "box" : "cylinder") + " '" + o.id + "' (line " +
-             std::to_string(o.loc.line) + ")";
-  for (size_t j = 0; j < robots_before; ++j)
-    if (FootprintsOverlap(f, FootprintOf(model_->robots[j])))
-      return "overlaps foot-bot '" + model_->robots[j].id + "' (line " + std::to_string(model_->robots[j].loc.line) + ")";
+// the robots before it; "" when it stands free, else names the first obstacle, then the first
+// robot, it overlaps. (Obstacles may overlap each other: walls share corners.)
+std::string Loader::Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
+                            const PlacedFootprints& robots_before) const {
+  const Footprint f = FootprintOf(r);
+  const int k = obstacles.FirstOverlap(f);
+  if (k >= 0) {
+    const ObstacleDef& o = model_->obstacles[k];
+    return std::string("overlaps ") + (o.kind == ShapeKind::Box ? "box" : "cylinder") + " '" + o.id + "' (line " +
+           std::to_string(o.loc.line) + ")";
+  }
+  const int j = robots_before.FirstOverlap(f);
+  if (j >= 0)
+    return "overlaps foot-bot '" + model_->robots[j].id + "' (line " + std::to_string(model_->robots[j].loc.line) + ")";
   return "";
 }
 

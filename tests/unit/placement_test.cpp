@@ -1,5 +1,5 @@
 // PlacedFootprints (model/placement.h): the grid-backed overlap test gives the same answer
-// as testing every placed footprint, for circles and turned boxes, inside the arena and
+// (and names the same first footprint) as testing every placed footprint, for circles and turned boxes, inside the arena and
 // beyond it, while footprints are being added.
 #include <gtest/gtest.h>
 
@@ -37,6 +37,10 @@ TEST(PlacedFootprints, CollidesExactlyWhenSomePlacedFootprintOverlaps) {
     bool brute = false;
     for (const Footprint& p : all) brute = brute || FootprintsOverlap(f, p);
     ASSERT_EQ(placed.Collides(f), brute) << "trial " << trial;
+    int first = -1;
+    for (size_t i = 0; i < all.size() && first < 0; ++i)
+      if (FootprintsOverlap(f, all[i])) first = static_cast<int>(i);
+    ASSERT_EQ(placed.FirstOverlap(f), first) << "trial " << trial;
     collisions += brute;
     if (!brute) {  // placed as the loader places: only what stands free
       placed.Add(f);
