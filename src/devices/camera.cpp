@@ -1,5 +1,5 @@
-// Colored-blob omnidirectional camera, rot_z_only (spec §7.2). Looks up the lit LEDs of
-// the LED medium's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
+// Colored-blob omnidirectional camera, rot_z_only (as ARGoS's). Looks up the lit LEDs of
+// the LED field's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
 //
 // Occlusion in 2D: ARGoS casts a 3D ray from the camera (0.2887 m up) down to the LED; we
 // cast one planar ray from the robot's centre to the LED at the LED's height, ignoring
@@ -29,30 +29,22 @@ void SenseCamera(const SenseContext& ctx, const DeviceConfig& cfg, const RobotDe
   if (!(half > 0)) return;
   const double camera_z = def.z + footbot::kCameraElevation;
   const double noise = cfg.params.noise_std_dev;
-  const PointGrid& g = media.led_grid;
-  const int x0 = g.CellX(pose.x - half), x1 = g.CellX(pose.x + half);
-  const int y0 = g.CellY(pose.y - half), y1 = g.CellY(pose.y + half);
   const Vec2 eye(pose.x, pose.y);
-  for (int cy = y0; cy <= y1; ++cy)
-    for (int cx = x0; cx <= x1; ++cx) {
-      const int c = cy * g.nx + cx;
-      for (int s = g.cell_start[c]; s < g.cell_start[c + 1]; ++s) {
-        const int li = g.items[s];
-        const LitLed& led = media.leds[li];
-        if (led.robot == self || led.medium != medium) continue;
-        Vec2 rel(led.pos.x() - pose.x, led.pos.y() - pose.y);
-        if (std::abs(rel.x()) >= half || std::abs(rel.y()) >= half || led.pos.z() >= camera_z) continue;
-        // An LED on (or above) the top of its own box/cylinder is not hidden by it.
-        const int carrier = led.obstacle >= 0 && led.pos.z() >= media.obstacle_top[led.obstacle] ? led.obstacle : -1;
-        if (CameraRayBlocked(ctx.model, media, eye, led.pos.head<2>(), led.pos.z(), self, carrier)) continue;
-        Blob b;  // holds the planar vector until noise and conversion below
-        b.distance = rel.x();
-        b.angle = rel.y();
-        b.color = led.color;
-        b.led = li;
-        rd.blobs.push_back(b);
-      }
-    }
+  media.led_grid.ForEachInBox(pose.x - half, pose.y - half, pose.x + half, pose.y + half, [&](int li) {
+    const LitLed& led = media.leds[li];
+    if (led.robot == self || led.medium != medium) return;
+    Vec2 rel(led.pos.x() - pose.x, led.pos.y() - pose.y);
+    if (std::abs(rel.x()) >= half || std::abs(rel.y()) >= half || led.pos.z() >= camera_z) return;
+    // An LED on (or above) the top of its own box/cylinder is not hidden by it.
+    const int carrier = led.obstacle >= 0 && led.pos.z() >= media.obstacle_top[led.obstacle] ? led.obstacle : -1;
+    if (CameraRayBlocked(ctx.model, media, eye, led.pos.head<2>(), led.pos.z(), self, carrier)) return;
+    Blob b;  // holds the planar vector until noise and conversion below
+    b.distance = rel.x();
+    b.angle = rel.y();
+    b.color = led.color;
+    b.led = li;
+    rd.blobs.push_back(b);
+  });
   // Cells come in grid order; report (and draw noise) in LED order (robots by index, LEDs
   // 1..13, then box and cylinder LEDs, then lights), independent of the grid geometry.
   std::sort(rd.blobs.begin(), rd.blobs.end(), [](const Blob& a, const Blob& b) { return a.led < b.led; });

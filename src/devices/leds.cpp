@@ -1,5 +1,5 @@
 // LEDs actuator (spec §7.1): the 13 colours set by the controller become the robot's
-// applied LEDs in Act, which the LED medium (devices/media.cpp) indexes for cameras.
+// applied LEDs in Act, which the LED field (devices/led_field.cpp) indexes for cameras.
 #include <algorithm>
 
 #include "devices/devices.h"

@@ -1,4 +1,4 @@
-// Blocker probes for the range-and-bearing occlusion scan (media.cpp, RabPartners): per
+// Blocker probes for the range-and-bearing occlusion scan (rab_routing.cpp): per
 // direction sector around a device, one nearby body likely to hide every pair in that
 // sector. A pair tests its sector's blocker first with the exact test, then scans as
 // before; the guess decides nothing (a wrong one costs one test), so rounding is moot here.
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "devices/media.h"
+#include "devices/rab_routing.h"
 
 namespace essaim {
 namespace rab_blockers {
@@ -19,27 +19,27 @@ inline double PseudoAngle(double x, double y) {
   return 2 * (y < 0) + odd + (odd ? ax : ay) / (ax + ay);
 }
 
-constexpr int kSectors = Media::kProbeSectors;
+constexpr int kSectors = rab::kProbeSectors;
 inline int SectorOf(double pseudo_angle) { return static_cast<int>(pseudo_angle * (kSectors / 4)) & (kSectors - 1); }
 
 /// Per direction sector, the first of the first n_occ occluders (nearest first, to a
 /// bucket) whose circle spans the sector's middle direction as seen from the device, its
 /// half-width estimated from r/|s|. Pairs of that sector test it first: in a crowd it
 /// hides most of them at once.
-inline void FindBlockers(Media::RabScratch& sc, int n_occ) {
+inline void FindBlockers(RabScratch& scratch, int n_occ) {
   constexpr double r = footbot::kRadius;
-  std::fill(sc.sector_blocker.begin(), sc.sector_blocker.end(), -1);
+  std::fill(scratch.sector_blocker.begin(), scratch.sector_blocker.end(), -1);
   for (int i = 0; i < n_occ; ++i) {
-    const Media::NearBody& o = sc.occluders[i];
-    const double l1 = std::abs(o.sx) + std::abs(o.sy);
+    const RabOccluder& o = scratch.occluders[i];
+    const double l1 = std::abs(o.offset_x) + std::abs(o.offset_y);
     // Half-width asin(r/|s|) >= r/|s| rad, times the pseudo-angle's slope |s|²/l1² here:
     // at most 1 (|s| >= r, l1 >= |s|), so k0 >= 0 and at most kSectors / 2 + 1 sectors.
-    const double w = r * std::sqrt(o.cc + r * r) / (l1 * l1);
-    const double p = PseudoAngle(o.sx, o.sy);
+    const double w = r * std::sqrt(o.tangent2 + r * r) / (l1 * l1);
+    const double p = PseudoAngle(o.offset_x, o.offset_y);
     const int k0 = static_cast<int>((p - w) * (kSectors / 4) + (kSectors + 0.5));  // sectors whose middle
     const int k1 = static_cast<int>((p + w) * (kSectors / 4) + (kSectors - 0.5));  // is in [p - w, p + w]
     for (int k = k0; k <= k1; ++k) {
-      int& blocker = sc.sector_blocker[k & (kSectors - 1)];
+      int& blocker = scratch.sector_blocker[k & (kSectors - 1)];
       if (blocker < 0) blocker = i;
     }
   }

@@ -1,4 +1,4 @@
-// Range-and-bearing actuator and sensor (spec §5). The medium (devices/media.cpp) decides
+// Range-and-bearing actuator and sensor (spec §5). The medium (devices/rab_routing.cpp) decides
 // who hears whom after physics; here the receiver turns each routed packet into range and
 // bearings in its own frame, with drop and noise from its own sensor_rng.
 #include <algorithm>

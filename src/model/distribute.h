@@ -1,4 +1,4 @@
-// <distribute> generators and the overlap test used to place entities (spec §10.5).
+// <distribute> generators and the overlap test used to place entities, as ARGoS's <distribute>.
 #pragma once
 #include "core/math.h"
 #include "core/rng.h"

@@ -14,6 +14,7 @@
 #include "core/strings.h"
 #include "model/attribute_ledger.h"
 #include "model/distribute.h"
+#include "model/placement.h"
 #include "model/floor_image.h"
 #include "model/limits.h"
 #include "model/xml_overrides.h"
@@ -136,12 +137,9 @@ class Loader {
   }
   Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
   std::string OutsideArena(const RobotDef& r) const;
-  std::string Overlap(const RobotDef& r, size_t robots_before) const;
-  bool Collides(const Footprint& f) const {
-    for (const Footprint& p : placed_)
-      if (FootprintsOverlap(f, p)) return true;
-    return false;
-  }
+  std::string Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
+                      const PlacedFootprints& robots_before) const;
+  bool Collides(const Footprint& f) const { return placed_.Collides(f); }
 
   std::string path_;
   std::string dir_;
@@ -150,7 +148,7 @@ class Loader {
   ErrorList* warnings_;
   std::unique_ptr<Model> model_;
   std::set<std::string> ids_;
-  std::vector<Footprint> placed_;
+  PlacedFootprints placed_;
   Rng sim_rng_;
   AttributeLedger ledger_;
   std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
@@ -742,6 +740,7 @@ void Loader::LoadArena(const XMLElement* e) {
   model_->arena.size = Vector3(e, "size", Vec3(10, 10, 1), true);
   model_->arena.center = Vector3(e, "center", Vec3::Zero());
   CheckArenaSize(e);
+  placed_.Cover(model_->arena.Min(), model_->arena.Max());
   if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
   // Explicit entities in document order, then <distribute> blocks (spec §10.4).
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
@@ -749,13 +748,13 @@ void Loader::LoadArena(const XMLElement* e) {
     if (name == "foot-bot") {
       RobotDef r;
       if (LoadFootBot(c, &r)) {
-        placed_.push_back(FootprintOf(r));
+        placed_.Add(FootprintOf(r));
         model_->robots.push_back(std::move(r));
       }
     } else if (name == "box" || name == "cylinder") {
       ObstacleDef o;
       if (LoadObstacle(c, &o)) {
-        placed_.push_back(FootprintOf(o));
+        placed_.Add(FootprintOf(o));
         model_->obstacles.push_back(std::move(o));
       }
     } else if (name == "light") {
@@ -773,10 +772,15 @@ void Loader::LoadArena(const XMLElement* e) {
     }
   }
   RoomFor(e, 0);
+  PlacedFootprints obstacles, robots_before;
+  obstacles.Cover(model_->arena.Min(), model_->arena.Max());
+  robots_before.Cover(model_->arena.Min(), model_->arena.Max());
+  for (const ObstacleDef& o : model_->obstacles) obstacles.Add(FootprintOf(o));
   for (size_t i = 0; i < model_->robots.size(); ++i) {
     const RobotDef& r = model_->robots[i];
     std::string problem = OutsideArena(r);
-    if (problem.empty()) problem = Overlap(r, i);
+    if (problem.empty()) problem = Overlap(r, obstacles, robots_before);
+    robots_before.Add(FootprintOf(r));
     if (!problem.empty()) errors_->Add(r.loc.file, r.loc.line, r.loc.element, "foot-bot '" + r.id + "' " + problem);
   }
   for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute"))
@@ -793,17 +797,20 @@ std::string Loader::OutsideArena(const RobotDef& r) const {
 }
 
 // ARGoS refuses a robot that overlaps another entity. Checks `r` against every obstacle and
-// the first `robots_before` robots; "" when it stands free. (Obstacles may overlap each
-// other: walls share corners.)
-std::string Loader::Overlap(const RobotDef& r, size_t robots_before) const {
-  Footprint f = FootprintOf(r);
-  for (const ObstacleDef& o : model_->obstacles)
-    if (FootprintsOverlap(f, FootprintOf(o)))
-      return std::string("overlaps ") + (o.kind == ShapeKind::Box ? "box" : "cylinder") + " '" + o.id + "' (line " +
-             std::to_string(o.loc.line) + ")";
-  for (size_t j = 0; j < robots_before; ++j)
-    if (FootprintsOverlap(f, FootprintOf(model_->robots[j])))
-      return "overlaps foot-bot '" + model_->robots[j].id + "' (line " + std::to_string(model_->robots[j].loc.line) + ")";
+// the robots before it; "" when it stands free, else names the first obstacle, then the first
+// robot, it overlaps. (Obstacles may overlap each other: walls share corners.)
+std::string Loader::Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
+                            const PlacedFootprints& robots_before) const {
+  const Footprint f = FootprintOf(r);
+  const int k = obstacles.FirstOverlap(f);
+  if (k >= 0) {
+    const ObstacleDef& o = model_->obstacles[k];
+    return std::string("overlaps ") + (o.kind == ShapeKind::Box ? "box" : "cylinder") + " '" + o.id + "' (line " +
+           std::to_string(o.loc.line) + ")";
+  }
+  const int j = robots_before.FirstOverlap(f);
+  if (j >= 0)
+    return "overlaps foot-bot '" + model_->robots[j].id + "' (line " + std::to_string(model_->robots[j].loc.line) + ")";
   return "";
 }
 
@@ -903,7 +910,7 @@ Loader::Placement Loader::PlaceFootBot(const DistributeBlock& b, const std::stri
   }
   Footprint f = FootprintOf(r);
   if (Collides(f)) return Placement::Overlaps;
-  placed_.push_back(f);
+  placed_.Add(f);
   model_->robots.push_back(std::move(r));
   return Placement::Placed;
 }
@@ -921,7 +928,7 @@ Loader::Placement Loader::PlaceObstacle(const DistributeBlock& b, const std::str
   }
   Footprint f = FootprintOf(ob);
   if (Collides(f)) return Placement::Overlaps;
-  placed_.push_back(f);
+  placed_.Add(f);
   model_->obstacles.push_back(std::move(ob));
   return Placement::Placed;
 }

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <mutex>
 
-#include "physics/shape_grid.h"
+#include "spatial/uniform_grid.h"
 
 namespace essaim {
 
@@ -24,6 +24,21 @@ b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
 
 constexpr double kMaxStaticPiece = 1.0;  // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
+}  // namespace
+
+namespace {
+/// A shape as the ray grid files it: a circle containing it, its vertical extent.
+struct ShapeCircle {
+  double cx = 0, cy = 0, r = 0;  // m
+  double bottom = 0, top = 0;    // m
+  int robot = -1;                // robot index, -1 for obstacles
+  const b2Fixture* fixture = nullptr;
+};
+
+/// m: the ray grid's cells, a side of about three foot-bot diameters. A scanner's disc
+/// (1.51 m) spans 7 × 7 cells, the proximity ring's (0.19 m) one to four; smaller cells
+/// file each robot in more of them, larger ones let more far shapes through.
+constexpr double kRayCellSize = 0.5;
 }  // namespace
 
 struct PhysicsWorld::Impl {
@@ -47,10 +62,11 @@ struct PhysicsWorld::Impl {
   float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
   PhysicsDef phys;                  // friction of obstacles added later
 
-  /// Ray candidates come from this grid (EnsureRayGrid), rebuilt at the first query after
-  /// shapes moved: every change to a body's place or to the set of shapes counts up
-  /// `shapes_moved` (never during a parallel stage; queries only read it).
-  ShapeGrid ray_grid;
+  /// Ray candidates come from a grid of these circles (EnsureRayGrid), rebuilt at the first
+  /// query after shapes moved: every change to a body's place or to the set of shapes counts
+  /// up `shapes_moved` (never during a parallel stage; queries only read it).
+  std::vector<ShapeCircle> ray_circles;
+  UniformGrid ray_grid;
   uint64_t shapes_moved = 0;
   std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
   std::mutex grid_mutex;
@@ -115,15 +131,28 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   }
 }
 
-int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
-  ++impl_->shapes_moved;
-  const PhysicsDef& phys = impl_->phys;
-  const int index = static_cast<int>(obstacles_.size());
-  b2BodyDef bd;
-  bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
-  bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
-  bd.angle = static_cast<float>(o.pose.yaw);
-  b2Body* body = impl_->world.CreateBody(&bd);
+namespace {
+/// A long static wall's bounding box overlaps most of the tree and makes every ray cast
+/// visit it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tiled into
+/// pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances. At
+/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
+void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
+  double piece = kMaxStaticPiece;
+  while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
+  int nx = static_cast<int>(std::ceil(o.size_x / piece));
+  int ny = static_cast<int>(std::ceil(o.size_y / piece));
+  float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+  for (int ix = 0; ix < nx; ++ix)
+    for (int iy = 0; iy < ny; ++iy) {
+      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
+               static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
+      poly->SetAsBox(hx, hy, c, 0);
+      body->CreateFixture(fd);
+    }
+}
+
+/// The obstacle's box or circle fixture(s) on `body`, tagged with its index.
+void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   b2FixtureDef fd;
   b2PolygonShape poly;
   b2CircleShape circle;
@@ -142,43 +171,42 @@ int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
   fd.restitution = 0;
   fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
   fd.userData.pointer = PackTag(BodyKind::Obstacle, index);
-  if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece) {
-    // A long wall's bounding box overlaps most of the tree and makes every ray cast visit
-    // it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tile it into
-    // pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances.
-    // At most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
-    double piece = kMaxStaticPiece;
-    while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
-    int nx = static_cast<int>(std::ceil(o.size_x / piece));
-    int ny = static_cast<int>(std::ceil(o.size_y / piece));
-    float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
-    for (int ix = 0; ix < nx; ++ix)
-      for (int iy = 0; iy < ny; ++iy) {
-        b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
-                 static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
-        poly.SetAsBox(hx, hy, c, 0);
-        body->CreateFixture(&fd);
-      }
-  } else {
+  if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece)
+    TileStaticBox(o, body, &fd, &poly);
+  else
     body->CreateFixture(&fd);
+}
+
+/// A movable obstacle's mass (ARGoS's cylinder moment) and its floor friction: a drag
+/// towards zero velocity with capped force and torque.
+void MakeMovable(const ObstacleDef& o, const PhysicsDef& phys, b2World* world, b2Body* ground, b2Body* body) {
+  if (o.kind == ShapeKind::Cylinder) {
+    // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
+    b2MassData md;
+    md.mass = static_cast<float>(o.mass);
+    md.center.SetZero();
+    md.I = static_cast<float>(o.mass * (2 * o.radius) * (2 * o.radius) / 2);
+    body->SetMassData(&md);
   }
-  if (o.movable) {
-    if (o.kind == ShapeKind::Cylinder) {
-      // ARGoS quirk 1: the moment uses the diameter as radius (4x a uniform disc).
-      b2MassData md;
-      md.mass = static_cast<float>(o.mass);
-      md.center.SetZero();
-      md.I = static_cast<float>(o.mass * (2 * o.radius) * (2 * o.radius) / 2);
-      body->SetMassData(&md);
-    }
-    // Floor friction: drag towards zero velocity with capped force and torque.
-    b2FrictionJointDef jd;
-    jd.Initialize(impl_->ground, body, body->GetPosition());
-    bool box = o.kind == ShapeKind::Box;
-    jd.maxForce = static_cast<float>(box ? phys.box_linear_friction : phys.cylinder_linear_friction);
-    jd.maxTorque = static_cast<float>(box ? phys.box_angular_friction : phys.cylinder_angular_friction);
-    impl_->world.CreateJoint(&jd);
-  }
+  b2FrictionJointDef jd;
+  jd.Initialize(ground, body, body->GetPosition());
+  bool box = o.kind == ShapeKind::Box;
+  jd.maxForce = static_cast<float>(box ? phys.box_linear_friction : phys.cylinder_linear_friction);
+  jd.maxTorque = static_cast<float>(box ? phys.box_angular_friction : phys.cylinder_angular_friction);
+  world->CreateJoint(&jd);
+}
+}  // namespace
+
+int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
+  ++impl_->shapes_moved;
+  const int index = static_cast<int>(obstacles_.size());
+  b2BodyDef bd;
+  bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
+  bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
+  bd.angle = static_cast<float>(o.pose.yaw);
+  b2Body* body = impl_->world.CreateBody(&bd);
+  AddObstacleFixtures(o, index, body);
+  if (o.movable) MakeMovable(o, impl_->phys, &impl_->world, impl_->ground, body);
   obstacles_.push_back(body);
   impl_->obstacle_bottom.push_back(o.z);
   impl_->obstacle_top.push_back(o.z + o.height);
@@ -387,41 +415,6 @@ class RobotQuery : public b2QueryCallback {
 };
 }  // namespace
 
-namespace {
-class AnyNear : public b2QueryCallback {
- public:
-  AnyNear(const b2AABB& box, const std::vector<double>& tops, const std::vector<double>& bottoms, double z, int exclude)
-      : box_(box), tops_(tops), bottoms_(bottoms), z_(z), exclude_(exclude) {}
-  bool ReportFixture(b2Fixture* f) override {
-    uintptr_t tag = f->GetUserData().pointer;
-    BodyKind kind = TagKind(tag);
-    int index = TagIndex(tag);
-    if (!ReachesHeight(kind, index, z_, exclude_, tops_, bottoms_)) return true;
-    // The tree reports fattened boxes (+0.1 m); test the fixture's own box.
-    if (!b2TestOverlap(f->GetAABB(0), box_)) return true;
-    found = true;
-    return false;  // one is enough
-  }
-  bool found = false;
-
- private:
-  b2AABB box_;
-  const std::vector<double>& tops_;
-  const std::vector<double>& bottoms_;
-  double z_;
-  int exclude_;
-};
-}  // namespace
-
-bool PhysicsWorld::AnyShapeNear(const Vec2& center, double radius, double z, int exclude_robot) const {
-  b2AABB box;
-  box.lowerBound.Set(static_cast<float>(center.x() - radius), static_cast<float>(center.y() - radius));
-  box.upperBound.Set(static_cast<float>(center.x() + radius), static_cast<float>(center.y() + radius));
-  AnyNear q(box, impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot);
-  impl_->world.QueryAABB(&q, box);
-  return q.found;
-}
-
 RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const {
   ClosestRay cb(impl_->obstacle_top, impl_->obstacle_bottom, z, exclude_robot);
   b2Vec2 p1(static_cast<float>(from.x()), static_cast<float>(from.y()));
@@ -466,29 +459,53 @@ void BoundingCircle(const b2Fixture& f, double* cx, double* cy, double* r) {
 constexpr double kCircleSlack = 1e-3;
 }  // namespace
 
+namespace {
+/// The bounding circle of every shape (non-finite ones dropped: no ray can hit them
+/// either), filed in the ray grid by their boxes.
+template <class Impl>
+void FileRayCircles(Impl* im) {
+  std::vector<ShapeCircle>& circles = im->ray_circles;
+  circles.clear();
+  for (b2Body* b = im->world.GetBodyList(); b; b = b->GetNext()) {
+    for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
+      const uintptr_t tag = f->GetUserData().pointer;
+      const BodyKind kind = TagKind(tag);
+      if (kind == BodyKind::None) continue;
+      ShapeCircle c;
+      BoundingCircle(*f, &c.cx, &c.cy, &c.r);
+      c.r += kCircleSlack;
+      if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
+      const int index = TagIndex(tag);
+      if (kind == BodyKind::Robot) c.robot = index;
+      HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
+      c.fixture = f;
+      circles.push_back(c);
+    }
+  }
+  const int n = static_cast<int>(circles.size());
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  if (n > 0) lo = hi = Vec2(circles[0].cx, circles[0].cy);
+  for (const ShapeCircle& c : circles) {
+    lo = lo.cwiseMin(Vec2(c.cx - c.r, c.cy - c.r));
+    hi = hi.cwiseMax(Vec2(c.cx + c.r, c.cy + c.r));
+  }
+  // A robot flung far away must not make the grid huge: past a few cells per shape, the
+  // cells grow instead (queries get slower, never wrong). Room for a foot-bot-sized circle
+  // in four cells each.
+  im->ray_grid.CoverSpan(lo, hi, kRayCellSize, std::max(4096.0, 4.0 * n));
+  im->ray_grid.Reserve(4 * circles.size(), circles.size());
+  im->ray_grid.FileBoxes(n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
+                         [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
+}
+}  // namespace
+
 void PhysicsWorld::EnsureRayGrid() const {
   Impl& im = *impl_;
   if (im.grid_built_at.load(std::memory_order_acquire) == im.shapes_moved) return;
   // The first query after a change rebuilds; the others of a parallel stage wait for it.
   std::lock_guard<std::mutex> lock(im.grid_mutex);
   if (im.grid_built_at.load(std::memory_order_relaxed) == im.shapes_moved) return;
-  im.ray_grid.Clear();
-  for (b2Body* b = im.world.GetBodyList(); b; b = b->GetNext()) {
-    for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
-      const uintptr_t tag = f->GetUserData().pointer;
-      const BodyKind kind = TagKind(tag);
-      if (kind == BodyKind::None) continue;
-      GridCircle g;
-      BoundingCircle(*f, &g.cx, &g.cy, &g.r);
-      g.r += kCircleSlack;
-      const int index = TagIndex(tag);
-      if (kind == BodyKind::Robot) g.robot = index;
-      HeightSpan(kind, index, im.obstacle_top, im.obstacle_bottom, &g.bottom, &g.top);
-      g.shape = f;
-      im.ray_grid.Add(g);
-    }
-  }
-  im.ray_grid.Build();
+  FileRayCircles(&im);
   im.grid_built_at.store(im.shapes_moved, std::memory_order_release);
 }
 
@@ -498,9 +515,11 @@ namespace {
 /// `center` and pass `keep(dx, dy, circle radius)` (offset from the centre). Each goes into
 /// `found` with its `near`; [*lo, *hi] covers those.
 template <class Keep>
-void Collect(const ShapeGrid& grid, double x0, double y0, double x1, double y1, const Vec2& center, double r,
-             double z, int exclude_robot, Keep&& keep, std::vector<RayCandidate>* found, double* lo, double* hi) {
-  grid.ForEachInBox(x0, y0, x1, y1, [&](const GridCircle& g) {
+void Collect(const UniformGrid& grid, const std::vector<ShapeCircle>& circles, double x0, double y0, double x1,
+             double y1, const Vec2& center, double r, double z, int exclude_robot, Keep&& keep,
+             std::vector<RayCandidate>* found, double* lo, double* hi) {
+  grid.ForEachOnceInBox(x0, y0, x1, y1, [&](int i) {
+    const ShapeCircle& g = circles[i];
     if (z < g.bottom || z > g.top || (exclude_robot >= 0 && g.robot == exclude_robot)) return;
     const double dx = g.cx - center.x(), dy = g.cy - center.y();
     const double d2 = dx * dx + dy * dy;
@@ -508,7 +527,7 @@ void Collect(const ShapeGrid& grid, double x0, double y0, double x1, double y1, 
     const double near = std::sqrt(d2) - g.r;
     *lo = std::min(*lo, near);
     *hi = std::max(*hi, near);
-    found->push_back({near, g.cx, g.cy, g.r, g.shape});
+    found->push_back({near, g.cx, g.cy, g.r, g.fixture});
   });
 }
 
@@ -527,8 +546,8 @@ void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double
   out->scratch.clear();
   const double r = radius + kCircleSlack;
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center, r, z,
-          exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
+  Collect(impl_->ray_grid, impl_->ray_circles, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center,
+          r, z, exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -552,9 +571,9 @@ void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, cons
   for (const Vec2& axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
     if (NearWedge(axis.x(), axis.y(), 0, u0, u1)) cover(axis);
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack, y1 + kCircleSlack, center, r,
-          z, exclude_robot, [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); },
-          &out->scratch, &lo, &hi);
+  Collect(impl_->ray_grid, impl_->ray_circles, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack,
+          y1 + kCircleSlack, center, r, z, exclude_robot,
+          [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); }, &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -579,7 +598,7 @@ void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
   const double inv_step = 1 / step;
   const int steps = static_cast<int>((hi - lo) * inv_step) + 1;
   std::vector<int>& ends = out->bucket_ends;
-  ends.reserve(kMaxNearSteps + 1);  // once: later gathers never allocate for it
+  ends.reserve(kMaxNearSteps + 2);  // once: later gathers never allocate for it
   auto step_of = [&](double near) { return std::min(static_cast<int>((near - lo) * inv_step), steps - 1); };
   const size_t n = found.size();
   if (n * n < 2 * static_cast<size_t>(steps)) {
@@ -599,16 +618,12 @@ void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
     }
     return;
   }
-  ends.assign(steps, 0);
-  for (const RayCandidate& c : found) ++ends[step_of(c.near)];
-  for (int k = 1; k < steps; ++k) ends[k] += ends[k - 1];
-  for (size_t i = found.size(); i-- > 0;) {
-    const RayCandidate& c = found[i];
-    const int k = step_of(c.near);
-    RayCandidate& slot = items[--ends[k]];
-    slot = c;
-    slot.near = lo + std::max(k - 1, 0) * step;
-  }
+  ends.resize(steps + 1);
+  BucketSort(static_cast<int>(n), &ends, [&](int i, auto&& file) { file(step_of(found[i].near)); },
+             [&](int slot, int i) {
+               items[slot] = found[i];
+               items[slot].near = lo + std::max(step_of(found[i].near) - 1, 0) * step;
+             });
 }
 
 RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const {

@@ -1,5 +1,5 @@
 // The only Box2D user (Box2D 2.4.1 from Debian). Robots, boxes and cylinders as bodies;
-// wheel commands as a velocity servo with capped force and torque (spec §11.2); ray and
+// wheel commands as a velocity servo with capped force and torque (as ARGoS's dynamics2d); ray and
 // overlap queries through Box2D's dynamic tree. No Box2D type crosses this header.
 #pragma once
 #include <memory>
@@ -21,7 +21,7 @@ struct GripTarget {
 };
 
 /// Radius of the foot-bot gripper's contact disc, centred at the body radius in front of
-/// the turret (ARGoS's dynamics2d gripper sensor shape, spec §11.2).
+/// the turret (ARGoS's dynamics2d gripper sensor shape).
 constexpr double kGripperRadius = 0.01;  // m
 
 struct RayHit {
@@ -49,10 +49,6 @@ struct RayCandidates {
   Vec2 center = Vec2::Zero();  // m, the gather centre
   std::vector<RayCandidate> scratch;  // the gather's unsorted list
   std::vector<int> bucket_ends;       // the gather's counting sort
-};
-
-struct PhysicsProfile {
-  double step_seconds = 0;
 };
 
 class PhysicsWorld {
@@ -96,7 +92,7 @@ class PhysicsWorld {
   /// GatherRayCandidates for rays on half-lines from `center`, within `radius` of it, whose
   /// directions lie between unit vectors `u0` and `u1` (counter-clockwise from u0, less than π
   /// on): only the shapes that come near that sector, from the grid cells over it. A scanner's
-  /// long sensor sweeps six rays through a narrow sector of its 1.5 m disc (issue 12).
+  /// long sensor sweeps six rays through a narrow sector of its 1.5 m disc.
   void GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1, double z,
                              int exclude_robot, RayCandidates* out) const;
   /// CastRay's distance for a ray inside the gathered disc, tested against the candidates
@@ -105,14 +101,10 @@ class PhysicsWorld {
   /// shapes skipped once the nearest-first scan passes the closest hit cannot beat it).
   /// Kind and index are those of the first closest in that order (ties are rare).
   RayHit CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const;
-  /// True when some shape reaching height `z` (other than robot `exclude_robot`) has its
-  /// bounding box within the square of half-side `radius` around `center`. A cheap,
-  /// conservative pre-test: false means no ray of that length from there can hit anything.
-  bool AnyShapeNear(const Vec2& center, double radius, double z, int exclude_robot) const;
   /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
   void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
 
-  // ---- gripper (spec §7.5): the turret angle `turret` (rad, relative to the body) is
+  // ---- gripper: the turret angle `turret` (rad, relative to the body) is
   // robot state kept by devices/turret.cpp; physics only holds the joint.
   /// Centre of the gripper disc: body radius in direction yaw + turret.
   Vec2 GripperPoint(int robot, double turret) const;
