@@ -2,7 +2,7 @@
 
 A fenced block is an example when it is Python (```python) or a shell block (no language,
 sh, bash) whose first line starts with a command (`essaim`, `build/essaim`, `.venv/bin/...`,
-`scripts/...`, `bash`, `cp`, `sed`, ...). Other shell blocks are output, file listings or
+`scripts/...`, `tools/...`, `bash`, `cp`, `sed`, ...). Other shell blocks are output, file listings or
 `--set` fragments; a block written with placeholders (`[--ticks N]`, `<experiment>`) is a
 synopsis. Neither is run.
 
@@ -20,7 +20,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-COMMANDS = ("essaim", "build/essaim", ".venv/bin/", "scripts/", "bash", "python3", "ctest",
+COMMANDS = ("essaim", "build/essaim", ".venv/bin/", "scripts/", "tools/", "bash", "python3", "ctest",
             "cp", "sed", "cat", "mkdir", "ls", "cd", "ESSAIM=")
 SHELL_LANGS = ("", "sh", "bash", "shell")
 SYNOPSIS = re.compile(r"\[--|<[a-z][\w-]*>|\]\.\.\.")
