@@ -3,11 +3,11 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include <algorithm>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cstdio>
+#include <memory>
 
 #include "app/cli_support.h"
 #include "app/commands.h"
@@ -24,7 +24,7 @@ namespace essaim {
 namespace {
 struct Scenario {
   const char* name;
-  const char* file;       // in the bench folder
+  const char* file;                    // in the bench folder
   std::vector<const char*> overrides;  // --set values
 };
 
@@ -40,7 +40,8 @@ const Scenario kScenarios[] = {
     {"foraging-30", "../arenas/foraging.argos", {}},
     {"foraging-100", "../arenas/foraging.argos", {"arena.distribute.entity.quantity=100"}},
     // 300 foot-bots do not fit the 2.4 m start square: 4.4 m keeps the 100-robot density.
-    {"foraging-300", "../arenas/foraging.argos",
+    {"foraging-300",
+     "../arenas/foraging.argos",
      {"arena.distribute.entity.quantity=300", "arena.distribute.position.min=-2.2,-2.2,0",
       "arena.distribute.position.max=2.2,2.2,0"}},
     {"foraging30m-100", "../arenas/foraging_30m.argos", {"arena.distribute.entity.quantity=100"}},
@@ -65,7 +66,8 @@ struct BenchArgs {
 };
 
 namespace {
-std::unique_ptr<Model> LoadScenario(const std::string& dir, const Scenario& s, long long ticks, int threads, bool strict) {
+std::unique_ptr<Model> LoadScenario(const std::string& dir, const Scenario& s, long long ticks, int threads,
+                                    bool strict) {
   LoadOptions lo;
   lo.strict = strict;
   lo.ticks = ticks;
@@ -116,9 +118,8 @@ const char* const kFloorDefaults[] = {"foraging-30", "foraging-100", "foraging-3
 
 int BenchFloor(const BenchArgs& a) {
   std::printf("%-16s %6s %3s %6s %10s %11s %10s %9s %9s %9s %9s %9s  %5s %5s %6s %5s %6s %5s %6s\n", "scenario",
-              "robots", "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor", "cpu-us/rs", "floor-cpu", "cpu/floor",
-              "same-cpu", "cpu/same", "act%", "phys%", "media%", "loop%", "sense%", "lua%",
-              "other%");
+              "robots", "thr", "ticks", "wall-us/rs", "floor-us/rs", "wall/floor", "cpu-us/rs", "floor-cpu",
+              "cpu/floor", "same-cpu", "cpu/same", "act%", "phys%", "media%", "loop%", "sense%", "lua%", "other%");
   for (const Scenario& s : kScenarios) {
     const bool wanted = a.only.empty() ? std::find(std::begin(kFloorDefaults), std::end(kFloorDefaults),
                                                    std::string(s.name)) != std::end(kFloorDefaults)
@@ -157,11 +158,13 @@ int BenchFloor(const BenchArgs& a) {
       }
       const double per = 1e6 / std::max<long long>(1, steps);
       const double pct = 100 / std::max(1e-12, wall);
-      std::printf("%-16s %6zu %3d %6lld %10.2f %11.2f %10.2f %9.2f %9.2f %9.2f %9.2f %9.2f  %5.1f %5.1f %6.1f %5.1f %6.1f %5.1f %6.1f\n",
-                  s.name, model->robots.size(), threads, static_cast<long long>(model->experiment.length_ticks),
-                  wall * per, floor * per, wall / std::max(1e-12, floor), cpu * per, floor_cpu * per,
-                  cpu / std::max(1e-12, floor_cpu), same_cpu * per, cpu / std::max(1e-12, same_cpu), best.act * pct, best.physics * pct, best.media * pct,
-                  best.loop_functions * pct, best.sense * pct, best.control * pct, (wall - best.Total()) * pct);
+      std::printf(
+          "%-16s %6zu %3d %6lld %10.2f %11.2f %10.2f %9.2f %9.2f %9.2f %9.2f %9.2f  %5.1f %5.1f %6.1f %5.1f %6.1f "
+          "%5.1f %6.1f\n",
+          s.name, model->robots.size(), threads, static_cast<long long>(model->experiment.length_ticks), wall * per,
+          floor * per, wall / std::max(1e-12, floor), cpu * per, floor_cpu * per, cpu / std::max(1e-12, floor_cpu),
+          same_cpu * per, cpu / std::max(1e-12, same_cpu), best.act * pct, best.physics * pct, best.media * pct,
+          best.loop_functions * pct, best.sense * pct, best.control * pct, (wall - best.Total()) * pct);
       std::fflush(stdout);
     }
   }
@@ -211,9 +214,8 @@ static int Bench(BenchArgs a) {
       std::printf("%-18s %6zu %3d %8.1f %11.0f %9.2f %8.2f  %5.1f %5.1f %5.1f %5.1f %5.1f %5.1f %8.1f %7.1f\n", s.name,
                   model->robots.size(), world->threads, world->tick / wall, steps / wall, wall * 1e6 / steps,
                   wall / std::max(1e-12, t.control), 100 * t.act / total, 100 * t.physics / total,
-                  100 * t.media / total, 100 * t.loop_functions / total, 100 * t.sense / total,
-                  100 * t.control / total, lua_bytes / 1024.0 / std::max<size_t>(1, model->robots.size()),
-                  PeakRssMb());
+                  100 * t.media / total, 100 * t.loop_functions / total, 100 * t.sense / total, 100 * t.control / total,
+                  lua_bytes / 1024.0 / std::max<size_t>(1, model->robots.size()), PeakRssMb());
       std::fflush(stdout);
     }
   }
@@ -248,8 +250,9 @@ CommandMain AddBenchCommand(CLI::App& app) {
       ->check(IntegerIn(1, 100))
       ->capture_default_str();
   sub->add_option("--dir", a->dir, "the folder holding the scenario files")->type_name("DIR")->capture_default_str();
-  sub->footer("Example:\n  essaim bench --only avoidance-100,foraging-30 --threads 1,2\n"
-              "  essaim bench --floor --only foraging-30 --ticks 100 --repeat 3");
+  sub->footer(
+      "Example:\n  essaim bench --only avoidance-100,foraging-30 --threads 1,2\n"
+      "  essaim bench --floor --only foraging-30 --ticks 100 --repeat 3");
   return [a] { return Bench(*a); };
 }
 

@@ -26,9 +26,7 @@ bool IsDirectory(const std::string& path) {
 
 }  // namespace
 
-std::string RecordingPathOf(const std::string& run) {
-  return IsDirectory(run) ? JoinPath(run, kRecordingFile) : run;
-}
+std::string RecordingPathOf(const std::string& run) { return IsDirectory(run) ? JoinPath(run, kRecordingFile) : run; }
 
 /// The page with the recording embedded, and the run's time series when the recording's
 /// folder has one (charts).

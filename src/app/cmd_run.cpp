@@ -69,8 +69,8 @@ bool SetAsideEarlierOutputsAndSay(const std::string& out, std::string* error) {
 /// A run that fails before its world exists still leaves summary.json (status "failed",
 /// the message) where the output goes, when that is known and usable, with an earlier
 /// run's outputs set aside so the summary is not read beside them; returns `code`.
-int FailedBeforeRun(RunSession& session, const RunArgs& r, const std::string& out, const Model* model, const std::string& message,
-                           int code, const InputFiles* inputs = nullptr) {
+int FailedBeforeRun(RunSession& session, const RunArgs& r, const std::string& out, const Model* model,
+                    const std::string& message, int code, const InputFiles* inputs = nullptr) {
   std::string error;
   if (out.empty()) return code;
   if (!PrepareOutFolder(out, &error) || (!session.out_lock.Held() && !session.out_lock.Acquire(out, &error)) ||
@@ -131,7 +131,9 @@ SimOptions MakeSimOptions(RunSession& session, const RunArgs& r, const Model& mo
   opt.lua = WatchdogOptions(model, r);
   opt.lua.watchdog = &session.watchdog;
   opt.inputs = std::make_shared<InputFiles>();  // kept when a script fails to load
-  opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) { logs->Print(stream, line, from); };
+  opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) {
+    logs->Print(stream, line, from);
+  };
   return opt;
 }
 
@@ -239,18 +241,23 @@ StepStatus StepUntilDone(ActiveRun& run) {
 void CloseStreams(ActiveRun& run) {
   std::string error;
   if (run.args.record_every > 0) {
-    if (run.recorder.Finish(*run.world, &error)) run.info.outputs.push_back(kRecordingFile);
-    else run.info.output_errors.push_back(error);
+    if (run.recorder.Finish(*run.world, &error))
+      run.info.outputs.push_back(kRecordingFile);
+    else
+      run.info.output_errors.push_back(error);
   }
   if (run.memory_log.IsOpen()) {
-    if (run.memory_log.Close(&error)) run.info.outputs.push_back(kMemoryLogFile);
-    else run.info.output_errors.push_back(error);
+    if (run.memory_log.Close(&error))
+      run.info.outputs.push_back(kMemoryLogFile);
+    else
+      run.info.output_errors.push_back(error);
   }
 }
 
 int ExitCode(const ActiveRun& run, StepStatus status) {
   const World& world = *run.world;
-  if (run.info.status == "interrupted") return 128 + (run.session.signals.Caught() ? run.session.signals.Caught() : SIGINT);
+  if (run.info.status == "interrupted")
+    return 128 + (run.session.signals.Caught() ? run.session.signals.Caught() : SIGINT);
   if (status == StepStatus::Failed || run.info.status == "failed") return kExitRunFailed;
   if (run.args.strict && (!world.controller_errors.empty() || !world.unread_params.empty())) return kExitRunFailed;
   return kExitOk;
@@ -384,11 +391,14 @@ CommandMain AddRunCommand(CLI::App& app) {
                   "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
       ->type_name("N")
       ->check(IntegerIn(1, kMaxTicks));
-  sub->footer("Example:\n  essaim run arenas/foraging.argos --ticks 600 --seed 7 --record --set controllers.foraging.params.EPSILONGREED=0.3");
+  sub->footer(
+      "Example:\n  essaim run arenas/foraging.argos --ticks 600 --seed 7 --record --set "
+      "controllers.foraging.params.EPSILONGREED=0.3");
   return [r, sub, budget] {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
     r->record_every = 0;
-    if (sub->count("--record") > 0) r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
+    if (sub->count("--record") > 0)
+      r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
     RunSession session;
     if (r->watch) return WatchAndRun(session, *r);
     std::vector<std::string> inputs;
@@ -397,4 +407,3 @@ CommandMain AddRunCommand(CLI::App& app) {
 }
 
 }  // namespace essaim
-

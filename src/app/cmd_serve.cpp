@@ -25,9 +25,7 @@ struct ServeArgs {
   std::optional<long long> seed;
 };
 
-bool IsLoopback(const std::string& host) {
-  return host == "127.0.0.1" || host == "localhost" || host == "::1";
-}
+bool IsLoopback(const std::string& host) { return host == "127.0.0.1" || host == "localhost" || host == "::1"; }
 
 int Serve(ServeArgs& a) {
   std::string error;
@@ -80,7 +78,9 @@ CommandMain AddServeCommand(CLI::App& app) {
   sub->add_option("--token", a->serve.token, "the access token (default: a fresh random one each start)")
       ->type_name("T")
       ->check(CLI::Validator(
-          [](std::string& v) { return v.size() >= 8 ? std::string() : std::string("a token needs 8 characters or more"); },
+          [](std::string& v) {
+            return v.size() >= 8 ? std::string() : std::string("a token needs 8 characters or more");
+          },
           ""));
   sub->add_option("--seed", a->seed, "random seed, >= 0 (overrides random_seed)")
       ->type_name("S")
@@ -88,8 +88,11 @@ CommandMain AddServeCommand(CLI::App& app) {
   sub->add_option("--set", a->serve.load.overrides, "override an XML attribute (repeatable)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
-  sub->add_option("--set-file", a->set_file, "a JSON object {\"PATH\": value, ...} of overrides")->type_name("FILE.json");
-  sub->footer("Example:\n  essaim serve arenas/foraging.argos     # then open the printed http://127.0.0.1:8765/?token=... line; Ctrl-C ends");
+  sub->add_option("--set-file", a->set_file, "a JSON object {\"PATH\": value, ...} of overrides")
+      ->type_name("FILE.json");
+  sub->footer(
+      "Example:\n  essaim serve arenas/foraging.argos     # then open the printed http://127.0.0.1:8765/?token=... "
+      "line; Ctrl-C ends");
   return [a] { return Serve(*a); };
 }
 

@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "app/cli_support.h"
-
 #include "app/commands.h"
 #include "core/paths.h"
 #include "core/strings.h"
@@ -55,7 +54,8 @@ static int Snapshot(SnapshotArgs s) {
   }
   size_t frame = rec.FrameAtOrBefore(tick);
   uint64_t shown = rec.Tick(frame);
-  if (s.out.empty()) s.out = JoinPath(path == s.run ? DirName(s.run) : s.run, "snapshot-" + std::to_string(shown) + ".png");
+  if (s.out.empty())
+    s.out = JoinPath(path == s.run ? DirName(s.run) : s.run, "snapshot-" + std::to_string(shown) + ".png");
   if (!CheckOutputFile(s.out, &error)) {  // before drawing: a wrong target is bad input
     std::fprintf(stderr, "essaim snapshot: %s\n", error.c_str());
     return kExitBadInput;
@@ -94,8 +94,9 @@ CommandMain AddSnapshotCommand(CLI::App& app) {
       ->check(IntegerIn(16, 8192))
       ->capture_default_str();
   sub->add_flag("--no-labels", s->no_labels, "leave out the tick (top left) and the robots' ids");
-  sub->footer("Example: (runs/foraging-7 is the recording made by the example of essaim run --help)\n"
-              "  essaim snapshot runs/foraging-7 --tick 500 --trail 100 -o tick500.png");
+  sub->footer(
+      "Example: (runs/foraging-7 is the recording made by the example of essaim run --help)\n"
+      "  essaim snapshot runs/foraging-7 --tick 500 --trail 100 -o tick500.png");
   return [s] { return Snapshot(*s); };
 }
 

@@ -26,14 +26,19 @@ std::string BashCompletion(const CLI::App& app) {
          "_essaim() {\n"
          "  local cur=${COMP_WORDS[COMP_CWORD]} opts\n"
          "  if ((COMP_CWORD == 1)); then\n"
-         "    COMPREPLY=($(compgen -W \"" + top + "\" -- \"$cur\"))\n"
+         "    COMPREPLY=($(compgen -W \"" +
+         top +
+         "\" -- \"$cur\"))\n"
          "    return\n"
          "  fi\n"
          "  if [[ ${COMP_WORDS[1]} == help ]]; then\n"
-         "    COMPREPLY=($(compgen -W \"" + Joined(commands) + "\" -- \"$cur\"))\n"
+         "    COMPREPLY=($(compgen -W \"" +
+         Joined(commands) +
+         "\" -- \"$cur\"))\n"
          "    return\n"
          "  fi\n"
-         "  case ${COMP_WORDS[1]} in\n" + cases +
+         "  case ${COMP_WORDS[1]} in\n" +
+         cases +
          "    *) opts=\"\" ;;\n"
          "  esac\n"
          "  if [[ $cur == -* ]]; then\n"

@@ -1,12 +1,12 @@
 #include "app/log_printer.h"
 
-#include <cctype>
-#include <cerrno>
-#include <cstring>
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
 
 #include "app/commands.h"
 #include "core/paths.h"
@@ -56,8 +56,8 @@ bool LogPrinter::Prepare(std::string* error) {
 }
 
 std::string LogPrinter::Prefix(const LogOrigin& from) const {
-  std::string who = from.robot >= 0 && static_cast<size_t>(from.robot) < robot_ids_.size() ? robot_ids_[from.robot]
-                                                                                           : "loop";
+  std::string who =
+      from.robot >= 0 && static_cast<size_t>(from.robot) < robot_ids_.size() ? robot_ids_[from.robot] : "loop";
   return "[t=" + std::to_string(from.tick) + " " + who + "] ";
 }
 
@@ -87,7 +87,8 @@ bool LogPrinter::WriteOut(size_t slot, std::string* error) {
   const std::string path = PathOf(slot);
   // The first write replaces an old file: a run's folder holds only its own logs. Opened
   // without blocking and checked: a FIFO made there during the run is refused, not waited on.
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC | (started_[slot] ? O_APPEND : O_TRUNC), 0644);
+  const int fd =
+      ::open(path.c_str(), O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC | (started_[slot] ? O_APPEND : O_TRUNC), 0644);
   struct stat st;
   if (fd >= 0 && (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))) {
     ::close(fd);

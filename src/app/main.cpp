@@ -114,12 +114,11 @@ int main(int argc, char** argv) {
   CLI::App app("essaim " ESSAIM_VERSION " - headless swarm simulator for ARGoS foot-bot experiments", "essaim");
   app.set_version_flag("--version", "essaim " ESSAIM_VERSION);
   app.footer(kFooter);
-  app.allow_extras();  // unknown commands and options are answered below, with suggestions
+  app.allow_extras();            // unknown commands and options are answered below, with suggestions
   app.require_subcommand(0, 1);  // `essaim help run`: "run" is help's topic, not a second command
   std::map<std::string, essaim::CommandMain> commands;
-  for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand,
-                   essaim::AddBenchCommand, essaim::AddReplayCommand, essaim::AddSnapshotCommand,
-                   essaim::AddServeCommand}) {
+  for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand, essaim::AddBenchCommand,
+                   essaim::AddReplayCommand, essaim::AddSnapshotCommand, essaim::AddServeCommand}) {
     size_t before = app.get_subcommands([](const CLI::App*) { return true; }).size();
     essaim::CommandMain fn = add(app);
     CLI::App* sub = app.get_subcommands([](const CLI::App*) { return true; })[before];

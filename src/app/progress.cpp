@@ -6,9 +6,7 @@
 namespace essaim {
 
 namespace {
-double Now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double Now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 }  // namespace
 
 Progress::Progress(bool enabled, unsigned long long total, size_t robots)

@@ -64,8 +64,10 @@ void DrawObstacle(cairo_t* cr, const RecordedObstacle& o, const Pose2& pose, Col
   cairo_save(cr);
   cairo_translate(cr, pose.x, pose.y);
   cairo_rotate(cr, pose.yaw);
-  if (o.cylinder) cairo_arc(cr, 0, 0, o.radius, 0, kTwoPi);
-  else cairo_rectangle(cr, -o.size_x / 2, -o.size_y / 2, o.size_x, o.size_y);
+  if (o.cylinder)
+    cairo_arc(cr, 0, 0, o.radius, 0, kTwoPi);
+  else
+    cairo_rectangle(cr, -o.size_x / 2, -o.size_y / 2, o.size_x, o.size_y);
   SetRgb(cr, o.movable ? kMovable : kStatic);
   cairo_fill_preserve(cr);
   SetRgb(cr, kOutline, 0.6);
@@ -96,9 +98,12 @@ void DrawTrails(cairo_t* cr, const Recording& rec, size_t frame, int trail_ticks
       cairo_line_to(cr, r.x, r.y);
     }
     RecordedRobot cur = rec.Robot(frame, i);
-    if (!cur.alive) SetRgb(cr, kDead, 0.5);
-    else if (cur.color.IsBlack()) SetRgb(cr, kTrailUnlit, 0.55);
-    else SetColor(cr, cur.color, 0.7);
+    if (!cur.alive)
+      SetRgb(cr, kDead, 0.5);
+    else if (cur.color.IsBlack())
+      SetRgb(cr, kTrailUnlit, 0.55);
+    else
+      SetColor(cr, cur.color, 0.7);
     cairo_stroke(cr);
   }
 }
@@ -106,9 +111,12 @@ void DrawTrails(cairo_t* cr, const Recording& rec, size_t frame, int trail_ticks
 void DrawRobot(cairo_t* cr, const RecordedRobot& r, double radius, double px) {
   cairo_new_path(cr);
   cairo_arc(cr, r.x, r.y, radius, 0, kTwoPi);
-  if (!r.alive) SetRgb(cr, kDead, 0.75);
-  else if (r.color.IsBlack()) SetRgb(cr, kBody);
-  else SetColor(cr, r.color);
+  if (!r.alive)
+    SetRgb(cr, kDead, 0.75);
+  else if (r.color.IsBlack())
+    SetRgb(cr, kBody);
+  else
+    SetColor(cr, r.color);
   cairo_fill_preserve(cr);
   SetRgb(cr, kOutline);
   cairo_set_line_width(cr, std::max(px, radius * 0.08));

@@ -9,9 +9,9 @@
 namespace essaim {
 
 struct SnapshotOptions {
-  int size = 1024;       // px of the image's longer side; the arena fills the image
-  int trail_ticks = 0;   // draw each robot's path over the last N ticks (0: none)
-  bool labels = false;   // the tick (top left) and each robot's id beside it
+  int size = 1024;      // px of the image's longer side; the arena fills the image
+  int trail_ticks = 0;  // draw each robot's path over the last N ticks (0: none)
+  bool labels = false;  // the tick (top left) and each robot's id beside it
 };
 
 /// Image size for an arena: the longer side is `size` px, the other keeps the aspect ratio.

@@ -21,7 +21,8 @@ void AddExperimentOptions(CLI::App* sub, RunArgs* r) {
   sub->add_option("--threads", r->threads, "threads for sense + control, 1 to 1024 (overrides <system threads>)")
       ->type_name("N")
       ->check(IntegerIn(1, kMaxThreads, "1 runs everything on the main thread"));
-  sub->add_option("--set", r->load.overrides, "override an XML attribute (repeatable), e.g. controllers.ctrl.params.speed=20")
+  sub->add_option("--set", r->load.overrides,
+                  "override an XML attribute (repeatable), e.g. controllers.ctrl.params.speed=20")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
   sub->add_option("--set-file", r->set_file,

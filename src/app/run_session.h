@@ -49,8 +49,7 @@ class RunSession {
 /// Begin()..End() of one run, as a scope: declared before the world, so it ends after it.
 class SessionRun {
  public:
-  SessionRun(RunSession& session, const std::string& out, const RunArgs& args, const Model& model)
-      : session_(session) {
+  SessionRun(RunSession& session, const std::string& out, const RunArgs& args, const Model& model) : session_(session) {
     session_.Begin(out, args, model);
   }
   ~SessionRun() { session_.End(); }

@@ -17,13 +17,16 @@ bool Flatten(const Json& object, const std::string& prefix, const std::string& p
       if (!Flatten(value, name, path, overrides, error)) return false;
       continue;
     }
-    if (value.is_string()) text_value = value.get<std::string>();
-    else if (value.is_boolean()) text_value = value.get<bool>() ? "true" : "false";
-    else if (value.is_number_integer()) text_value = value.dump();
-    else if (value.is_number_float()) text_value = FormatDouble(value.get<double>());
+    if (value.is_string())
+      text_value = value.get<std::string>();
+    else if (value.is_boolean())
+      text_value = value.get<bool>() ? "true" : "false";
+    else if (value.is_number_integer())
+      text_value = value.dump();
+    else if (value.is_number_float())
+      text_value = FormatDouble(value.get<double>());
     else {
-      *error = path + ": \"" + name + "\": the value must be a string, a number or a boolean, not " +
-               value.type_name();
+      *error = path + ": \"" + name + "\": the value must be a string, a number or a boolean, not " + value.type_name();
       return false;
     }
     overrides->push_back(name + "=" + text_value);

@@ -6,7 +6,8 @@
 namespace essaim {
 
 /// Reads {"PATH": value, ...} (values: strings, numbers, booleans; a nested object adds path
-/// segments) into "PATH=VALUE" overrides, in the file's order. False with a message naming the file (and line, or key) otherwise.
+/// segments) into "PATH=VALUE" overrides, in the file's order. False with a message naming the file (and line, or key)
+/// otherwise.
 bool ReadOverridesFile(const std::string& path, std::vector<std::string>* overrides, std::string* error);
 
 }  // namespace essaim

@@ -30,8 +30,10 @@ std::string ScriptSafe(const std::string& text) {
   std::string out;
   out.reserve(text.size());
   for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out += "<\\";
-    else out += text[i];
+    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/')
+      out += "<\\";
+    else
+      out += text[i];
   }
   return out;
 }

@@ -8,8 +8,8 @@ namespace essaim {
 
 struct InputError {
   std::string file;
-  int line = 0;            // 0 when unknown
-  std::string element;     // XML element tag, or empty
+  int line = 0;         // 0 when unknown
+  std::string element;  // XML element tag, or empty
   std::string message;
 };
 

@@ -14,7 +14,9 @@ class Fnv1a64 {
     for (size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
   }
   template <class T>
-  void AddValue(const T& v) { Add(&v, sizeof v); }
+  void AddValue(const T& v) {
+    Add(&v, sizeof v);
+  }
   uint64_t Value() const { return h_; }
   std::string Hex() const;
 

@@ -38,8 +38,8 @@ std::vector<InputFile> InputFiles::List() const {
   return list;
 }
 
-std::string InputFiles::Identity(const std::string& version, const std::vector<std::string>& overrides,
-                                 uint64_t ticks, uint64_t seed) const {
+std::string InputFiles::Identity(const std::string& version, const std::vector<std::string>& overrides, uint64_t ticks,
+                                 uint64_t seed) const {
   // Each field ends with a NUL, so that no two different lists give the same bytes.
   Fnv1a64 h;
   auto add = [&h](const std::string& s) { h.Add(s.c_str(), s.size() + 1); };

@@ -12,11 +12,16 @@ std::string DumpJsonLine(const Json& doc) {
 
 Json ToJson(const Value& value) {
   switch (value.kind) {
-    case Value::Kind::Null: return Json();
-    case Value::Kind::Bool: return Json(value.boolean);
-    case Value::Kind::Integer: return Json(value.integer);
-    case Value::Kind::Number: return Json(value.number);
-    case Value::Kind::String: return Json(value.text);
+    case Value::Kind::Null:
+      return Json();
+    case Value::Kind::Bool:
+      return Json(value.boolean);
+    case Value::Kind::Integer:
+      return Json(value.integer);
+    case Value::Kind::Number:
+      return Json(value.number);
+    case Value::Kind::String:
+      return Json(value.text);
     case Value::Kind::List: {
       Json out = Json::array();
       for (const Value& item : value.list) out.push_back(ToJson(item));

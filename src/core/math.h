@@ -15,8 +15,10 @@ constexpr double kTwoPi = 2.0 * kPi;
 inline double WrapSigned(double a) {
   if (a > kPi || a < -kPi) {
     a = std::fmod(a, kTwoPi);
-    if (a > kPi) a -= kTwoPi;
-    else if (a < -kPi) a += kTwoPi;
+    if (a > kPi)
+      a -= kTwoPi;
+    else if (a < -kPi)
+      a += kTwoPi;
   }
   return a;
 }

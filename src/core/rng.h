@@ -9,13 +9,13 @@ namespace essaim {
 
 /// What a stream is used for; part of its seed so streams never alias.
 enum class StreamKind : uint32_t {
-  Simulator = 1,       // <distribute> placement
-  Controller = 2,      // robot.random
-  SensorNoise = 3,     // noise of one robot's sensors
-  ActuatorNoise = 4,   // noise of one robot's actuators
-  LuaMath = 5,         // seed of Lua's own math.random
-  LoopFunctions = 6,   // experiment.random
-  Medium = 7,          // media decisions not owned by one robot
+  Simulator = 1,      // <distribute> placement
+  Controller = 2,     // robot.random
+  SensorNoise = 3,    // noise of one robot's sensors
+  ActuatorNoise = 4,  // noise of one robot's actuators
+  LuaMath = 5,        // seed of Lua's own math.random
+  LoopFunctions = 6,  // experiment.random
+  Medium = 7,         // media decisions not owned by one robot
 };
 
 /// Seed of stream (kind, index) of an experiment: a SplitMix64 mix, so a robot's streams

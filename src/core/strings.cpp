@@ -104,7 +104,8 @@ size_t EditDistance(const std::string& a, const std::string& b) {
   for (size_t i = 1; i <= a.size(); ++i)
     for (size_t j = 1; j <= b.size(); ++j) {
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[a.size()][b.size()];
 }
@@ -114,7 +115,7 @@ std::string WithoutDashes(const std::string& s) { return s.substr(std::min(s.fin
 
 std::string ClosestName(const std::string& typed, const std::vector<std::string>& candidates) {
   std::string core = WithoutDashes(typed), best;
-  if (core.size() < 3) return best;  // "-q" is one letter from every short option
+  if (core.size() < 3) return best;                          // "-q" is one letter from every short option
   size_t best_d = std::max<size_t>(1, core.size() / 3) + 1;  // farther than this is no suggestion
   for (const std::string& c : candidates) {
     size_t d = EditDistance(core, WithoutDashes(c));

@@ -29,12 +29,17 @@ void DischargeBattery(const BatteryDef& def, RobotState& robot, const Pose2& pos
   b.last_yaw = pose.yaw;
   double delta = 0;
   switch (def.model) {
-    case DischargeModel::Time: delta = def.delta; break;
-    case DischargeModel::Motion: delta = def.pos_delta * moved + def.orient_delta * turned; break;
+    case DischargeModel::Time:
+      delta = def.delta;
+      break;
+    case DischargeModel::Motion:
+      delta = def.pos_delta * moved + def.orient_delta * turned;
+      break;
     case DischargeModel::TimeMotion:
       delta = def.time_factor + def.pos_factor * moved + def.orient_factor * turned;
       break;
-    case DischargeModel::None: break;
+    case DischargeModel::None:
+      break;
   }
   b.charge = std::max(0.0, b.charge - delta);
 }
@@ -44,9 +49,12 @@ void SenseBattery(const DeviceConfig& cfg, const BatteryDef& def, RobotState& ro
   const NoiseRange& n = cfg.params.charge_noise;
   if (n.On()) reading = std::clamp(reading + robot.sensor_rng.Uniform(n.lo, n.hi), 0.0, 1.0);
   double old = robot.battery.last_reading;
-  if (robot.battery.charge <= 0) robot.rd.battery_time_left = 0;
-  else if (old - reading > 1e-6) robot.rd.battery_time_left = old * dt / (old - reading);
-  else robot.rd.battery_time_left = std::numeric_limits<double>::infinity();
+  if (robot.battery.charge <= 0)
+    robot.rd.battery_time_left = 0;
+  else if (old - reading > 1e-6)
+    robot.rd.battery_time_left = old * dt / (old - reading);
+  else
+    robot.rd.battery_time_left = std::numeric_limits<double>::infinity();
   robot.rd.battery_charge = reading;
   robot.battery.last_reading = reading;
 }

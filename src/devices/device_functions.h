@@ -33,10 +33,10 @@ using SenseFn = void (*)(const SenseContext&, const DeviceConfig&, const RobotDe
 
 struct DeviceFunctions {
   DeviceType type;
-  InitFn init;          // buffers, drawn biases, readings visible in init(); nullptr: none
-  ActPhase act_phase;   // actuators only
-  ActFn act;            // actuators: apply the commands the controller set last tick
-  SenseFn sense;        // sensors: fill the robot's Readings
+  InitFn init;         // buffers, drawn biases, readings visible in init(); nullptr: none
+  ActPhase act_phase;  // actuators only
+  ActFn act;           // actuators: apply the commands the controller set last tick
+  SenseFn sense;       // sensors: fill the robot's Readings
 };
 
 const DeviceFunctions& FunctionsOf(DeviceType type);

@@ -33,8 +33,8 @@ void ActRobotOwnState(const Model& model, const RobotDef& def, RobotState& robot
 /// running all of part one first gives what one ordered pass per robot gives.
 void ActRobotJoints(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
 /// After physics: per-robot component updates (battery discharge, scanner rotation).
-void UpdateRobotComponents(const Model& model, const RobotDef& def, RobotState& robot,
-                           const PhysicsWorld& physics, uint64_t tick);
+void UpdateRobotComponents(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics,
+                           uint64_t tick);
 /// Sense stage for one robot: every sensor, alphabetical tag order. Writes only `robot`.
 void SenseRobot(const SenseContext& ctx, const RobotDef& def, RobotState& robot);
 
@@ -48,7 +48,7 @@ void DischargeBattery(const BatteryDef& def, RobotState& robot, const Pose2& pos
 void SenseBattery(const DeviceConfig& cfg, const BatteryDef& def, RobotState& robot, double dt);
 
 // ---- ray and ground sensors (proximity.cpp, distance_scanner.cpp, light.cpp, ground.cpp)
-constexpr int kRingSensorCount = 24;   // proximity and light rings
+constexpr int kRingSensorCount = 24;  // proximity and light rings
 constexpr int kBaseGroundCount = 8;
 constexpr int kMotorGroundCount = 4;
 /// Angle of ring sensor k (0..23), robot frame: 7.5° + 15°·k, signed-normalized (rad).
@@ -69,7 +69,8 @@ bool LightOccluded(const Model& model, const PhysicsWorld& physics, int self, co
 void SenseLight(const DeviceConfig& cfg, const Model& model, const RobotDef& def, RobotState& robot,
                 const PhysicsWorld& physics);
 void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
-void SenseMotorGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor);
+void SenseMotorGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics,
+                      const FloorRaster& floor);
 // ---- gripper and turret (gripper.cpp, turret.cpp)
 /// Locked: grips what touches the gripper disc (if holding nothing); unlocked: releases.
 void ActGripper(RobotState& robot, PhysicsWorld& physics);

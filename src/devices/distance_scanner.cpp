@@ -14,11 +14,11 @@
 namespace essaim {
 
 namespace {
-constexpr double kShortLength = 0.26;   // m, ray length from the body surface
+constexpr double kShortLength = 0.26;  // m, ray length from the body surface
 constexpr double kLongLength = 1.42;
-constexpr double kShortMin = 0.0;       // m: at or below reads -1
+constexpr double kShortMin = 0.0;  // m: at or below reads -1
 constexpr double kLongMin = 0.12;
-constexpr int kSweepRays = 6;           // rays per sensor per tick in speed mode
+constexpr int kSweepRays = 6;  // rays per sensor per tick in speed mode
 
 /// Inserts (angle, distance) into a sorted array of `*count` readings; an equal angle
 /// overwrites (map semantics). Shifts while it scans (a sweep mostly appends); writes at most
@@ -48,17 +48,22 @@ double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const
 /// Sensor k's angle on the platform at rotation `theta` (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
 double SensorAngle(double theta, int k) {
   double a = theta;
-  if (k == 1) a = theta + kPi / 2;
-  else if (k == 2) a = theta + kPi;
-  else if (k == 3) a = theta - kPi / 2;
+  if (k == 1)
+    a = theta + kPi / 2;
+  else if (k == 2)
+    a = theta + kPi;
+  else if (k == 3)
+    a = theta - kPi / 2;
   // WrapSigned's result without its fmod in the common case: for π < a < 2π, fmod(a, 2π) is a.
   if (a > kPi && a < kTwoPi) return a - kTwoPi;
   return WrapSigned(a);
 }
 
 void Insert(Readings& rd, int k, double angle, double d) {
-  if (k % 2 == 0) Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
-  else Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
+  if (k % 2 == 0)
+    Insert(rd.scanner_short, &rd.scanner_short_count, angle, d);
+  else
+    Insert(rd.scanner_long, &rd.scanner_long_count, angle, d);
 }
 
 /// The four sensors at platform angle `theta`.

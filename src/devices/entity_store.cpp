@@ -11,7 +11,9 @@ namespace essaim {
 namespace {
 constexpr const char* kKindNames[] = {"foot-bot", "box", "cylinder", "light"};
 
-EntityKind ObstacleKind(const ObstacleDef& o) { return o.kind == ShapeKind::Box ? EntityKind::Box : EntityKind::Cylinder; }
+EntityKind ObstacleKind(const ObstacleDef& o) {
+  return o.kind == ShapeKind::Box ? EntityKind::Box : EntityKind::Cylinder;
+}
 }  // namespace
 
 const char* EntityKindName(EntityKind kind) { return kKindNames[static_cast<int>(kind)]; }
@@ -45,9 +47,12 @@ void EntityStore::Init(Model* scene, PhysicsWorld* physics, std::vector<RobotSta
 
 int EntityStore::IndexOf(const EntityRef& e) const {
   switch (e.kind) {
-    case EntityKind::FootBot: return e.serial < scene_->robots.size() ? static_cast<int>(e.serial) : -1;
-    case EntityKind::Light: return e.serial < light_index_.size() ? light_index_[e.serial] : -1;
-    default: return e.serial < obstacle_index_.size() ? obstacle_index_[e.serial] : -1;
+    case EntityKind::FootBot:
+      return e.serial < scene_->robots.size() ? static_cast<int>(e.serial) : -1;
+    case EntityKind::Light:
+      return e.serial < light_index_.size() ? light_index_[e.serial] : -1;
+    default:
+      return e.serial < obstacle_index_.size() ? obstacle_index_[e.serial] : -1;
   }
 }
 
@@ -123,9 +128,7 @@ const std::string& EntityStore::IdOf(const EntityRef& e) const {
   return scene_->obstacles[i].id;
 }
 
-size_t EntityStore::Count() const {
-  return scene_->robots.size() + scene_->obstacles.size() + scene_->lights.size();
-}
+size_t EntityStore::Count() const { return scene_->robots.size() + scene_->obstacles.size() + scene_->lights.size(); }
 
 namespace {
 bool IsObstacle(const EntityRef& e) { return e.kind == EntityKind::Box || e.kind == EntityKind::Cylinder; }
@@ -174,8 +177,10 @@ void EntityStore::SetLed(const EntityRef& e, int index, int k, const Color& colo
   const int count = LedCount(e, index);
   for (int j = 0; j < count; ++j) {
     if (k >= 0 && j != k) continue;
-    if (e.kind == EntityKind::FootBot) (*robots_)[index].leds[j] = color;
-    else scene_->obstacles[index].leds[j].color = color;
+    if (e.kind == EntityKind::FootBot)
+      (*robots_)[index].leds[j] = color;
+    else
+      scene_->obstacles[index].leds[j].color = color;
   }
   MarkChanged(false);  // cameras see it from the next sense
 }

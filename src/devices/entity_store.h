@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "model/model.h"
 #include "devices/robot_state.h"
+#include "model/model.h"
 #include "physics/physics_world.h"
 
 namespace essaim {

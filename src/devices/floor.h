@@ -11,9 +11,9 @@ namespace essaim {
 
 struct FloorRaster {
   int width = 0, height = 0;
-  std::vector<Color> pixels;   // bottom row first
-  Vec2 min = Vec2::Zero();     // arena min corner (m)
-  Vec2 size = Vec2::Ones();    // arena size (m)
+  std::vector<Color> pixels;  // bottom row first
+  Vec2 min = Vec2::Zero();    // arena min corner (m)
+  Vec2 size = Vec2::Ones();   // arena size (m)
 
   bool Empty() const { return pixels.empty(); }
   /// Colour under (x, y). Outside the arena reads the nearest edge pixel (ARGoS aborts the

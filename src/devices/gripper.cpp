@@ -15,8 +15,10 @@ void ActGripper(RobotState& robot, PhysicsWorld& physics) {
   // ARGoS: lock state = |aperture| / (pi/2), locked above one half; Lua only offers
   // +-pi/2 and 0, so this is "aperture != 0".
   const bool locked = std::fabs(robot.gripper_aperture) / (kPi / 2) > 0.5;
-  if (locked) physics.TryGrip(robot.index, robot.turret_rotation);  // no-op while holding
-  else physics.Release(robot.index);
+  if (locked)
+    physics.TryGrip(robot.index, robot.turret_rotation);  // no-op while holding
+  else
+    physics.Release(robot.index);
 }
 
 }  // namespace essaim

@@ -12,11 +12,13 @@ namespace essaim {
 // Offsets in cm, robot frame (x forward, y left), as ARGoS stores and shows them; the
 // sensor point is robot position + 0.01 · (offset rotated by the yaw).
 const double kBaseGroundOffsets[kBaseGroundCount][2] = {
-    {8.0, 0.0},   {4.2, 6.5},   {0.0, 8.0},  {-4.2, 6.5},
-    {-8.0, 0.0},  {-4.2, -6.5}, {0.0, -8.0}, {4.2, -6.5},
+    {8.0, 0.0}, {4.2, 6.5}, {0.0, 8.0}, {-4.2, 6.5}, {-8.0, 0.0}, {-4.2, -6.5}, {0.0, -8.0}, {4.2, -6.5},
 };
 const double kMotorGroundOffsets[kMotorGroundCount][2] = {
-    {6.3, 1.16}, {-6.3, 1.16}, {-6.3, -1.16}, {6.3, -1.16},
+    {6.3, 1.16},
+    {-6.3, 1.16},
+    {-6.3, -1.16},
+    {6.3, -1.16},
 };
 
 namespace {
@@ -35,7 +37,8 @@ void Sample(const double (&offsets)[N][2], const DeviceConfig& cfg, RobotState& 
 }
 }  // namespace
 
-void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics, const FloorRaster& floor) {
+void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics,
+                     const FloorRaster& floor) {
   Sample(kBaseGroundOffsets, cfg, robot, physics, floor, true, robot.rd.base_ground);
 }
 

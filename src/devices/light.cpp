@@ -17,9 +17,9 @@
 namespace essaim {
 
 namespace {
-constexpr double kMaxDistance = 2.5;   // intensity-scaled m; beyond reads 0
-constexpr int kSpread = 6;             // sensors each side of the nearest one
-constexpr int kMaxWalk = 32;           // shapes passed over before giving up (= occluded)
+constexpr double kMaxDistance = 2.5;  // intensity-scaled m; beyond reads 0
+constexpr int kSpread = 6;            // sensors each side of the nearest one
+constexpr int kMaxWalk = 32;          // shapes passed over before giving up (= occluded)
 
 /// Vertical extent of what a ray hit.
 void HitExtent(const Model& model, const RayHit& hit, double* bottom, double* top) {

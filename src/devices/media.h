@@ -15,11 +15,11 @@ namespace essaim {
 
 /// A lit LED of the current tick (robot ring/beacon, box or cylinder LED, <light>).
 struct LitLed {
-  Vec3 pos = Vec3::Zero();         // m, world
+  Vec3 pos = Vec3::Zero();  // m, world
   Color color;
-  int robot = -1;                  // carrier robot, else -1
-  int obstacle = -1;               // carrier box/cylinder, else -1
-  int medium = 0;                  // index into Model::led_media
+  int robot = -1;     // carrier robot, else -1
+  int obstacle = -1;  // carrier box/cylinder, else -1
+  int medium = 0;     // index into Model::led_media
 };
 
 struct Media {
@@ -28,22 +28,22 @@ struct Media {
   std::vector<std::vector<int>> rab_inbox;
   // ---- occluders this tick, for RAB and cameras: exact circle/box tests that decide what
   // one Box2D ray would (PhysicsWorld::CastRay), without walking Box2D's tree per ray.
-  std::vector<Vec2> body_xy;       // every robot body (dead ones too)
-  std::vector<Vec2> obstacle_xy;   // every box/cylinder centre
-  std::vector<Vec2> obstacle_cs;   // cos, sin of its yaw
+  std::vector<Vec2> body_xy;            // every robot body (dead ones too)
+  std::vector<Vec2> obstacle_xy;        // every box/cylinder centre
+  std::vector<Vec2> obstacle_cs;        // cos, sin of its yaw
   std::vector<double> obstacle_radius;  // bounding circle (m)
   /// Bounding box of each footprint this tick, widened far beyond rounding: a segment whose
   /// box misses it cannot enter the obstacle (skips the exact test, same answer).
   std::vector<Vec2> obstacle_lo, obstacle_hi;
-  std::vector<double> obstacle_top;     // m
+  std::vector<double> obstacle_top;  // m
   // ---- range and bearing
-  std::vector<int> rab_medium;     // per robot: index into Model::rab_media; -1 no sensor
-  std::vector<char> rab_member;    // this tick: in a medium and alive
-  std::vector<Vec3> rab_pos;       // device position this tick (m)
-  std::vector<double> rab_yaw;     // heading this tick (rad)
-  int rab_devices = 0;             // robots with a RAB sensor in a medium
-  double rab_max_range = 0;        // m, largest rab_range of a member
-  UniformGrid rab_grid;            // bodies, cell = reach + body radius
+  std::vector<int> rab_medium;   // per robot: index into Model::rab_media; -1 no sensor
+  std::vector<char> rab_member;  // this tick: in a medium and alive
+  std::vector<Vec3> rab_pos;     // device position this tick (m)
+  std::vector<double> rab_yaw;   // heading this tick (rad)
+  int rab_devices = 0;           // robots with a RAB sensor in a medium
+  double rab_max_range = 0;      // m, largest rab_range of a member
+  UniformGrid rab_grid;          // bodies, cell = reach + body radius
   /// Obstacles by bounding box, in every cell it overlaps; cells of about a quarter of the
   /// reach, so that a pair's segment visits few cells and each lists few obstacles.
   UniformGrid rab_obstacle_grid;
@@ -52,13 +52,13 @@ struct Media {
   /// b << 2 | (a hears b) | (b hears a) << 1; merged into rab_inbox in ascending a.
   std::vector<std::vector<int>> rab_partners;
   // ---- LEDs and cameras
-  std::vector<int> led_medium;     // per robot: its leds actuator's medium, -1 none
-  std::vector<int> camera_medium;  // per robot: its camera's medium, -1 none
+  std::vector<int> led_medium;           // per robot: its leds actuator's medium, -1 none
+  std::vector<int> camera_medium;        // per robot: its camera's medium, -1 none
   std::vector<int> obstacle_led_medium;  // per obstacle, -1 none
-  std::vector<int> light_medium;   // per <light>
+  std::vector<int> light_medium;         // per <light>
   bool any_camera = false;
-  double camera_half_range = 0;    // m, largest z_cam·tan(aperture) of a camera robot
-  std::vector<LitLed> leds;        // lit LEDs this tick; their order is the blobs' order
+  double camera_half_range = 0;  // m, largest z_cam·tan(aperture) of a camera robot
+  std::vector<LitLed> leds;      // lit LEDs this tick; their order is the blobs' order
   UniformGrid led_grid;
   UniformGrid camera_body_grid;      // bodies, cells of about a camera's half range
   UniformGrid camera_obstacle_grid;  // obstacles, in every cell they overlap

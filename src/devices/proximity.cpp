@@ -11,8 +11,8 @@
 namespace essaim {
 
 namespace {
-constexpr double kRange = 0.1;                 // m, ray length
-constexpr double kSaturation = 0.009889556;    // m: closer reads 1
+constexpr double kRange = 0.1;               // m, ray length
+constexpr double kSaturation = 0.009889556;  // m: closer reads 1
 constexpr double kNumerator = 0.0100527;
 constexpr double kOffset = 0.000163144;
 

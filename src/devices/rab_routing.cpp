@@ -24,20 +24,20 @@ constexpr double kBodyRadius2 = footbot::kRadius * footbot::kRadius;  // m²
 /// What one device's pairs share: its place, what occludes, how occluders are bucketed.
 struct Device {
   int index;
-  Vec3 pos;                // m, the device
-  Vec2 xy;                 // m, its planar position
-  bool occlusions;         // its medium checks them
-  bool bodies_occlude;     // robot bodies reach its height (as CastRay)
-  double per_bucket;       // occluder buckets per m² of tangent2
-  bool probe;              // a crowd: pairs test their sector's blocker first
+  Vec3 pos;             // m, the device
+  Vec2 xy;              // m, its planar position
+  bool occlusions;      // its medium checks them
+  bool bodies_occlude;  // robot bodies reach its height (as CastRay)
+  double per_bucket;    // occluder buckets per m² of tangent2
+  bool probe;           // a crowd: pairs test their sector's blocker first
 };
 
 /// One pair: the segment from device a to partner b and where b's circle starts on it.
 struct Pair {
   int partner;
   Vec2 from, to;
-  double dx, dy, dd;       // to - from and its squared length
-  double t_partner;        // fraction where the partner's circle is entered
+  double dx, dy, dd;  // to - from and its squared length
+  double t_partner;   // fraction where the partner's circle is entered
 };
 
 bool SpansHeight(const ObstacleDef& o, double z) { return z >= o.z && z <= o.z + o.height; }
@@ -61,8 +61,8 @@ bool Begin(const std::vector<RobotState>& robots, Media* m) {
   m->rab_grid.FilePoints(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
   const int obstacles = static_cast<int>(m->obstacle_xy.size());
   if (obstacles > 0)
-    m->rab_obstacle_grid.FileBoxes(obstacles, [&](int k) { return m->obstacle_lo[k]; },
-                                   [&](int k) { return m->obstacle_hi[k]; });
+    m->rab_obstacle_grid.FileBoxes(
+        obstacles, [&](int k) { return m->obstacle_lo[k]; }, [&](int k) { return m->obstacle_hi[k]; });
   return true;
 }
 
@@ -120,17 +120,17 @@ int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
 /// Occluders bucketed by tangent2 (a counting sort, not a comparison sort): a pair only
 /// scans the buckets up to its cut-off, nearest first.
 void SortOccluders(int occluders, RabScratch& scratch) {
-  BucketSort(occluders, &scratch.bucket_start, [&](int i, auto&& file) { file(scratch.unsorted[i].bucket); },
-             [&](int slot, int i) { scratch.occluders[slot] = scratch.unsorted[i]; });
+  BucketSort(
+      occluders, &scratch.bucket_start, [&](int i, auto&& file) { file(scratch.unsorted[i].bucket); },
+      [&](int slot, int i) { scratch.occluders[slot] = scratch.unsorted[i]; });
 }
 
 /// Blockers from the bodies within kBlockerReach only (farther ones rarely cover a
 /// sector), and only in a crowd: elsewhere most pairs are unhidden, probes would not pay.
 bool ProbeBlockers(const Device& d, int occluders, RabScratch& scratch) {
   const double reach_bucket = (rab::kBlockerReach * rab::kBlockerReach - kBodyRadius2) * d.per_bucket;
-  const int within = reach_bucket < rab::kOccluderBuckets
-                         ? scratch.bucket_start[static_cast<int>(reach_bucket) + 1]
-                         : occluders;
+  const int within =
+      reach_bucket < rab::kOccluderBuckets ? scratch.bucket_start[static_cast<int>(reach_bucket) + 1] : occluders;
   if (within < rab::kCrowd) return false;
   rab_blockers::FindBlockers(scratch, within);
   return true;
@@ -158,9 +158,9 @@ bool HiddenByBody(const Device& d, const Pair& p, int occluders, RabScratch& scr
   // margin far above rounding: the test itself stays exact; scanning more is safe).
   const double tangent2_max = (p.dd - kBodyRadius2) * (1 + 1e-9) + 1e-12;
   const double q = tangent2_max * d.per_bucket;  // monotone in tangent2: its bucket bounds theirs
-  const int limit = !(q >= 0)                    ? 0
+  const int limit = !(q >= 0)                   ? 0
                     : q < rab::kOccluderBuckets ? scratch.bucket_start[static_cast<int>(q) + 1]
-                                                 : occluders;
+                                                : occluders;
   int no_blocker = -1;
   int& blocker =
       d.probe ? scratch.sector_blocker[rab_blockers::SectorOf(rab_blockers::PseudoAngle(p.dx, p.dy))] : no_blocker;
@@ -211,8 +211,7 @@ bool WalkObstacles(const Model& model, const Media& m, const Vec2& a, const Vec2
 }
 
 /// Whether a box or cylinder is entered before the partner's circle.
-bool HiddenByObstacle(const Model& model, const Media& m, const Device& d, const Pair& p,
-                      const RabScratch& scratch) {
+bool HiddenByObstacle(const Model& model, const Media& m, const Device& d, const Pair& p, const RabScratch& scratch) {
   if (scratch.walk_obstacles) return WalkObstacles(model, m, p.from, p.to, p.t_partner, d.pos.z());
   const Vec2 lo = p.from.cwiseMin(p.to), hi = p.from.cwiseMax(p.to);
   for (int k : scratch.near_obstacles) {
@@ -368,8 +367,10 @@ void RouteRab(const Model& model, const std::vector<RobotState>& robots, Media* 
     for (RabScratch& scratch : m->rab_scratch) SizeScratch(model, &scratch);
   }
   RouteJob job{&model, m, slots};
-  if (slots > 1) runner.run(runner.pool, RouteSlot, &job);
-  else RouteSlot(&job, 0);
+  if (slots > 1)
+    runner.run(runner.pool, RouteSlot, &job);
+  else
+    RouteSlot(&job, 0);
   Deliver(m);
 }
 

@@ -15,7 +15,7 @@ struct SlotRunner;
 /// A body that may hide a partner from one device: the parts of CircleEntry that do not
 /// depend on the partner, computed once per device.
 struct RabOccluder {
-  double tangent2;         // m², |offset|² - r²: the squared tangent length from the device
+  double tangent2;            // m², |offset|² - r²: the squared tangent length from the device
   double offset_x, offset_y;  // m, body centre minus device
   int body;
   int bucket;  // of tangent2, see SortOccluders
@@ -23,14 +23,14 @@ struct RabOccluder {
 
 /// One thread's working buffers for the devices it routes (sized once, reused).
 struct RabScratch {
-  std::vector<int> candidates;          // members after the device within reach, any order
-  std::vector<RabOccluder> occluders;   // those that may hide a partner, nearest bucket first
-  std::vector<RabOccluder> unsorted;    // occluders before bucketing
-  std::vector<int> bucket_start;        // kOccluderBuckets + 1 offsets into occluders
-  std::vector<int> sector_blocker;      // kProbeSectors occluders or -1, see FindBlockers
-  std::vector<int> near_obstacles;      // within reach of one device, if few (kFewObstacles)
-  bool walk_obstacles = false;          // too many near: each pair walks the obstacle grid
-  std::vector<int> obstacle_stamp;      // dedup of near_obstacles
+  std::vector<int> candidates;         // members after the device within reach, any order
+  std::vector<RabOccluder> occluders;  // those that may hide a partner, nearest bucket first
+  std::vector<RabOccluder> unsorted;   // occluders before bucketing
+  std::vector<int> bucket_start;       // kOccluderBuckets + 1 offsets into occluders
+  std::vector<int> sector_blocker;     // kProbeSectors occluders or -1, see FindBlockers
+  std::vector<int> near_obstacles;     // within reach of one device, if few (kFewObstacles)
+  bool walk_obstacles = false;         // too many near: each pair walks the obstacle grid
+  std::vector<int> obstacle_stamp;     // dedup of near_obstacles
   int stamp = 0;
 };
 

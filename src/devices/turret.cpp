@@ -28,9 +28,12 @@ void ActTurret(RobotState& robot, PhysicsWorld& physics, double dt) {
       robot.turret_previous_error = e;
       break;
     }
-    case TurretMode::Speed: w = robot.cmd.turret_speed; break;
+    case TurretMode::Speed:
+      w = robot.cmd.turret_speed;
+      break;
     case TurretMode::Off:
-    case TurretMode::Passive: break;
+    case TurretMode::Passive:
+      break;
   }
   if (w == 0) return;
   robot.turret_rotation = WrapSigned(robot.turret_rotation + w * dt);

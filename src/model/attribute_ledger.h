@@ -31,8 +31,7 @@ class AttributeLedger {
   std::string Suggest(const Element* e, const std::string& name) const;
   /// Calls `unread(element, attribute)` for each attribute nobody reads, on every visited
   /// element below and including `root`, in document order.
-  void ForEachUnknown(const Element* root,
-                      const std::function<void(const Element*, const std::string&)>& unread) const;
+  void ForEachUnknown(const Element* root, const std::function<void(const Element*, const std::string&)>& unread) const;
 
  private:
   std::map<const Element*, std::set<std::string>> read_;

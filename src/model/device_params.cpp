@@ -58,8 +58,7 @@ void ParseDeviceParams(DeviceConfig* cfg, ErrorList* errors) {
     case DeviceType::WheelsActuator: {
       const char* side[2] = {"_left", "_right"};
       for (const char* base : {"bias_avg", "bias_stddev", "factor_avg", "factor_stddev"})
-        for (const char* suffix : {"", "_left", "_right"})
-          d.wheel_noise |= p.Present(std::string(base) + suffix);
+        for (const char* suffix : {"", "_left", "_right"}) d.wheel_noise |= p.Present(std::string(base) + suffix);
       for (int w = 0; w < 2; ++w) {
         auto pick = [&](const std::string& base, double def) {
           double generic = p.Number(base, def);

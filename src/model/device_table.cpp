@@ -4,12 +4,18 @@ namespace essaim {
 
 const char* CostName(DeviceCost cost) {
   switch (cost) {
-    case DeviceCost::Fixed: return "fixed per robot";
-    case DeviceCost::PerRay: return "per ray (shapes near the robot)";
-    case DeviceCost::PerFloorPoint: return "per floor point";
-    case DeviceCost::PerJoint: return "per joint (one thread)";
-    case DeviceCost::PerPartner: return "per partner in range";
-    case DeviceCost::PerLed: return "per LED in view";
+    case DeviceCost::Fixed:
+      return "fixed per robot";
+    case DeviceCost::PerRay:
+      return "per ray (shapes near the robot)";
+    case DeviceCost::PerFloorPoint:
+      return "per floor point";
+    case DeviceCost::PerJoint:
+      return "per joint (one thread)";
+    case DeviceCost::PerPartner:
+      return "per partner in range";
+    case DeviceCost::PerLed:
+      return "per LED in view";
   }
   return "";
 }

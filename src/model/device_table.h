@@ -36,12 +36,12 @@ constexpr int kDeviceCount = static_cast<int>(DeviceType::Count);
 
 /// What a device's work per tick grows with, beside the number of robots carrying it.
 enum class DeviceCost {
-  Fixed,        // a few arithmetic operations (wheels, positioning, battery, LEDs...)
-  PerRay,       // ray casts against the shapes near the robot (proximity, light, scanner)
+  Fixed,          // a few arithmetic operations (wheels, positioning, battery, LEDs...)
+  PerRay,         // ray casts against the shapes near the robot (proximity, light, scanner)
   PerFloorPoint,  // floor raster look-ups (ground sensors)
-  PerJoint,     // Box2D joints made or moved in the one physics world (gripper, turret)
-  PerPartner,   // robots within range (range-and-bearing)
-  PerLed,       // LEDs within view (camera)
+  PerJoint,       // Box2D joints made or moved in the one physics world (gripper, turret)
+  PerPartner,     // robots within range (range-and-bearing)
+  PerLed,         // LEDs within view (camera)
 };
 
 struct DeviceAttr {
@@ -65,13 +65,13 @@ constexpr DeviceAttrs AttrsOf(const DeviceAttr (&items)[N]) {
 
 struct DeviceRow {
   DeviceType type;
-  const char* xml_name;         // tag inside <sensors> / <actuators>
+  const char* xml_name;  // tag inside <sensors> / <actuators>
   bool is_sensor;
   const char* lua_key;          // robot.<lua_key>
   const char* implementations;  // accepted `implementation` values, comma-separated
   bool supported;               // false: recognised ARGoS device not implemented yet
   DeviceCost cost;
-  const char* doc;              // what robot.<lua_key> holds or offers
+  const char* doc;  // what robot.<lua_key> holds or offers
   DeviceAttrs attrs;
 };
 
@@ -79,15 +79,18 @@ struct DeviceRow {
 namespace device_attrs {
 inline constexpr DeviceAttr kNoise = {"noise_level", "0", "uniform noise amplitude added to each value"};
 inline constexpr DeviceAttr kShowRays = {"show_rays", "false", "accepted for compatibility; essaim is headless"};
-inline constexpr DeviceAttr kWheelsActuator[] = {
-    {"bias_avg", "0", "per-robot wheel speed bias mean (m/s), drawn once"},
-    {"bias_stddev", "0", "per-robot wheel speed bias std-dev (m/s)"},
-    {"factor_avg", "1", "per-command multiplicative noise mean"},
-    {"factor_stddev", "0", "per-command multiplicative noise std-dev"},
-    {"bias_avg_left", "", "left-wheel override"}, {"bias_avg_right", "", "right-wheel override"},
-    {"bias_stddev_left", "", "left-wheel override"}, {"bias_stddev_right", "", "right-wheel override"},
-    {"factor_avg_left", "", "left-wheel override"}, {"factor_avg_right", "", "right-wheel override"},
-    {"factor_stddev_left", "", "left-wheel override"}, {"factor_stddev_right", "", "right-wheel override"}};
+inline constexpr DeviceAttr kWheelsActuator[] = {{"bias_avg", "0", "per-robot wheel speed bias mean (m/s), drawn once"},
+                                                 {"bias_stddev", "0", "per-robot wheel speed bias std-dev (m/s)"},
+                                                 {"factor_avg", "1", "per-command multiplicative noise mean"},
+                                                 {"factor_stddev", "0", "per-command multiplicative noise std-dev"},
+                                                 {"bias_avg_left", "", "left-wheel override"},
+                                                 {"bias_avg_right", "", "right-wheel override"},
+                                                 {"bias_stddev_left", "", "left-wheel override"},
+                                                 {"bias_stddev_right", "", "right-wheel override"},
+                                                 {"factor_avg_left", "", "left-wheel override"},
+                                                 {"factor_avg_right", "", "right-wheel override"},
+                                                 {"factor_stddev_left", "", "left-wheel override"},
+                                                 {"factor_stddev_right", "", "right-wheel override"}};
 inline constexpr DeviceAttr kLeds[] = {{"medium", "", "id of the <led> medium", true}};
 inline constexpr DeviceAttr kWheelsSensor[] = {{"vel_noise_range", "0:0", "uniform noise on velocities (cm/s)"},
                                                {"dist_noise_range", "0:0", "uniform noise on distances (cm)"}};
@@ -102,7 +105,8 @@ inline constexpr DeviceAttr kRabSensor[] = {{"medium", "", "id of the <range_and
                                             {"noise_std_dev", "0", "std-dev of the position noise (m)"},
                                             {"packet_drop_prob", "0", "probability of dropping each packet"}};
 inline constexpr DeviceAttr kScanner[] = {kShowRays, {"noise_range", "0:0", "parsed and ignored, as ARGoS"}};
-inline constexpr DeviceAttr kCamera[] = {{"medium", "", "id of the <led> medium", true}, kShowRays,
+inline constexpr DeviceAttr kCamera[] = {{"medium", "", "id of the <led> medium", true},
+                                         kShowRays,
                                          {"noise_std_dev", "0", "relative noise on the blob vector"}};
 inline constexpr DeviceAttr kBattery[] = {{"noise_range", "0:0", "uniform noise on the charge"}};
 }  // namespace device_attrs
@@ -114,14 +118,42 @@ inline constexpr std::array<DeviceRow, kDeviceCount> kDeviceRows = {{
      "robot.wheels.set_velocity(left, right) in cm/s", AttrsOf(device_attrs::kWheelsActuator)},
     {DeviceType::LedsActuator, "leds", false, "leds", "default", true, DeviceCost::Fixed,
      "robot.leds.set_all_colors / set_single_color (13 LEDs)", AttrsOf(device_attrs::kLeds)},
-    {DeviceType::RabActuator, "range_and_bearing", false, "range_and_bearing", "default", true, DeviceCost::Fixed,
-     "robot.range_and_bearing.set_data / clear_data", {}},
-    {DeviceType::ScannerActuator, "footbot_distance_scanner", false, "distance_scanner", "default", true,
-     DeviceCost::Fixed, "robot.distance_scanner.enable / disable / set_angle / set_rpm", {}},
-    {DeviceType::GripperActuator, "footbot_gripper", false, "gripper", "default", true, DeviceCost::PerJoint,
-     "robot.gripper.lock_positive / lock_negative / unlock", {}},
-    {DeviceType::TurretActuator, "footbot_turret", false, "turret", "default", true, DeviceCost::PerJoint,
-     "robot.turret.set_rotation / set_rotation_speed / set_*_mode", {}},
+    {DeviceType::RabActuator,
+     "range_and_bearing",
+     false,
+     "range_and_bearing",
+     "default",
+     true,
+     DeviceCost::Fixed,
+     "robot.range_and_bearing.set_data / clear_data",
+     {}},
+    {DeviceType::ScannerActuator,
+     "footbot_distance_scanner",
+     false,
+     "distance_scanner",
+     "default",
+     true,
+     DeviceCost::Fixed,
+     "robot.distance_scanner.enable / disable / set_angle / set_rpm",
+     {}},
+    {DeviceType::GripperActuator,
+     "footbot_gripper",
+     false,
+     "gripper",
+     "default",
+     true,
+     DeviceCost::PerJoint,
+     "robot.gripper.lock_positive / lock_negative / unlock",
+     {}},
+    {DeviceType::TurretActuator,
+     "footbot_turret",
+     false,
+     "turret",
+     "default",
+     true,
+     DeviceCost::PerJoint,
+     "robot.turret.set_rotation / set_rotation_speed / set_*_mode",
+     {}},
     // ---- sensors
     {DeviceType::WheelsSensor, "differential_steering", true, "wheels", "default", true, DeviceCost::Fixed,
      "robot.wheels.velocity_left/right (cm/s), distance_left/right (cm), axis_length (cm)",
@@ -147,8 +179,15 @@ inline constexpr std::array<DeviceRow, kDeviceCount> kDeviceRows = {{
      AttrsOf(device_attrs::kCamera)},
     {DeviceType::BatterySensor, "battery", true, "battery", "default", true, DeviceCost::Fixed,
      "robot.battery.available_charge (0..1), time_left (s)", AttrsOf(device_attrs::kBattery)},
-    {DeviceType::TurretEncoderSensor, "footbot_turret_encoder", true, "turret", "default", true, DeviceCost::Fixed,
-     "robot.turret.rotation (rad)", {}},
+    {DeviceType::TurretEncoderSensor,
+     "footbot_turret_encoder",
+     true,
+     "turret",
+     "default",
+     true,
+     DeviceCost::Fixed,
+     "robot.turret.rotation (rad)",
+     {}},
 }};
 
 /// Every row present, in enum order, with its names filled in. A missing row would be a

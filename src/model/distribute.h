@@ -8,8 +8,8 @@ namespace essaim {
 
 struct Generator {
   enum class Kind { Uniform, Gaussian, Constant, Grid } kind = Kind::Constant;
-  Vec3 a = Vec3::Zero();  // uniform: min; gaussian: mean; constant: values; grid: center
-  Vec3 b = Vec3::Zero();  // uniform: max; gaussian: std_dev; grid: distances
+  Vec3 a = Vec3::Zero();      // uniform: min; gaussian: mean; constant: values; grid: center
+  Vec3 b = Vec3::Zero();      // uniform: max; gaussian: std_dev; grid: distances
   int layout[3] = {1, 1, 1};  // grid only
   /// Value for the k-th draw (k counts every attempt, as ARGoS's grid does). Returns false
   /// when a grid has no cell k.
@@ -23,7 +23,7 @@ double RoundSignificant6(double v);
 struct Footprint {
   bool is_circle = true;
   Vec2 center = Vec2::Zero();
-  double radius = 0;          // circle
+  double radius = 0;                       // circle
   double half_x = 0, half_y = 0, yaw = 0;  // rectangle
 };
 

@@ -9,8 +9,8 @@
 
 namespace essaim {
 
-bool LoadPngBottomUp(const std::string& path, long long max_pixels, int* width, int* height,
-                     std::vector<Color>* pixels, std::string* error) {
+bool LoadPngBottomUp(const std::string& path, long long max_pixels, int* width, int* height, std::vector<Color>* pixels,
+                     std::string* error) {
   const std::string kind = SpecialFileKind(path);
   if (!kind.empty()) {
     *error = "is " + kind + ", not a PNG file";

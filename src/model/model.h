@@ -15,14 +15,14 @@ namespace essaim {
 
 /// Foot-bot constants, as ARGoS's foot-bot entity and its dynamics2d model define them.
 namespace footbot {
-constexpr double kRadius = 0.085036758;          // m
-constexpr double kHeight = 0.146899733;          // m
-constexpr double kMass = 1.6;                    // kg
-constexpr double kAxisLength = 0.14;             // m between the wheels
-constexpr double kMaxForce = 15.0;               // N
-constexpr double kMaxTorque = 150.0;             // N·m
-constexpr double kRabElevation = 0.1;            // m
-constexpr double kProximityElevation = 0.06;     // m
+constexpr double kRadius = 0.085036758;            // m
+constexpr double kHeight = 0.146899733;            // m
+constexpr double kMass = 1.6;                      // kg
+constexpr double kAxisLength = 0.14;               // m between the wheels
+constexpr double kMaxForce = 15.0;                 // N
+constexpr double kMaxTorque = 150.0;               // N·m
+constexpr double kRabElevation = 0.1;              // m
+constexpr double kProximityElevation = 0.06;       // m
 constexpr double kScannerElevation = 0.123199866;  // m
 constexpr double kCameraElevation = 0.288699733;   // m
 constexpr int kLedCount = 13;
@@ -40,7 +40,7 @@ using AttrMap = std::map<std::string, std::string>;
 struct DeviceConfig {
   DeviceType type = DeviceType::Count;
   std::string implementation;
-  AttrMap attrs;  // every attribute as written
+  AttrMap attrs;        // every attribute as written
   DeviceParams params;  // parsed once at load
   SourceLoc loc;
   /// Attribute text, or the device table's default.
@@ -49,8 +49,8 @@ struct DeviceConfig {
 
 struct ControllerDef {
   std::string id;
-  std::string script;        // path as resolved (empty: no script)
-  AttrMap params;            // all <params> attributes, as strings (ARGoS)
+  std::string script;                   // path as resolved (empty: no script)
+  AttrMap params;                       // all <params> attributes, as strings (ARGoS)
   std::vector<DeviceConfig> actuators;  // sorted by XML tag (ARGoS applies them so)
   std::vector<DeviceConfig> sensors;    // sorted by XML tag
   SourceLoc loc;
@@ -64,9 +64,9 @@ struct BatteryDef {
   DischargeModel model = DischargeModel::None;  // no <battery>: never depletes
   double start_charge = 1.0;
   double full_charge = 1.0;
-  double delta = 1e-5;         // time: per tick
-  double pos_delta = 1e-3;     // motion: per m
-  double orient_delta = 1e-3;  // motion: per rad
+  double delta = 1e-5;                                                 // time: per tick
+  double pos_delta = 1e-3;                                             // motion: per m
+  double orient_delta = 1e-3;                                          // motion: per rad
   double time_factor = 1e-5, pos_factor = 1e-3, orient_factor = 1e-3;  // time_motion
 };
 
@@ -74,12 +74,12 @@ struct RobotDef {
   std::string id;
   Pose2 pose;
   double z = 0;
-  int controller = -1;       // index into Model::controllers
-  std::string controller_id; // <controller config="...">
+  int controller = -1;        // index into Model::controllers
+  std::string controller_id;  // <controller config="...">
   int controller_line = 0;
-  AttrMap params;            // the controller's, or the robot's own <params> (replaces)
-  double rab_range = 3.0;    // m
-  int rab_data_size = 10;    // bytes
+  AttrMap params;          // the controller's, or the robot's own <params> (replaces)
+  double rab_range = 3.0;  // m
+  int rab_data_size = 10;  // bytes
   double camera_aperture = DegToRad(70);
   double max_force = footbot::kMaxForce;
   double max_torque = footbot::kMaxTorque;
@@ -98,13 +98,13 @@ enum class ShapeKind { Box, Cylinder };
 struct ObstacleDef {
   std::string id;
   ShapeKind kind = ShapeKind::Box;
-  Pose2 pose;                // centre of the base; yaw
+  Pose2 pose;  // centre of the base; yaw
   double z = 0;
   double size_x = 0, size_y = 0;  // box
   double radius = 0;              // cylinder
   double height = 0;
   bool movable = false;
-  double mass = 0;           // kg, movable only
+  double mass = 0;  // kg, movable only
   std::vector<LedDef> leds;
   std::string led_medium;
   SourceLoc loc;
@@ -123,7 +123,7 @@ enum class FloorSource { None, Image, LoopFunctions };
 
 struct FloorDef {
   FloorSource source = FloorSource::None;
-  std::string path;          // image, resolved
+  std::string path;               // image, resolved
   double pixels_per_meter = 100;  // loop-function floors are rasterised at this density
   /// Image pixels, bottom row first (row 0 = arena min y), RGB. Filled by the loader for
   /// images only; a loop-function floor is sampled into the World's FloorRaster (sim/world.cpp).
@@ -142,8 +142,8 @@ struct LedMediumDef {
 };
 
 struct LoopFunctionsDef {
-  std::string script;        // resolved path; empty = none
-  AttrMap params;            // attributes of <loop_functions>
+  std::string script;  // resolved path; empty = none
+  AttrMap params;      // attributes of <loop_functions>
   /// Its child elements (<params reset_all="true"/>...): name → attributes, first of a name.
   std::map<std::string, AttrMap> children;
   SourceLoc loc;
@@ -153,26 +153,26 @@ struct LoopFunctionsDef {
 /// from add_entity); each can be raised with <system max_...> (docs/safety.md). The defaults
 /// keep a run well inside a few GiB.
 struct LimitsDef {
-  double arena_size = 10000;       // m, per side: <system max_arena_size>
-  double entity_size = 1000;       // m, a box's side or height, a cylinder's diameter or height
+  double arena_size = 10000;         // m, per side: <system max_arena_size>
+  double entity_size = 1000;         // m, a box's side or height, a cylinder's diameter or height
   long long floor_pixels = 1 << 26;  // pixels of an image floor, read from the PNG header
-  long long entities = 20000;      // foot-bots, boxes, cylinders and lights, added ones included
+  long long entities = 20000;        // foot-bots, boxes, cylinders and lights, added ones included
 };
 
 struct ExperimentDef {
   LimitsDef limits;
-  int threads = 0;           // 0 = main thread only
+  int threads = 0;                // 0 = main thread only
   long long lua_budget = -1;      // <system lua_budget>: instructions per Lua call; -1 = default
   long long lua_memory_mib = -1;  // <system lua_memory>: MiB per Lua state; -1 = default
   int ticks_per_second = 10;
-  uint64_t length_ticks = 0; // 0 = unlimited
+  uint64_t length_ticks = 0;  // 0 = unlimited
   uint64_t seed = 0;
   double TickLength() const { return 1.0 / ticks_per_second; }
 };
 
 struct PhysicsDef {
   std::string id = "dyn2d";
-  int iterations = 10;       // sub-steps per tick
+  int iterations = 10;  // sub-steps per tick
   double box_linear_friction = 1.49, box_angular_friction = 1.49;
   double cylinder_linear_friction = 1.49, cylinder_angular_friction = 1.49;
   double gripping_rigidity = 10000;  // N: force cap of a gripper's hold (N·m for its torque)
@@ -186,15 +186,15 @@ struct ArenaDef {
 };
 
 struct Model {
-  std::string file;          // the .argos path as given
-  std::string dir;           // its folder
-  std::string file_hash;     // fnv1a64 of the file content
+  std::string file;                    // the .argos path as given
+  std::string dir;                     // its folder
+  std::string file_hash;               // fnv1a64 of the file content
   std::vector<std::string> overrides;  // --set lines applied
   ExperimentDef experiment;
   ArenaDef arena;
   PhysicsDef physics;
   std::vector<ControllerDef> controllers;
-  std::vector<RobotDef> robots;        // explicit ones, then <distribute> blocks
+  std::vector<RobotDef> robots;  // explicit ones, then <distribute> blocks
   std::vector<ObstacleDef> obstacles;
   std::vector<LightDef> lights;
   FloorDef floor;

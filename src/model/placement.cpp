@@ -41,7 +41,8 @@ void PlacedFootprints::Add(const Footprint& f) {
 void PlacedFootprints::Refile() {
   filed_ = placed_.size();
   grid_.CoverBox(min_, max_, kPlacementCell, 4 * filed_ + 4096);
-  grid_.FileBoxes(static_cast<int>(filed_), [&](int i) { return lo_[i]; }, [&](int i) { return hi_[i]; });
+  grid_.FileBoxes(
+      static_cast<int>(filed_), [&](int i) { return lo_[i]; }, [&](int i) { return hi_[i]; });
 }
 
 int PlacedFootprints::FirstOverlap(const Footprint& f) const {

@@ -9,14 +9,14 @@
 
 #include "core/color.h"
 #include "core/hash.h"
-#include "core/rng.h"
 #include "core/paths.h"
+#include "core/rng.h"
 #include "core/strings.h"
 #include "model/attribute_ledger.h"
 #include "model/distribute.h"
-#include "model/placement.h"
 #include "model/floor_image.h"
 #include "model/limits.h"
+#include "model/placement.h"
 #include "model/xml_overrides.h"
 
 namespace essaim {
@@ -111,9 +111,9 @@ class Loader {
     const XMLElement* proto = nullptr;     // the entity inside <entity>
     Generator position_gen, orientation_gen;
     long long quantity = 0, max_trials = 0, base_num = 0;
-    std::string kind;                      // foot-bot, box, cylinder or light
+    std::string kind;  // foot-bot, box, cylinder or light
     std::string base_id;
-    RobotDef robot;                        // the prototype of its kind, read once
+    RobotDef robot;  // the prototype of its kind, read once
     ObstacleDef obstacle;
     LightDef light;
     int draw = 0;  // grid cell counter: every attempt consumes one (a retry is fatal on a grid)
@@ -152,7 +152,7 @@ class Loader {
   Rng sim_rng_;
   AttributeLedger ledger_;
   std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
-  bool legacy_led_warned_ = false;  // one warning per file for <led position=...>
+  bool legacy_led_warned_ = false;                                   // one warning per file for <led position=...>
 };
 
 // Upper bounds on .argos numbers that size threads, loops or casts (docs/compatibility.md).
@@ -251,8 +251,10 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
   for (const std::string& o : options_.overrides) {
     std::string err;
     OverrideTarget target;
-    if (!ApplyXmlOverride(doc, o, &err, &target)) errors_->Add(path_, 0, "", err);
-    else set_targets_.emplace_back(target, o);
+    if (!ApplyXmlOverride(doc, o, &err, &target))
+      errors_->Add(path_, 0, "", err);
+    else
+      set_targets_.emplace_back(target, o);
   }
   XMLElement* root = doc.RootElement();
   if (!root) {
@@ -261,8 +263,7 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
   }
   ledger_.ReadAll(root);  // ARGoS checks neither the root's name nor its attributes
   CheckChildren(root,
-                {"framework", "controllers", "arena", "physics_engines", "media", "loop_functions",
-                 "visualization"},
+                {"framework", "controllers", "arena", "physics_engines", "media", "loop_functions", "visualization"},
                 "expected framework, controllers, arena, physics_engines, media, loop_functions, visualization");
   auto required = [&](const char* name) -> XMLElement* {
     XMLElement* e = root->FirstChildElement(name);
@@ -335,8 +336,7 @@ void Loader::LoadFramework(const XMLElement* e) {
   x.seed = static_cast<uint64_t>(std::max(0LL, seed));
   if (x.seed == 0) {
     // ARGoS seeds from the clock when no seed is given; the summary records which.
-    x.seed = static_cast<uint64_t>(
-                 std::chrono::system_clock::now().time_since_epoch().count() / 1000 % 1000000) + 1;
+    x.seed = static_cast<uint64_t>(std::chrono::system_clock::now().time_since_epoch().count() / 1000 % 1000000) + 1;
   }
   if (Has(exp, "real_time") && Bool(exp, "real_time", false))
     Warn(exp, "real_time ignored: essaim runs as fast as it can");
@@ -365,22 +365,27 @@ void Loader::LoadLimits(const XMLElement* sys, LimitsDef* limits) {
                              {"max_entity_size", &limits->entity_size}}) {
     if (!Has(sys, name)) continue;
     const double v = Double(sys, name, *value);
-    if (v > 0 && v <= kMaxCoordinate) *value = v;
-    else Error(sys, std::string(name) + " must be in (0, 1e6] m");
+    if (v > 0 && v <= kMaxCoordinate)
+      *value = v;
+    else
+      Error(sys, std::string(name) + " must be in (0, 1e6] m");
   }
   for (auto [name, value] : {std::pair<const char*, long long*>{"max_floor_pixels", &limits->floor_pixels},
                              {"max_entities", &limits->entities}}) {
     if (!Has(sys, name)) continue;
     const long long v = Int(sys, name, *value);
-    if (v >= 1) *value = v;
-    else Error(sys, std::string(name) + " must be >= 1");
+    if (v >= 1)
+      *value = v;
+    else
+      Error(sys, std::string(name) + " must be >= 1");
   }
 }
 
 bool Loader::RoomFor(const XMLElement* e, long long more) {
   const double count = static_cast<double>(model_->robots.size() + model_->obstacles.size() + model_->lights.size()) +
                        static_cast<double>(more);
-  std::string problem = EntityCountProblem(count > 1e18 ? static_cast<size_t>(1e18) : static_cast<size_t>(count), model_->experiment.limits);
+  std::string problem = EntityCountProblem(count > 1e18 ? static_cast<size_t>(1e18) : static_cast<size_t>(count),
+                                           model_->experiment.limits);
   if (problem.empty()) return true;
   Error(e, problem);
   return false;
@@ -414,7 +419,8 @@ void Loader::LoadControllers(const XMLElement* e) {
       std::string script = Str(par, "script");
       if (!script.empty()) {
         def.script = ResolvePath(script);
-        if (!FileExists(def.script)) Error(par, "script '" + script + "' not found (looked beside the .argos file and in the working directory)");
+        if (!FileExists(def.script))
+          Error(par, "script '" + script + "' not found (looked beside the .argos file and in the working directory)");
       } else {
         // ARGoS loads no script and its robots stand still in silence: never what was meant.
         Error(c, "lua_controller '" + def.id + "' has no script: add <params script=\"file.lua\"/>");
@@ -456,7 +462,8 @@ void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c)
     cfg.type = row->type;
     cfg.loc = Loc(d);
     cfg.implementation = Str(d, "implementation");
-    if (cfg.implementation.empty()) Error(d, "missing required attribute 'implementation'");
+    if (cfg.implementation.empty())
+      Error(d, "missing required attribute 'implementation'");
     else {
       std::vector<std::string> impls = Split(row->implementations, ',');
       if (std::find(impls.begin(), impls.end(), cfg.implementation) == impls.end())
@@ -507,8 +514,7 @@ void Loader::LoadPhysics(const XMLElement* e) {
       p.cylinder_linear_friction = Double(f, "cylinder_linear_friction", p.cylinder_linear_friction);
       p.cylinder_angular_friction = Double(f, "cylinder_angular_friction", p.cylinder_angular_friction);
     }
-    if (const XMLElement* b = c->FirstChildElement("boundaries"))
-      Warn(b, "ignored: one engine covers the whole arena");
+    if (const XMLElement* b = c->FirstChildElement("boundaries")) Warn(b, "ignored: one engine covers the whole arena");
     if (Has(c, "elevation") && Double(c, "elevation", 0) != 0) Warn(c, "elevation ignored");
   }
   if (engines == 0) Error(e, "no physics engine: add <dynamics2d id=\"dyn2d\"/>");
@@ -606,10 +612,14 @@ bool Loader::LoadFootBot(const XMLElement* e, RobotDef* r) {
   if (const XMLElement* b = e->FirstChildElement("battery")) {
     BatteryDef& bd = r->battery;
     std::string m = Str(b, "discharge_model", "time");
-    if (m == "time") bd.model = DischargeModel::Time;
-    else if (m == "motion") bd.model = DischargeModel::Motion;
-    else if (m == "time_motion") bd.model = DischargeModel::TimeMotion;
-    else Error(b, "discharge_model must be time, motion or time_motion");
+    if (m == "time")
+      bd.model = DischargeModel::Time;
+    else if (m == "motion")
+      bd.model = DischargeModel::Motion;
+    else if (m == "time_motion")
+      bd.model = DischargeModel::TimeMotion;
+    else
+      Error(b, "discharge_model must be time, motion or time_motion");
     if (Has(b, "model")) Warn(b, "attribute 'model' is not read by ARGoS either; use discharge_model");
     bd.start_charge = Double(b, "start_charge", 1.0);
     bd.full_charge = Double(b, "full_charge", 1.0);
@@ -653,8 +663,10 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) 
     if (o->mass <= 0) Error(e, "mass must be > 0 for a movable object");
   }
   CheckChildren(e, {"body", "leds"}, "expected body, leds");
-  if (const XMLElement* body = e->FirstChildElement("body")) LoadBody(body, &o->pose, &o->z);
-  else if (needs_body) Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
+  if (const XMLElement* body = e->FirstChildElement("body"))
+    LoadBody(body, &o->pose, &o->z);
+  else if (needs_body)
+    Error(e, "missing required <body position=\"x,y,z\" orientation=\"yaw,0,0\"/>");
   CheckFits(e, *o);
   if (const XMLElement* leds = e->FirstChildElement("leds")) {
     o->led_medium = Required(leds, "medium");
@@ -668,15 +680,18 @@ bool Loader::LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body) 
         // ARGoS 3 before offset/anchor: position is the offset from the body's origin.
         led.offset = Vector3(l, "position", Vec3::Zero(), true);
         if (!legacy_led_warned_)
-          Warn(l, "legacy <led position=...>: read as offset from the body origin, anchor \"origin\" "
-                  "(current ARGoS: offset=\"x,y,z\" anchor=\"origin\")");
+          Warn(l,
+               "legacy <led position=...>: read as offset from the body origin, anchor \"origin\" "
+               "(current ARGoS: offset=\"x,y,z\" anchor=\"origin\")");
         legacy_led_warned_ = true;
       } else {
         led.offset = Vector3(l, "offset", Vec3::Zero(), true);
       }
       auto c = ParseColor(Str(l, "color", "black"));
-      if (!c) Error(l, "bad colour '" + Str(l, "color") + "'");
-      else led.color = *c;
+      if (!c)
+        Error(l, "bad colour '" + Str(l, "color") + "'");
+      else
+        led.color = *c;
       o->leds.push_back(led);
     }
   }
@@ -708,7 +723,8 @@ void Loader::LoadFloor(const XMLElement* e) {
     if (path.empty()) return;
     f.path = ResolvePath(path);
     std::string err;
-    if (!PathExists(f.path)) Error(e, "floor image '" + path + "' not found");
+    if (!PathExists(f.path))
+      Error(e, "floor image '" + path + "' not found");
     else if (!LoadPngBottomUp(f.path, model_->experiment.limits.floor_pixels, &f.width, &f.height, &f.pixels, &err))
       Error(e, "floor image '" + path + "': " + err);
   } else if (source == "loop_functions") {
@@ -730,7 +746,8 @@ void Loader::LoadFloor(const XMLElement* e) {
 void Loader::CheckArenaSize(const XMLElement* e) {
   const Vec3& size = model_->arena.size;
   const double limit = model_->experiment.limits.arena_size;
-  if (size.x() <= 0 || size.y() <= 0) Error(e, "size must be > 0");
+  if (size.x() <= 0 || size.y() <= 0)
+    Error(e, "size must be > 0");
   else if (!(size.x() <= limit && size.y() <= limit))
     Error(e, "size " + FormatDouble(std::max(size.x(), size.y())) + " m is over the limit of " + FormatDouble(limit) +
                  " m per side (<system max_arena_size>)");
@@ -783,8 +800,7 @@ void Loader::LoadArena(const XMLElement* e) {
     robots_before.Add(FootprintOf(r));
     if (!problem.empty()) errors_->Add(r.loc.file, r.loc.line, r.loc.element, "foot-bot '" + r.id + "' " + problem);
   }
-  for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute"))
-    LoadDistribute(c);
+  for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute")) LoadDistribute(c);
 }
 
 // A robot outside the arena breaks ARGoS's media grids: "" when `r` stands inside.
@@ -869,8 +885,10 @@ bool Loader::ReadDistribute(const XMLElement* e, DistributeBlock* b) {
   b->quantity = Int(ent, "quantity", 0, true);
   b->max_trials = Int(ent, "max_trials", 0);
   b->base_num = Int(ent, "base_num", 0);
-  if (b->quantity < 0) Error(ent, "quantity must be >= 0");
-  else if (!RoomFor(ent, b->quantity)) return false;
+  if (b->quantity < 0)
+    Error(ent, "quantity must be >= 0");
+  else if (!RoomFor(ent, b->quantity))
+    return false;
   if (b->max_trials < 0) Error(ent, "max_trials must be >= 0");
   b->proto = ent->FirstChildElement();
   if (!b->proto) {
@@ -991,7 +1009,8 @@ void Loader::ReportUnknownAttributes(const XMLElement* root) {
     std::string best = ledger_.Suggest(e, name);
     // Read on another element of this tag: a setting that only counts with other values
     // (a box's mass when movable="true", a generator's min with method="uniform").
-    if (best == name) return std::string("; it counts on other <") + e->Name() + "> elements, not with this one's settings";
+    if (best == name)
+      return std::string("; it counts on other <") + e->Name() + "> elements, not with this one's settings";
     return best.empty() ? std::string() : "; did you mean '" + best + "'?";
   };
   std::set<std::pair<const XMLElement*, std::string>> from_set;
@@ -1007,8 +1026,10 @@ void Loader::ReportUnknownAttributes(const XMLElement* root) {
   ledger_.ForEachUnknown(root, [&](const XMLElement* e, const std::string& name) {
     if (from_set.count({e, name})) return;
     std::string msg = "unknown attribute '" + name + "' (essaim does not read it)" + hint(e, name);
-    if (options_.strict) Error(e, msg);
-    else Warn(e, msg);
+    if (options_.strict)
+      Error(e, msg);
+    else
+      Warn(e, msg);
   });
 }
 
@@ -1034,11 +1055,14 @@ void Loader::CheckReferences() {
     if (!d) return;
     std::string m = d->Attr("medium");
     bool found = false;
-    if (rab) for (auto& x : model_->rab_media) found |= x.id == m;
-    else for (auto& x : model_->led_media) found |= x.id == m;
+    if (rab)
+      for (auto& x : model_->rab_media) found |= x.id == m;
+    else
+      for (auto& x : model_->led_media) found |= x.id == m;
     if (!found)
       errors_->Add(d->loc.file, d->loc.line, d->loc.element,
-                   "medium '" + m + "' is not declared in <media> (<" + (rab ? "range_and_bearing" : "led") + " id=\"" + m + "\"/>)");
+                   "medium '" + m + "' is not declared in <media> (<" + (rab ? "range_and_bearing" : "led") + " id=\"" +
+                       m + "\"/>)");
   };
   for (const ControllerDef& c : model_->controllers) {
     check_medium(c, DeviceType::RabSensor, true);
@@ -1071,14 +1095,14 @@ const DeviceConfig* ControllerDef::Find(DeviceType t) const {
   return nullptr;
 }
 
-std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path,
-                                          const LoadOptions& options, ErrorList* errors, ErrorList* warnings) {
+std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path, const LoadOptions& options,
+                                          ErrorList* errors, ErrorList* warnings) {
   Loader loader(path, options, errors, warnings);
   return loader.Load(xml);
 }
 
-std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options,
-                                          ErrorList* errors, ErrorList* warnings) {
+std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options, ErrorList* errors,
+                                          ErrorList* warnings) {
   std::string text;
   if (!ReadFile(path, &text)) {
     errors->Add(path, 0, "", "cannot read the experiment file");

@@ -24,11 +24,10 @@ struct LoadOptions {
 
 /// Returns nullptr and fills `errors` when the file is unusable. `warnings` receives
 /// things accepted but ignored (e.g. <visualization>).
-std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options,
-                                          ErrorList* errors, ErrorList* warnings = nullptr);
-/// Same, from text; `path` names it in messages and anchors relative paths.
-std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path,
-                                          const LoadOptions& options, ErrorList* errors,
+std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options, ErrorList* errors,
                                           ErrorList* warnings = nullptr);
+/// Same, from text; `path` names it in messages and anchors relative paths.
+std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path, const LoadOptions& options,
+                                          ErrorList* errors, ErrorList* warnings = nullptr);
 
 }  // namespace essaim

@@ -23,7 +23,8 @@ bool EndsWith(const std::string& s, const std::string& tail) {
 }
 
 bool IsFinalOutputName(const std::string& name) {
-  static const char* const kNames[] = {"summary.json", "metrics.json", "timeseries.csv", kRecordingFile, kMemoryLogFile, "replay.html"};
+  static const char* const kNames[] = {"summary.json", "metrics.json", "timeseries.csv",
+                                       kRecordingFile, kMemoryLogFile, "replay.html"};
   for (const char* n : kNames)
     if (name == n) return true;
   return name.rfind("snapshot-", 0) == 0 && EndsWith(name, ".png");
@@ -167,7 +168,8 @@ bool OutFolderLock::Acquire(const std::string& dir, std::string* error) {
     if (::fstat(fd, &held) == 0 && ::stat(path_.c_str(), &there) == 0 && held.st_ino == there.st_ino &&
         held.st_dev == there.st_dev) {
       const std::string pid = std::to_string(::getpid()) + "\n";
-      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {}  // the pid is for messages only
+      if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+      }  // the pid is for messages only
       fd_ = fd;
       return true;
     }

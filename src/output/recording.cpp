@@ -233,9 +233,7 @@ Color ObstacleLed(const ObstacleDef& o) {
   return Color{0, 0, 0, 255};
 }
 
-uint16_t PackRgb565(Color c) {
-  return static_cast<uint16_t>(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3));
-}
+uint16_t PackRgb565(Color c) { return static_cast<uint16_t>(((c.r >> 3) << 11) | ((c.g >> 2) << 5) | (c.b >> 3)); }
 
 Color UnpackRgb565(uint16_t v) {
   unsigned r = (v >> 11) & 31, g = (v >> 5) & 63, b = v & 31;
@@ -495,9 +493,9 @@ bool Bounded(double v, double lo, double hi) { return std::isfinite(v) && v >= l
 
 bool SaneScale(const RecordingScene& s) {
   return Bounded(s.arena_min.x(), -kMaxCoordinate, kMaxCoordinate) &&
-         Bounded(s.arena_min.y(), -kMaxCoordinate, kMaxCoordinate) &&
-         Bounded(s.arena_size.x(), 1e-3, kMaxCoordinate) && Bounded(s.arena_size.y(), 1e-3, kMaxCoordinate) &&
-         Bounded(s.position_unit, 1e-9, 1.0) && Bounded(s.robot_radius, 0, 100) && s.every >= 1;
+         Bounded(s.arena_min.y(), -kMaxCoordinate, kMaxCoordinate) && Bounded(s.arena_size.x(), 1e-3, kMaxCoordinate) &&
+         Bounded(s.arena_size.y(), 1e-3, kMaxCoordinate) && Bounded(s.position_unit, 1e-9, 1.0) &&
+         Bounded(s.robot_radius, 0, 100) && s.every >= 1;
 }
 
 /// Width and height from a PNG's IHDR chunk (bytes 16..23), 0 when it is not a PNG.
@@ -725,8 +723,10 @@ size_t Recording::FrameAtOrBefore(uint64_t tick) const {
   size_t lo = 0, hi = frame_count_;  // first frame with Tick > tick, by bisection
   while (lo < hi) {
     size_t mid = (lo + hi) / 2;
-    if (Tick(mid) <= tick) lo = mid + 1;
-    else hi = mid;
+    if (Tick(mid) <= tick)
+      lo = mid + 1;
+    else
+      hi = mid;
   }
   return lo == 0 ? 0 : lo - 1;
 }

@@ -20,9 +20,9 @@ constexpr const char* kRecordingFile = "recording.bin";
 constexpr uint32_t kRecordingVersion = 2;  // 2: LED colour of obstacles
 
 /// Bytes of one recorded robot and one movable obstacle in a frame.
-constexpr uint32_t kRecordedRobotBytes = 10;    // i16 x, i16 y, u16 yaw, u16 rgb565, u8 battery, u8 flags
-constexpr uint32_t kRecordedMovableBytes = 8;   // i16 x, i16 y, u16 yaw, u16 rgb565
-constexpr uint32_t kFrameTickBytes = 4;         // u32 tick
+constexpr uint32_t kRecordedRobotBytes = 10;   // i16 x, i16 y, u16 yaw, u16 rgb565, u8 battery, u8 flags
+constexpr uint32_t kRecordedMovableBytes = 8;  // i16 x, i16 y, u16 yaw, u16 rgb565
+constexpr uint32_t kFrameTickBytes = 4;        // u32 tick
 
 /// Flags of a recorded robot.
 constexpr uint8_t kRecAlive = 1;         // not killed by the loop functions / battery
@@ -47,25 +47,25 @@ struct RecordedObstacle {
 
 struct RecordedLight {
   std::string id;
-  Vec3 position = Vec3::Zero();   // m
+  Vec3 position = Vec3::Zero();  // m
   Color color;
   double intensity = 1;
 };
 
 /// What never changes during a run.
 struct RecordingScene {
-  std::string experiment;         // the .argos path as given to essaim run
+  std::string experiment;  // the .argos path as given to essaim run
   uint64_t seed = 0;
   uint32_t ticks_per_second = 10;
-  uint32_t length_ticks = 0;      // planned length (0: unlimited)
-  uint32_t every = 1;             // a frame every `every` ticks (plus the last tick)
-  Vec2 arena_min = Vec2::Zero();  // m
-  Vec2 arena_size = Vec2::Ones(); // m
-  double position_unit = 0.001;   // m per quantisation step of a position
-  double robot_radius = 0;        // m
+  uint32_t length_ticks = 0;       // planned length (0: unlimited)
+  uint32_t every = 1;              // a frame every `every` ticks (plus the last tick)
+  Vec2 arena_min = Vec2::Zero();   // m
+  Vec2 arena_size = Vec2::Ones();  // m
+  double position_unit = 0.001;    // m per quantisation step of a position
+  double robot_radius = 0;         // m
   std::vector<std::string> robot_ids;
   std::vector<RecordedObstacle> obstacles;
-  std::vector<int> movable;       // indices into obstacles that move, in frame order
+  std::vector<int> movable;  // indices into obstacles that move, in frame order
   std::vector<RecordedLight> lights;
   /// Floor as PNG bytes (8-bit RGB, top row = arena max y, as any image); empty: none.
   std::string floor_png;
@@ -74,9 +74,9 @@ struct RecordingScene {
 
 /// One robot in one frame, dequantised.
 struct RecordedRobot {
-  double x = 0, y = 0, yaw = 0;   // m, m, rad in [0, 2pi)
-  Color color;                    // first non-black LED (RGB565 precision); black: none lit
-  double battery = 1;             // charge / full charge, 1/255 precision
+  double x = 0, y = 0, yaw = 0;  // m, m, rad in [0, 2pi)
+  Color color;                   // first non-black LED (RGB565 precision); black: none lit
+  double battery = 1;            // charge / full charge, 1/255 precision
   bool alive = true;
   bool controller_ok = true;
 };
@@ -123,12 +123,12 @@ class RecordingWriter {
   RecordingScene scene_;
   std::vector<EntityRef> movable_refs_;  // the recorded movable obstacles, found by ref as indices shift
   size_t header_bytes_ = 0;
-  size_t added_seen_ = 0;                 // entries of EntityStore::Added() already looked at
-  std::vector<EntityRef> late_refs_;      // obstacles added after Open: extra slots
+  size_t added_seen_ = 0;             // entries of EntityStore::Added() already looked at
+  std::vector<EntityRef> late_refs_;  // obstacles added after Open: extra slots
   std::vector<RecordedObstacle> late_obstacles_;
   std::vector<RecordedLight> late_lights_;
-  std::vector<uint8_t> late_bytes_;       // their slots, frame after frame from late_first_frame_
-  std::vector<size_t> late_frame_end_;    // end of each such frame's slots in late_bytes_
+  std::vector<uint8_t> late_bytes_;     // their slots, frame after frame from late_first_frame_
+  std::vector<size_t> late_frame_end_;  // end of each such frame's slots in late_bytes_
   uint64_t late_first_frame_ = 0;
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0;

@@ -125,8 +125,10 @@ bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const
   std::vector<std::string> failed;  // this function's own failures, for `error`
   auto write = [&](const char* name, const std::string& content) {
     std::string err;
-    if (WriteFileAtomic(JoinPath(dir, name), content, &err)) info.outputs.push_back(name);
-    else failed.push_back(err);
+    if (WriteFileAtomic(JoinPath(dir, name), content, &err))
+      info.outputs.push_back(name);
+    else
+      failed.push_back(err);
   };
   if (!MakeDirs(dir, error)) return false;
   if (metrics) write("metrics.json", DumpJson(ToJson(*metrics)));

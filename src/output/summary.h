@@ -15,7 +15,7 @@ namespace essaim {
 struct RunInfo : RunOutcome {
   std::string version;
   double wall_seconds = 0;
-  std::vector<std::string> outputs; // file names written
+  std::vector<std::string> outputs;  // file names written
   /// Outputs that could not be written (a full disk): they make the status "failed" and
   /// go into summary.json's "failure".
   std::vector<std::string> output_errors;

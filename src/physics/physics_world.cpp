@@ -22,7 +22,7 @@ int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
 
 b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
 
-constexpr double kMaxStaticPiece = 1.0;  // m, longest side of one static box fixture
+constexpr double kMaxStaticPiece = 1.0;    // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
 }  // namespace
 
@@ -219,8 +219,10 @@ void PhysicsWorld::RemoveObstacle(int index) {
   for (size_t r = 0; r < impl_->grips.size(); ++r) {
     GripTarget& t = impl_->grips[r].target;
     if (t.kind != BodyKind::Obstacle) continue;
-    if (t.index == index) Release(static_cast<int>(r));  // before the body takes the joint with it
-    else if (t.index > index) --t.index;
+    if (t.index == index)
+      Release(static_cast<int>(r));  // before the body takes the joint with it
+    else if (t.index > index)
+      --t.index;
   }
   impl_->world.DestroyBody(body);  // its fixtures and friction joint too
   obstacles_.erase(obstacles_.begin() + index);
@@ -276,9 +278,7 @@ Vec2 PhysicsWorld::RobotVelocity(int robot) const {
   return {v.x, v.y};
 }
 
-double PhysicsWorld::RobotAngularVelocity(int robot) const {
-  return AsBody(robots_[robot])->GetAngularVelocity();
-}
+double PhysicsWorld::RobotAngularVelocity(int robot) const { return AsBody(robots_[robot])->GetAngularVelocity(); }
 
 void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   ++impl_->shapes_moved;
@@ -378,8 +378,8 @@ class GripQuery : public b2QueryCallback {
     double gap = out.distance - f->GetShape()->m_radius - kGripperRadius;
     if (gap >= 0) return true;
     bool better = best.kind == BodyKind::None || gap < gap_ ||
-                  (gap == gap_ && (static_cast<int>(kind) < static_cast<int>(best.kind) ||
-                                   (kind == best.kind && index < best.index)));
+                  (gap == gap_ &&
+                   (static_cast<int>(kind) < static_cast<int>(best.kind) || (kind == best.kind && index < best.index)));
     if (better) {
       best.kind = kind;
       best.index = index;
@@ -494,8 +494,9 @@ void FileRayCircles(Impl* im) {
   // in four cells each.
   im->ray_grid.CoverSpan(lo, hi, kRayCellSize, std::max(4096.0, 4.0 * n));
   im->ray_grid.Reserve(4 * circles.size(), circles.size());
-  im->ray_grid.FileBoxes(n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
-                         [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
+  im->ray_grid.FileBoxes(
+      n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
+      [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
 }
 }  // namespace
 
@@ -546,14 +547,15 @@ void PhysicsWorld::GatherRayCandidates(const Vec2& center, double radius, double
   out->scratch.clear();
   const double r = radius + kCircleSlack;
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, impl_->ray_circles, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center,
-          r, z, exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
+  Collect(
+      impl_->ray_grid, impl_->ray_circles, center.x() - r, center.y() - r, center.x() + r, center.y() + r, center, r, z,
+      exclude_robot, [](double, double, double) { return true; }, &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
 
-void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1,
-                                         double z, int exclude_robot, RayCandidates* out) const {
+void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, const Vec2& u0, const Vec2& u1, double z,
+                                         int exclude_robot, RayCandidates* out) const {
   EnsureRayGrid();
   out->scratch.clear();
   const double r = radius + kCircleSlack;
@@ -571,9 +573,10 @@ void PhysicsWorld::GatherWedgeCandidates(const Vec2& center, double radius, cons
   for (const Vec2& axis : {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)})
     if (NearWedge(axis.x(), axis.y(), 0, u0, u1)) cover(axis);
   double lo = 0, hi = 0;  // m, range of `near`
-  Collect(impl_->ray_grid, impl_->ray_circles, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack,
-          y1 + kCircleSlack, center, r, z, exclude_robot,
-          [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); }, &out->scratch, &lo, &hi);
+  Collect(
+      impl_->ray_grid, impl_->ray_circles, x0 - kCircleSlack, y0 - kCircleSlack, x1 + kCircleSlack, y1 + kCircleSlack,
+      center, r, z, exclude_robot, [&](double dx, double dy, double cr) { return NearWedge(dx, dy, cr, u0, u1); },
+      &out->scratch, &lo, &hi);
   out->center = center;
   SortNearestFirst(lo, hi, out);
 }
@@ -619,11 +622,12 @@ void PhysicsWorld::SortNearestFirst(double lo, double hi, RayCandidates* out) {
     return;
   }
   ends.resize(steps + 1);
-  BucketSort(static_cast<int>(n), &ends, [&](int i, auto&& file) { file(step_of(found[i].near)); },
-             [&](int slot, int i) {
-               items[slot] = found[i];
-               items[slot].near = lo + std::max(step_of(found[i].near) - 1, 0) * step;
-             });
+  BucketSort(
+      static_cast<int>(n), &ends, [&](int i, auto&& file) { file(step_of(found[i].near)); },
+      [&](int slot, int i) {
+        items[slot] = found[i];
+        items[slot].near = lo + std::max(step_of(found[i].near) - 1, 0) * step;
+      });
 }
 
 RayHit PhysicsWorld::CastRay(const RayCandidates& candidates, const Vec2& from, const Vec2& to) const {

@@ -26,8 +26,8 @@ constexpr double kGripperRadius = 0.01;  // m
 
 struct RayHit {
   BodyKind kind = BodyKind::None;
-  int index = -1;          // robot or obstacle index
-  double distance = 0;     // m from the ray start
+  int index = -1;       // robot or obstacle index
+  double distance = 0;  // m from the ray start
   Vec2 point = Vec2::Zero();
   bool Hit() const { return kind != BodyKind::None; }
 };
@@ -46,7 +46,7 @@ struct RayCandidate {
 /// allocates.
 struct RayCandidates {
   std::vector<RayCandidate> items;
-  Vec2 center = Vec2::Zero();  // m, the gather centre
+  Vec2 center = Vec2::Zero();         // m, the gather centre
   std::vector<RayCandidate> scratch;  // the gather's unsorted list
   std::vector<int> bucket_ends;       // the gather's counting sort
 };
@@ -87,8 +87,7 @@ class PhysicsWorld {
   RayHit CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const;
   /// Rays cast from within `radius` of `center`, at height `z`, ignoring robot
   /// `exclude_robot`: gathers once (one tree query) every shape such a ray can hit.
-  void GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot,
-                           RayCandidates* out) const;
+  void GatherRayCandidates(const Vec2& center, double radius, double z, int exclude_robot, RayCandidates* out) const;
   /// GatherRayCandidates for rays on half-lines from `center`, within `radius` of it, whose
   /// directions lie between unit vectors `u0` and `u1` (counter-clockwise from u0, less than π
   /// on): only the shapes that come near that sector, from the grid cells over it. A scanner's

@@ -5,25 +5,24 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "output/atomic_file.h"
 #include "core/paths.h"
 #include "lua/host/watchdog.h"
 #include "lua/loop/lua_copy.h"
-#include "output/out_folder.h"
 #include "model/xml_loader.h"
+#include "output/atomic_file.h"
+#include "output/out_folder.h"
 #include "output/recording.h"
-#include "sim/run_end.h"
 #include "output/summary.h"
+#include "sim/run_end.h"
 #include "sim/step.h"
 #ifdef ESSAIM_HAVE_CAIRO
 #include "app/render_cairo.h"
@@ -93,7 +92,8 @@ class Simulation {
     load_.seed = seed;
     load_.threads = threads;
     if (overrides)
-      for (auto item : *overrides) load_.overrides.push_back(py::str(item.first).cast<std::string>() + "=" + ValueText(item.second));
+      for (auto item : *overrides)
+        load_.overrides.push_back(py::str(item.first).cast<std::string>() + "=" + ValueText(item.second));
     Load();
   }
 
@@ -170,8 +170,9 @@ class Simulation {
     if (moved.empty()) return;
     std::string names;
     for (const std::string& name : moved) names += (names.empty() ? "" : ", ") + name;
-    py::module_::import("warnings").attr("warn")(out_ + " held an earlier run's outputs; moved them into " +
-                                                 JoinPath(out_, kPreviousRunFolder) + ": " + names);
+    py::module_::import("warnings")
+        .attr("warn")(out_ + " held an earlier run's outputs; moved them into " + JoinPath(out_, kPreviousRunFolder) +
+                      ": " + names);
   }
 
   /// Hands the log lines and controller errors gathered while stepping to Python: lines to
@@ -194,8 +195,9 @@ class Simulation {
 
   void Log(const py::object& logger, const LogLine& l) const {
     const int level = l.from.robot == kLogHost ? 40 : l.stream == 'E' ? 30 : 20;
-    std::string who = l.from.robot >= 0 ? model_->robots[static_cast<size_t>(l.from.robot)].id
-                      : l.from.robot == kLogLoopFunctions ? std::string("loop functions") : std::string();
+    std::string who = l.from.robot >= 0                   ? model_->robots[static_cast<size_t>(l.from.robot)].id
+                      : l.from.robot == kLogLoopFunctions ? std::string("loop functions")
+                                                          : std::string();
     py::dict extra;
     extra["robot"] = l.from.robot >= 0 ? py::object(py::str(who)) : py::object(py::none());
     extra["tick"] = l.from.tick;
@@ -212,7 +214,8 @@ class Simulation {
       uint64_t chunk = std::min<uint64_t>(n - done, kSignalCheckTicks);
       {
         py::gil_scoped_release nogil;
-        for (uint64_t i = 0; i < chunk && status_ == StepStatus::Running && logs_.size() < kMaxHeldLogLines; ++i, ++done)
+        for (uint64_t i = 0; i < chunk && status_ == StepStatus::Running && logs_.size() < kMaxHeldLogLines;
+             ++i, ++done)
           status_ = Step(w);
       }
       Report();
@@ -266,7 +269,8 @@ class Simulation {
 
   py::array_t<uint8_t> LedColors() const {
     const World& w = Live();
-    py::array_t<uint8_t> a({static_cast<py::ssize_t>(w.robots.size()), py::ssize_t{footbot::kLedCount}, py::ssize_t{3}});
+    py::array_t<uint8_t> a(
+        {static_cast<py::ssize_t>(w.robots.size()), py::ssize_t{footbot::kLedCount}, py::ssize_t{3}});
     auto m = a.mutable_unchecked<3>();
     for (size_t i = 0; i < w.robots.size(); ++i)
       for (int k = 0; k < footbot::kLedCount; ++k) {
@@ -353,7 +357,8 @@ class Simulation {
     if (py::isinstance<py::int_>(robot)) {
       const long long i = robot.cast<long long>();
       if (i < 0 || static_cast<size_t>(i) >= robots.size())
-        throw py::index_error("robot index " + std::to_string(i) + " out of range (" + std::to_string(robots.size()) + " robots)");
+        throw py::index_error("robot index " + std::to_string(i) + " out of range (" + std::to_string(robots.size()) +
+                              " robots)");
       return static_cast<size_t>(i);
     }
     const std::string id = py::str(robot).cast<std::string>();
@@ -375,8 +380,8 @@ class Simulation {
       Recording rec;
       SnapshotOptions opt;
       opt.size = size;
-      ok = writer.Open(file, Live(), 1, &error) && writer.Finish(Live(), &error) && Recording::Read(file, &rec, &error) &&
-           RenderSnapshotPng(rec, rec.FrameCount() - 1, opt, &png, &error);
+      ok = writer.Open(file, Live(), 1, &error) && writer.Finish(Live(), &error) &&
+           Recording::Read(file, &rec, &error) && RenderSnapshotPng(rec, rec.FrameCount() - 1, opt, &png, &error);
     }
     shutil.attr("rmtree")(dir, py::arg("ignore_errors") = true);
     if (!ok) throw Error("render: " + error);
@@ -428,8 +433,7 @@ class RecordingData {
     std::string error;
     Recording rec;
     const bool folder = py::module_::import("os.path").attr("isdir")(path).cast<bool>();
-    if (!Recording::Read(folder ? JoinPath(path, kRecordingFile) : path, &rec, &error))
-      throw Simulation::Error(error);
+    if (!Recording::Read(folder ? JoinPath(path, kRecordingFile) : path, &rec, &error)) throw Simulation::Error(error);
     const auto frames = static_cast<py::ssize_t>(rec.FrameCount()), robots = static_cast<py::ssize_t>(rec.RobotCount());
     std::vector<uint64_t> ticks(static_cast<size_t>(frames));
     py::array_t<double> poses({frames, robots, py::ssize_t{3}}), battery({frames, robots});
@@ -461,7 +465,8 @@ class RecordingData {
     columns["tick"] = np.attr("repeat")(ticks_, robots);
     columns["robot"] = np.attr("tile")(np.attr("array")(robot_ids_, py::arg("dtype") = "object"), py::len(ticks_));
     const char* names[] = {"x", "y", "yaw"};
-    for (int k = 0; k < 3; ++k) columns[names[k]] = poses[py::make_tuple(py::slice(py::none(), py::none(), py::none()), k)];
+    for (int k = 0; k < 3; ++k)
+      columns[names[k]] = poses[py::make_tuple(py::slice(py::none(), py::none(), py::none()), k)];
     columns["alive"] = alive_.attr("reshape")(-1);
     columns["battery"] = battery_.attr("reshape")(-1);
     return py::module_::import("pandas").attr("DataFrame")(columns);
@@ -488,7 +493,8 @@ PYBIND11_MODULE(essaim, m) {
            py::arg("overrides") = py::none(), py::arg("out") = py::none(), py::arg("strict") = false,
            "Loads an .argos experiment. overrides: {--set path: value}; out: folder for the CLI's output files; "
            "strict: unknown attributes in the file are errors, not warnings.")
-      .def("step", &Simulation::StepN, py::arg("n") = 1, "Steps n ticks (fewer at the experiment's end); returns those stepped.")
+      .def("step", &Simulation::StepN, py::arg("n") = 1,
+           "Steps n ticks (fewer at the experiment's end); returns those stepped.")
       .def("run", &Simulation::Run, "Steps to the experiment's end; returns the ticks stepped.")
       .def_property_readonly("tick", &Simulation::Tick)
       .def_property_readonly("finished", &Simulation::Finished, "True once the experiment has ended (or failed).")
@@ -500,16 +506,19 @@ PYBIND11_MODULE(essaim, m) {
       .def("finish", &Simulation::Finish, "Ends the run; returns post_experiment's table (metrics.json) as a dict.")
       .def_property_readonly("summary", &Simulation::Summary,
                              "summary.json's content; before finish(), the run so far (status 'running')")
-      .def_property_readonly("errors", &Simulation::Errors,
-                             "controller errors so far: [{'robot', 'tick', 'message'}] (also logged to the 'essaim' logger)")
+      .def_property_readonly(
+          "errors", &Simulation::Errors,
+          "controller errors so far: [{'robot', 'tick', 'message'}] (also logged to the 'essaim' logger)")
       .def("reset", &Simulation::Reset, py::arg("seed") = py::none(),
            "Starts again from tick 0 (files read again), with this seed or the same one.")
-      .def("lua_global", &Simulation::LuaGlobal, py::arg("robot"), py::arg("name"),
-           "A robot's (id or index) Lua global as Python data: numbers, strings, booleans, lists, dicts; None if unset.")
+      .def(
+          "lua_global", &Simulation::LuaGlobal, py::arg("robot"), py::arg("name"),
+          "A robot's (id or index) Lua global as Python data: numbers, strings, booleans, lists, dicts; None if unset.")
       .def("render", &Simulation::Render, py::arg("path") = py::none(), py::arg("size") = 800,
            "The arena now as PNG (as `essaim snapshot`): bytes, or written to path.")
       .def("close", &Simulation::Close)
-      .def("__enter__", [](Simulation& s) -> Simulation& { return s; }, py::return_value_policy::reference)
+      .def(
+          "__enter__", [](Simulation& s) -> Simulation& { return s; }, py::return_value_policy::reference)
       .def("__exit__", [](Simulation& s, py::object, py::object, py::object) { s.Close(); })
       .def("_repr_png_", [](const Simulation& s) { return s.Render(std::nullopt, 800); });
   using essaim::RecordingData;
@@ -521,7 +530,9 @@ PYBIND11_MODULE(essaim, m) {
       .def_readonly("battery", &RecordingData::battery_, "float64 (frames, robots): charge / full (1/255 steps)")
       .def_readonly("ticks_per_second", &RecordingData::ticks_per_second_)
       .def_readonly("seed", &RecordingData::seed_)
-      .def("to_pandas", &RecordingData::ToPandas, "One row per (frame, robot): tick, robot, x, y, yaw, alive, battery.");
-  m.def("read_recording", [](const std::string& path) { return RecordingData(path); }, py::arg("path"),
-        "Reads a run's recording.bin (the file, or the run folder holding it).");
+      .def("to_pandas", &RecordingData::ToPandas,
+           "One row per (frame, robot): tick, robot, x, y, yaw, alive, battery.");
+  m.def(
+      "read_recording", [](const std::string& path) { return RecordingData(path); }, py::arg("path"),
+      "Reads a run's recording.bin (the file, or the run folder holding it).");
 }

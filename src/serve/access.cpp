@@ -45,14 +45,17 @@ bool SameSecret(const std::string& a, const std::string& b) {
 // "1.2.3.4:PORT" or "[v6]:PORT" with the server's port.
 bool IsAddressWithPort(const std::string& host, int port) {
   const std::string suffix = ":" + std::to_string(port);
-  if (host.size() <= suffix.size() || host.compare(host.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+  if (host.size() <= suffix.size() || host.compare(host.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
   std::string address = host.substr(0, host.size() - suffix.size());
   if (address.size() > 2 && address.front() == '[' && address.back() == ']')
     return address.find_first_not_of("0123456789abcdefABCDEF:.", 1) == address.size() - 1;
   int dots = 0;
   for (char c : address) {
-    if (c == '.') ++dots;
-    else if (c < '0' || c > '9') return false;
+    if (c == '.')
+      ++dots;
+    else if (c < '0' || c > '9')
+      return false;
   }
   return dots == 3;
 }

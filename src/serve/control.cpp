@@ -57,11 +57,16 @@ bool ParseControl(const std::string& body, ControlCommand* out, std::string* err
   }
   const std::string cmd = doc["cmd"].get<std::string>();
   *out = ControlCommand{};
-  if (cmd == "play") out->kind = ControlKind::Play;
-  else if (cmd == "pause") out->kind = ControlKind::Pause;
-  else if (cmd == "step" || cmd == "run") out->kind = ControlKind::Step;
-  else if (cmd == "speed") out->kind = ControlKind::Speed;
-  else if (cmd == "reset") out->kind = ControlKind::Reset;
+  if (cmd == "play")
+    out->kind = ControlKind::Play;
+  else if (cmd == "pause")
+    out->kind = ControlKind::Pause;
+  else if (cmd == "step" || cmd == "run")
+    out->kind = ControlKind::Step;
+  else if (cmd == "speed")
+    out->kind = ControlKind::Speed;
+  else if (cmd == "reset")
+    out->kind = ControlKind::Reset;
   else {
     *error = "unknown cmd '" + cmd + "' (play, pause, step, run, speed or reset)";
     return false;

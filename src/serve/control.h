@@ -11,10 +11,10 @@ enum class ControlKind { Play, Pause, Step, Speed, Reset };
 
 struct ControlCommand {
   ControlKind kind = ControlKind::Pause;
-  uint64_t ticks = 1;             // step / run: how many ticks, then paused
-  double speed = 1;               // speed: multiple of real time, 0 = as fast as it goes
-  std::optional<uint64_t> seed;   // reset: this seed from now on
-  bool new_seed = false;          // reset: a random seed
+  uint64_t ticks = 1;            // step / run: how many ticks, then paused
+  double speed = 1;              // speed: multiple of real time, 0 = as fast as it goes
+  std::optional<uint64_t> seed;  // reset: this seed from now on
+  bool new_seed = false;         // reset: a random seed
 };
 
 /// False with `error` for a body that is not a JSON object with a known "cmd" and valid

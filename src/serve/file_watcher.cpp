@@ -55,8 +55,10 @@ void FileWatcher::Watch(const std::vector<std::string>& files) {
   error_.clear();
   for (const std::string& folder : folders) {
     int wd = inotify_add_watch(fd_, folder.c_str(), kEvents);
-    if (wd < 0) error_ += (error_.empty() ? "" : "; ") + ("cannot watch " + folder + ": " + std::strerror(errno));
-    else folders_[wd] = folder;
+    if (wd < 0)
+      error_ += (error_.empty() ? "" : "; ") + ("cannot watch " + folder + ": " + std::strerror(errno));
+    else
+      folders_[wd] = folder;
   }
 }
 

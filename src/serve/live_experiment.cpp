@@ -7,8 +7,8 @@
 #include "core/json.h"
 #include "core/strings.h"
 #include "lua/loop/lua_inspect.h"
-#include "serve/experiment_inputs.h"
 #include "output/recording.h"
+#include "serve/experiment_inputs.h"
 
 namespace essaim {
 
@@ -56,7 +56,8 @@ Json FrameJson(const World& w, const FrameInfo& info) {
     const ObstacleDef& o = w.model.obstacles[k];
     if (!o.movable) continue;
     Pose2 p = w.physics.ObstaclePose(static_cast<int>(k));
-    movable.push_back(Json::array({k, Round(p.x, 4), Round(p.y, 4), Round(Heading(p.yaw), 4), LedOrNull(ObstacleLed(o))}));
+    movable.push_back(
+        Json::array({k, Round(p.x, 4), Round(p.y, 4), Round(Heading(p.yaw), 4), LedOrNull(ObstacleLed(o))}));
   }
   f["movable"] = std::move(movable);
   f["obstacles"] = w.model.obstacles.size();
@@ -80,14 +81,26 @@ Json SceneJson(const World& w) {
   j["ids"] = s.robot_ids;
   Json obstacles = Json::array();
   for (const RecordedObstacle& o : s.obstacles)
-    obstacles.push_back({{"id", o.id}, {"cylinder", o.cylinder}, {"movable", o.movable}, {"x", o.pose.x},
-                         {"y", o.pose.y}, {"yaw", o.pose.yaw}, {"sx", o.size_x}, {"sy", o.size_y}, {"r", o.radius},
+    obstacles.push_back({{"id", o.id},
+                         {"cylinder", o.cylinder},
+                         {"movable", o.movable},
+                         {"x", o.pose.x},
+                         {"y", o.pose.y},
+                         {"yaw", o.pose.yaw},
+                         {"sx", o.size_x},
+                         {"sy", o.size_y},
+                         {"r", o.radius},
                          {"led", LedOrNull(o.led)}});
   j["obstacles"] = std::move(obstacles);
   Json lights = Json::array();
   for (const RecordedLight& l : s.lights)
-    lights.push_back({{"id", l.id}, {"x", l.position.x()}, {"y", l.position.y()}, {"r", l.color.r}, {"g", l.color.g},
-                      {"b", l.color.b}, {"intensity", l.intensity}});
+    lights.push_back({{"id", l.id},
+                      {"x", l.position.x()},
+                      {"y", l.position.y()},
+                      {"r", l.color.r},
+                      {"g", l.color.g},
+                      {"b", l.color.b},
+                      {"intensity", l.intensity}});
   j["lights"] = std::move(lights);
   j["floor"] = s.floor_png.empty() ? std::string() : Base64Encode(s.floor_png);
   return j;

@@ -150,8 +150,12 @@ HttpResponse LiveServer::Impl::Log(const HttpRequest& req) {
     std::string who = l.robot >= 0 && static_cast<size_t>(l.robot) < robot_ids.size()
                           ? robot_ids[l.robot]
                           : (l.robot == kLogLoopFunctions ? "loop_functions" : "essaim");
-    lines.push_back({{"n", l.number}, {"tick", l.tick}, {"robot", l.robot}, {"who", who},
-                     {"error", l.stream == 'E'}, {"text", l.text}});
+    lines.push_back({{"n", l.number},
+                     {"tick", l.tick},
+                     {"robot", l.robot},
+                     {"who", who},
+                     {"error", l.stream == 'E'},
+                     {"text", l.text}});
   }
   return JsonAnswer(200, {{"total", log_total}, {"lines", std::move(lines)}});
 }
@@ -288,9 +292,10 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
   }
   series_copied = 0;
   CopySeries();
-  if (!experiment->Error().empty()) std::fprintf(stderr, "essaim serve: %s\n", experiment->Error().c_str());
-  else if (experiment->run() > 1) std::fprintf(stderr, "essaim serve: %s, run %llu\n", what,
-                                               static_cast<unsigned long long>(experiment->run()));
+  if (!experiment->Error().empty())
+    std::fprintf(stderr, "essaim serve: %s\n", experiment->Error().c_str());
+  else if (experiment->run() > 1)
+    std::fprintf(stderr, "essaim serve: %s, run %llu\n", what, static_cast<unsigned long long>(experiment->run()));
 }
 
 /// On a change to a watched file: reload, reset, pause.
@@ -333,8 +338,8 @@ void LiveServer::Impl::Pace() {
   const World* w = experiment->world();
   if (speed <= 0 || !w) return;
   double rate = speed * w->model.experiment.ticks_per_second;
-  auto due = pace_start + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>((w->tick - pace_tick) / rate));
+  auto due = pace_start +
+             std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>((w->tick - pace_tick) / rate));
   auto now = Clock::now();
   if (due < now - std::chrono::milliseconds(250)) {  // far behind: do not try to catch up
     pace_start = now;
@@ -359,8 +364,12 @@ void LiveServer::Impl::Publish() {
   }
   const World* w = experiment->world();
   frames.Publish(w ? FrameText(*w, info)
-                   : DumpJsonLine(Json{{"tick", 0}, {"run", info.run}, {"paused", true}, {"speed", speed},
-                                       {"error", info.error}, {"robots", Json::array()}}));
+                   : DumpJsonLine(Json{{"tick", 0},
+                                       {"run", info.run},
+                                       {"paused", true},
+                                       {"speed", speed},
+                                       {"error", info.error},
+                                       {"robots", Json::array()}}));
 }
 
 void LiveServer::Impl::Loop(const std::atomic<int>& stop) {
@@ -381,9 +390,7 @@ void LiveServer::Impl::Loop(const std::atomic<int>& stop) {
   }
 }
 
-LiveServer::LiveServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
-  impl_->options = std::move(options);
-}
+LiveServer::LiveServer(ServeOptions options) : impl_(std::make_unique<Impl>()) { impl_->options = std::move(options); }
 
 LiveServer::~LiveServer() {
   impl_->frames.Close();
@@ -413,9 +420,9 @@ bool LiveServer::Start(std::string* error) {
 
 std::string LiveServer::Url() const {
   const std::string& host = impl_->options.host;
-  std::string shown = host == "0.0.0.0" || host == "::" ? "127.0.0.1"
+  std::string shown = host == "0.0.0.0" || host == "::"     ? "127.0.0.1"
                       : host.find(':') != std::string::npos ? "[" + host + "]"
-                                                              : host;
+                                                            : host;
   return "http://" + shown + ":" + std::to_string(impl_->port) + "/?token=" + impl_->access.token;
 }
 

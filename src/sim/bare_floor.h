@@ -12,9 +12,9 @@ namespace essaim {
 /// stock allocator ("bare Lua 5.4", the definition), one on the run's own allocator
 /// (lua_guard's small-block pool), which isolates what the simulator adds.
 struct BareFloor {
-  double step_seconds = 0;  // sum of the bare step() calls, wall clock, stock allocator
-  double step_cpu_seconds = 0;  // the same, this thread's CPU time (robust on a busy machine)
-  double pool_step_seconds = 0;      // the same two on the run's allocator
+  double step_seconds = 0;       // sum of the bare step() calls, wall clock, stock allocator
+  double step_cpu_seconds = 0;   // the same, this thread's CPU time (robust on a busy machine)
+  double pool_step_seconds = 0;  // the same two on the run's allocator
   double pool_step_cpu_seconds = 0;
   long long robot_steps = 0;
   long long ticks = 0;

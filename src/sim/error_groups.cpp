@@ -22,14 +22,17 @@ std::vector<std::string> GroupControllerErrors(const std::vector<ControllerError
   for (size_t i = from; i < errors.size(); ++i) {
     std::string key = WithoutRobotPrefix(errors[i]);
     auto it = std::find_if(groups.begin(), groups.end(), [&](const Group& g) { return g.key == key; });
-    if (it == groups.end()) groups.push_back({std::move(key), i, {}});
-    else it->others.push_back(errors[i].robot);
+    if (it == groups.end())
+      groups.push_back({std::move(key), i, {}});
+    else
+      it->others.push_back(errors[i].robot);
   }
   std::vector<std::string> out;
   for (const Group& g : groups) {
     std::string text = errors[g.first].message;
     if (!g.others.empty()) {
-      text += "\n(the same error in " + std::to_string(g.others.size()) + " more robot" + (g.others.size() > 1 ? "s" : "") + ": ";
+      text += "\n(the same error in " + std::to_string(g.others.size()) + " more robot" +
+              (g.others.size() > 1 ? "s" : "") + ": ";
       for (size_t k = 0; k < g.others.size() && k < kIdsShown; ++k) text += (k ? ", " : "") + g.others[k];
       if (g.others.size() > kIdsShown) text += ", ...";
       text += ")";

@@ -66,8 +66,10 @@ void ActStage(World& w) {
   // ~0.1 µs a robot against ~5-10 µs to wake the pool: threads pay off from a few hundred.
   // Balanced: the tick does not wait for a worker slow to wake (it finds nothing left).
   constexpr int kParallelActMin = 256;
-  if (n >= kParallelActMin) w.pool->ParallelForBalanced(n, act);
-  else act(0, n);
+  if (n >= kParallelActMin)
+    w.pool->ParallelForBalanced(n, act);
+  else
+    act(0, n);
   for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
 }
 
@@ -76,8 +78,7 @@ void ActStage(World& w) {
 void PhysicsStage(World& w) {
   const Model& m = w.model;
   w.physics.Step(m.experiment.TickLength(), m.physics.iterations);
-  for (size_t i = 0; i < w.robots.size(); ++i)
-    UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
+  for (size_t i = 0; i < w.robots.size(); ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
 }
 
 // Who hears whom, where the LEDs are, after the robots moved.

@@ -78,8 +78,10 @@ void ThreadPool::Run(int n, bool balanced, Job job, void* ctx) {
   start_cv_.notify_all();
   Work(0, generation, job, ctx, n, balanced);
   std::unique_lock<std::mutex> lock(mutex_);
-  if (balanced) done_cv_.wait(lock, [&] { return done_items_.load(std::memory_order_acquire) == n; });
-  else done_cv_.wait(lock, [this] { return pending_ == 0; });
+  if (balanced)
+    done_cv_.wait(lock, [&] { return done_items_.load(std::memory_order_acquire) == n; });
+  else
+    done_cv_.wait(lock, [this] { return pending_ == 0; });
   job_ = nullptr;
 }
 

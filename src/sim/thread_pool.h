@@ -21,7 +21,8 @@ class ThreadPool {
   /// is allocated per call.
   template <class F>
   void ParallelFor(int n, F& f) {
-    Run(n, /*balanced=*/false, [](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f);
+    Run(
+        n, /*balanced=*/false, [](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f);
   }
   /// The same, but [0, n) is handed out in contiguous ranges, in order, to whichever thread
   /// is free (OpenMP's "guided" schedule: each range is the remainder over 4 × Size(), at
@@ -32,7 +33,8 @@ class ThreadPool {
   /// thread, never for the same item twice.
   template <class F>
   void ParallelForBalanced(int n, F& f) {
-    Run(n, /*balanced=*/true, [](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f);
+    Run(
+        n, /*balanced=*/true, [](void* c, int b, int e) { (*static_cast<F*>(c))(b, e); }, &f);
   }
 
  private:

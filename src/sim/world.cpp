@@ -24,7 +24,8 @@ bool BuildFloor(World& w, std::string* error) {
     f.pixels = m.floor.pixels;
   } else if (m.floor.source == FloorSource::LoopFunctions) {
     if (!w.loop_functions.HasFunction("floor_color")) {
-      *error = m.loop_functions.script + ": the floor comes from the loop functions but they define no floor_color(x, y)";
+      *error =
+          m.loop_functions.script + ": the floor comes from the loop functions but they define no floor_color(x, y)";
       return false;
     }
     // Sampled once at pixel centres: ground sensors then read a raster, thread-safe and
@@ -90,8 +91,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   }
   // Loop functions load first so the floor exists before anything senses it.
   w->loop_functions.SetLimits(w->options.lua);
-  if (!w->loop_functions.Load(w->model, &w->entities, &w->controllers, options.output_dir, error))
-    return nullptr;
+  if (!w->loop_functions.Load(w->model, &w->entities, &w->controllers, options.output_dir, error)) return nullptr;
   if (!BuildFloor(*w, error)) return nullptr;
 
   w->controllers.reserve(n);
@@ -115,7 +115,8 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   if (w->failure.empty()) w->failure = MissingStep(*w);
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)
-    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0)) options.log_sink('E', text, {0, kLogHost});
+    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0))
+      options.log_sink('E', text, {0, kLogHost});
   // A runtime error in init() is the run failing, not bad input: the World is returned
   // with `failure` set, so the caller can still write a summary (exit 1, docs/cli.md).
   std::string err;

@@ -43,9 +43,9 @@ constexpr int kLogHost = -2;
 
 struct SimOptions {
   LuaOptions lua;
-  std::string output_dir;      // given to the loop functions
-  bool strict = false;         // first controller error ends the run
-  int threads = -1;            // -1: the model's <system threads>
+  std::string output_dir;  // given to the loop functions
+  bool strict = false;     // first controller error ends the run
+  int threads = -1;        // -1: the model's <system threads>
   /// Receives log()/logerr() lines in robot order ('O' stdout, 'E' stderr, 'P' print) with
   /// who wrote them. Null: dropped.
   std::function<void(char stream, const std::string& line, const LogOrigin& from)> log_sink;
@@ -60,7 +60,7 @@ void ListModelInputs(const Model& model, InputFiles* inputs);
 
 /// A parameter given in the XML or by --set that nothing read during the run.
 struct UnreadParam {
-  std::string path;          // as --set names it: controllers.<id>.params.<key>, loop_functions.<key>
+  std::string path;  // as --set names it: controllers.<id>.params.<key>, loop_functions.<key>
   std::string key;
   std::string did_you_mean;  // the closest key that was read, or ""
   std::string script;        // the script that never read it
@@ -103,7 +103,7 @@ class World {
   std::vector<ControllerError> controller_errors;
   /// Filled when the run ends (EndRun), or by `essaim check`: see FindUnreadParams.
   std::vector<UnreadParam> unread_params;
-  std::string failure;         // set when the run must stop (strict, loop-function error)
+  std::string failure;  // set when the run must stop (strict, loop-function error)
   bool finished_by_loop_functions = false;
   int threads = 1;
   std::unique_ptr<ThreadPool> pool;

@@ -82,7 +82,7 @@ class UniformGrid {
   int columns_ = 1, rows_ = 1;
   /// (cells + 1): cell k's items are items_[cell_start_[k] .. cell_start_[k + 1]).
   std::vector<int> cell_start_ = {0, 0};
-  std::vector<int> items_;               // item numbers grouped by cell
+  std::vector<int> items_;                     // item numbers grouped by cell
   std::vector<int> first_column_, first_row_;  // per item: the first cell it is filed in
 };
 

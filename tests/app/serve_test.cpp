@@ -142,9 +142,10 @@ end
 )";
 
 std::string TwoRobots() {
-  std::string ctrl = "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
-                     "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors>"
-                     "<positioning implementation=\"default\"/></sensors><params script=\"ctrl.lua\"/></lua_controller>";
+  std::string ctrl =
+      "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
+      "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors>"
+      "<positioning implementation=\"default\"/></sensors><params script=\"ctrl.lua\"/></lua_controller>";
   std::string xml = Experiment(FootBot("fb0", 1, 2, 90, "c") + FootBot("fb1", -1, 0, 0, "c"), ctrl, 100);
   xml.replace(xml.find("<media/>"), 8, "<media><led id=\"leds\"/></media>");
   return xml;
@@ -193,10 +194,18 @@ TEST(ServeFileWatcher, SavesInPlaceByRenameAndRecreationAreSeen) {
   ASSERT_TRUE(w.Error().empty()) << w.Error();
   EXPECT_FALSE(w.WaitForChange(50));
   // Another file of the folder is no change.
-  { FILE* f = std::fopen(other.c_str(), "w"); std::fputs("x", f); std::fclose(f); }
+  {
+    FILE* f = std::fopen(other.c_str(), "w");
+    std::fputs("x", f);
+    std::fclose(f);
+  }
   EXPECT_FALSE(w.WaitForChange(100));
   // In place.
-  { FILE* f = std::fopen(watched.c_str(), "w"); std::fputs("-- two", f); std::fclose(f); }
+  {
+    FILE* f = std::fopen(watched.c_str(), "w");
+    std::fputs("-- two", f);
+    std::fclose(f);
+  }
   std::vector<std::string> changed;
   ASSERT_TRUE(w.WaitForChange(5000, &changed));
   EXPECT_EQ(changed, std::vector<std::string>{watched});
@@ -238,8 +247,8 @@ TEST(ServeLiveExperiment, AScriptErrorKeepsTheLastGoodWorldAndAFixClearsIt) {
   EXPECT_EQ(inspected["globals"]["count"], 5);
   EXPECT_EQ(inspected["globals"]["state"]["target"]["x"], 1.5);
   EXPECT_EQ(inspected["globals"].begin().key(), "count");  // keys sorted, whatever pairs() gives
-  EXPECT_FALSE(inspected["globals"].contains("string"));  // the standard library is left out
-  EXPECT_FALSE(inspected["globals"].contains("step"));    // and functions
+  EXPECT_FALSE(inspected["globals"].contains("string"));   // the standard library is left out
+  EXPECT_FALSE(inspected["globals"].contains("step"));     // and functions
   EXPECT_TRUE(inspected["readings"].contains("positioning"));
   EXPECT_TRUE(live.Inspect(7).IsNull());
 

@@ -30,13 +30,20 @@ const char* kPlainController =
 std::string SnapshotExperiment() {
   return "<argos-configuration>\n"
          "  <framework><experiment length=\"10\" ticks_per_second=\"10\" random_seed=\"1\"/></framework>\n"
-         "  <controllers>" + std::string(kPlainController) + "</controllers>\n"
+         "  <controllers>" +
+         std::string(kPlainController) +
+         "</controllers>\n"
          "  <loop_functions script=\"floor.lua\"/>\n"
          "  <arena size=\"4,2,1\" center=\"1,0.5,0.5\">\n"
          "    <floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"100\"/>\n"
-         "    <box id=\"crate\" size=\"0.3,0.3,0.2\" movable=\"false\"><body position=\"0.5,-0.1,0\" orientation=\"0,0,0\"/></box>\n"
-         "    " + FootBot("red", 1.5, 1.005, 0, "p") + "\n"
-         "    " + FootBot("ghost", -0.5, 1.0, 90, "p") + "\n"
+         "    <box id=\"crate\" size=\"0.3,0.3,0.2\" movable=\"false\"><body position=\"0.5,-0.1,0\" "
+         "orientation=\"0,0,0\"/></box>\n"
+         "    " +
+         FootBot("red", 1.5, 1.005, 0, "p") +
+         "\n"
+         "    " +
+         FootBot("ghost", -0.5, 1.0, 90, "p") +
+         "\n"
          "  </arena>\n"
          "  <physics_engines><dynamics2d id=\"dyn2d\" iterations=\"10\"/></physics_engines>\n"
          "  <media/>\n"

@@ -1,10 +1,10 @@
 // robot.random's distributions (spec §8.4): ranges and moments of every call.
+#include "core/rng.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
-
-#include "core/rng.h"
 
 namespace essaim {
 namespace {

@@ -1,11 +1,12 @@
 // The plain value tree (core/value.h) and its JSON form (core/json.cpp): what metrics.json
 // and the Python module's lua_global read.
+#include "core/value.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/json.h"
-#include "core/value.h"
 
 namespace essaim {
 namespace {
@@ -23,8 +24,8 @@ TEST(Value, SetKeepsAKeysPlaceAndTakesTheNewValue) {
 
 TEST(Value, JsonKeepsIntegersListsAndWritesNonFiniteAsNull) {
   Value list = Value::EmptyList();
-  list.list = {Value::OfInteger(3), Value::OfNumber(0.5), Value::OfNumber(NAN), Value(), Value::EmptyMap(),
-               Value::EmptyList()};
+  list.list = {Value::OfInteger(3), Value::OfNumber(0.5), Value::OfNumber(NAN), Value(),
+               Value::EmptyMap(),   Value::EmptyList()};
   EXPECT_EQ(DumpJsonLine(ToJson(list)), "[3,0.5,null,null,{},[]]");
   EXPECT_TRUE(Value().IsNull());
   EXPECT_TRUE(ToJson(Value()).is_null());

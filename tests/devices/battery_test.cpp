@@ -15,7 +15,8 @@ using namespace essaim::testing;
 
 const char* kBatteryController =
     "<lua_controller id=\"b\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-    "<sensors><battery implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
+    "<sensors><battery implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR
+    "/tests/support/idle.lua\"/></lua_controller>";
 const char* kNoSensorController =
     "<lua_controller id=\"n\"><actuators><differential_steering implementation=\"default\"/></actuators>"
     "<sensors/><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
@@ -62,9 +63,9 @@ TEST(Battery, FullChargeScalesTheReadingAndEmptyReadsZero) {
   const Readings& rd = w.robots[0].rd;
   EXPECT_EQ(rd.battery_charge, 0.5);
   Step(w);
-  EXPECT_NEAR(rd.battery_charge, 0.45, 1e-12);               // (1 − 0.1) / 2
+  EXPECT_NEAR(rd.battery_charge, 0.45, 1e-12);                // (1 − 0.1) / 2
   EXPECT_NEAR(rd.battery_time_left, 0.5 * 0.1 / 0.05, 1e-9);  // 1 s
-  RunTicks(w, 12);  // empty after 10 ticks; never below 0
+  RunTicks(w, 12);                                            // empty after 10 ticks; never below 0
   EXPECT_EQ(w.robots[0].battery.charge, 0);
   EXPECT_EQ(rd.battery_charge, 0);
   EXPECT_EQ(rd.battery_time_left, 0);
@@ -174,7 +175,8 @@ TEST(Battery, LuaSeesInitialValuesInInitThenTheDischarge) {
   TempDir d;
   d.Write("b.lua",
           "function init() log(robot.battery.available_charge, tostring(robot.battery.time_left == math.huge)) end\n"
-          "function step() log(string.format('%.12f %.9f', robot.battery.available_charge, robot.battery.time_left)) end\n");
+          "function step() log(string.format('%.12f %.9f', robot.battery.available_charge, robot.battery.time_left)) "
+          "end\n");
   std::vector<std::string> lines;
   SimOptions sim;
   sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { lines.push_back(line); };
@@ -185,7 +187,7 @@ TEST(Battery, LuaSeesInitialValuesInInitThenTheDischarge) {
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 2);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "0.8\ttrue");  // log() separates arguments with tabs
+  EXPECT_EQ(lines[0], "0.8\ttrue");                    // log() separates arguments with tabs
   EXPECT_EQ(lines[1], "0.798000000000 40.000000000");  // 0.8 · 0.1 / 0.002
   EXPECT_EQ(lines[2], "0.796000000000 39.900000000");  // 0.798 · 0.1 / 0.002
 }

@@ -14,19 +14,23 @@ namespace {
 using namespace essaim::testing;
 
 constexpr char kSilent[] = "function init() end\nfunction step() end\n";
-constexpr char kLook[] = "function init() robot.colored_blob_omnidirectional_camera.enable() end\nfunction step() end\n";
+constexpr char kLook[] =
+    "function init() robot.colored_blob_omnidirectional_camera.enable() end\nfunction step() end\n";
 
 std::string CamController(const std::string& id, const std::string& script, bool camera = true) {
-  return "<lua_controller id=\"" + id + "\"><actuators><differential_steering implementation=\"default\"/>"
+  return "<lua_controller id=\"" + id +
+         "\"><actuators><differential_steering implementation=\"default\"/>"
          "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors>" +
-         std::string(camera ? "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\"/>" : "") +
+         std::string(camera ? "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\"/>"
+                            : "") +
          "</sensors><params script=\"" + script + "\"/></lua_controller>";
 }
 
 std::string Bot(const std::string& id, double x, double y, double yaw_deg, const std::string& ctrl) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
-                "<foot-bot id=\"%s\"><body position=\"%.17g,%.17g,0\" orientation=\"%g,0,0\"/><controller config=\"%s\"/></foot-bot>",
+                "<foot-bot id=\"%s\"><body position=\"%.17g,%.17g,0\" orientation=\"%g,0,0\"/><controller "
+                "config=\"%s\"/></foot-bot>",
                 id.c_str(), x, y, yaw_deg, ctrl.c_str());
   return buf;
 }
@@ -103,8 +107,10 @@ TEST(Camera, BoxLedsAndLights) {
       "<leds medium=\"leds\"><led offset=\"0,0,0.1\" anchor=\"origin\" color=\"blue\"/>"
       "<led offset=\"0.02,0,0.1\" anchor=\"origin\" color=\"black\"/></leds></box>";
   const std::string lights =
-      "<light id=\"l0\" position=\"-0.3,0.2,0.2\" orientation=\"0,0,0\" color=\"yellow\" intensity=\"1\" medium=\"leds\"/>"
-      "<light id=\"l1\" position=\"-0.3,-0.2,0.2\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" medium=\"other\"/>"
+      "<light id=\"l0\" position=\"-0.3,0.2,0.2\" orientation=\"0,0,0\" color=\"yellow\" intensity=\"1\" "
+      "medium=\"leds\"/>"
+      "<light id=\"l1\" position=\"-0.3,-0.2,0.2\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" "
+      "medium=\"other\"/>"
       "<light id=\"l2\" position=\"0.3,0.3,0.5\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" medium=\"leds\"/>";
   Scene s = Load(d, CamExperiment(Bot("cam", 0, 0, 0, "look") + box + lights, CamController("look", "look.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
@@ -128,10 +134,12 @@ TEST(Camera, SquareFieldOfViewAndOcclusion) {
   // h = 0.288699733 · tan 70° = 0.7932 m. (0.7, 0.7) is 0.99 m away but inside the square;
   // (0.85, 0) is outside; (0, -0.78) inside. A 0.5 m box hides the beacon at (-0.5, 0.3).
   const std::string tall =
-      "<box id=\"t\" size=\"0.1,0.1,0.5\" movable=\"false\"><body position=\"-0.25,0.15,0\" orientation=\"0,0,0\"/></box>";
-  Scene s = Load(d, CamExperiment(Bot("cam", 0, 0, 0, "look") + Bot("b1", 0.7, 0.7, 0, "green") + Bot("b2", 0.85, 0, 0, "green") +
-                                      Bot("b3", 0, -0.78, 0, "green") + Bot("b4", -0.5, 0.3, 0, "green") + tall,
-                                  CamController("look", "look.lua") + CamController("green", "green.lua", false)));
+      "<box id=\"t\" size=\"0.1,0.1,0.5\" movable=\"false\"><body position=\"-0.25,0.15,0\" "
+      "orientation=\"0,0,0\"/></box>";
+  Scene s = Load(
+      d, CamExperiment(Bot("cam", 0, 0, 0, "look") + Bot("b1", 0.7, 0.7, 0, "green") + Bot("b2", 0.85, 0, 0, "green") +
+                           Bot("b3", 0, -0.78, 0, "green") + Bot("b4", -0.5, 0.3, 0, "green") + tall,
+                       CamController("look", "look.lua") + CamController("green", "green.lua", false)));
   ASSERT_TRUE(s.ok()) << s.error;
   Step(*s.world);
   ASSERT_EQ(Blobs(s).size(), 2u);
@@ -151,24 +159,26 @@ TEST(Camera, BlackLedsAndDisabledCameraSeeNothing) {
           "n = 0\nfunction init() robot.colored_blob_omnidirectional_camera.enable() end\n"
           "function step() n = n + 1; local cam = robot.colored_blob_omnidirectional_camera\n"
           "  local b = cam[1]\n"
-          "  log(#cam, b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. math.type(b.color.green)) or 'nil')\n"
+          "  log(#cam, b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. "
+          "math.type(b.color.green)) or 'nil')\n"
           "  if n == 2 then cam.disable() end end\n");
   d.Write("look.lua", kLook);
   std::vector<std::string> lines;
   SimOptions sim;
   sim.log_sink = [&lines](char, const std::string& line, const LogOrigin&) { lines.push_back(line); };
-  Scene s = Load(d,
-                 CamExperiment(Bot("look", 0, 0, 0, "look") + Bot("dark", 0.4, 0, 0, "dark") + Bot("blind", 0, 0.4, 0, "blind") +
-                                   Bot("blink", -0.4, 0, 0, "blink") + Bot("g", -0.4, -0.4, 0, "green"),
-                               CamController("look", "look.lua") + CamController("dark", "dark.lua", false) +
-                                   CamController("blind", "blind.lua") + CamController("blink", "blink.lua") +
-                                   CamController("green", "green.lua", false)),
-                 {}, sim);
+  Scene s = Load(
+      d,
+      CamExperiment(Bot("look", 0, 0, 0, "look") + Bot("dark", 0.4, 0, 0, "dark") + Bot("blind", 0, 0.4, 0, "blind") +
+                        Bot("blink", -0.4, 0, 0, "blink") + Bot("g", -0.4, -0.4, 0, "green"),
+                    CamController("look", "look.lua") + CamController("dark", "dark.lua", false) +
+                        CamController("blind", "blind.lua") + CamController("blink", "blink.lua") +
+                        CamController("green", "green.lua", false)),
+      {}, sim);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 4);
   ASSERT_EQ(Blobs(s, 0).size(), 1u);  // only g's beacon: dark's LEDs are black
   EXPECT_TRUE(Rgb(Blobs(s, 0)[0].color, 0, 255, 0));
-  EXPECT_TRUE(Blobs(s, 2).empty());   // never enabled
+  EXPECT_TRUE(Blobs(s, 2).empty());  // never enabled
   EXPECT_TRUE(Blobs(s, 3).empty());
   EXPECT_EQ(lines, std::vector<std::string>({"1\t0,255,0 integer", "1\t0,255,0 integer", "0\tnil", "0\tnil"}));
 }
@@ -188,14 +198,15 @@ TEST(Camera, NoiseIsDeterministic) {
     for (int t = 0; t < 200; ++t) {
       Step(*s.world);
       double dist = Blobs(s).at(0).distance;
-      if (run == 0) first.push_back(dist), sum += dist;
-      else ASSERT_EQ(first[static_cast<size_t>(t)], dist);
+      if (run == 0)
+        first.push_back(dist), sum += dist;
+      else
+        ASSERT_EQ(first[static_cast<size_t>(t)], dist);
     }
   }
   EXPECT_NE(first[0], first[1]);
   EXPECT_NEAR(sum / 200, 50.0, 1.5);
 }
-
 
 TEST(Camera, OcclusionRaysMatchBox2D) {
   // The camera's occlusion rays (media grids, exact circle/box tests) must answer what
@@ -220,14 +231,19 @@ TEST(Camera, OcclusionRaysMatchBox2D) {
     Vec2 p = spot(0.45);
     char buf[256];
     if (k % 3 == 0)
-      std::snprintf(buf, sizeof buf, "<cylinder id=\"c%d\" radius=\"0.1\" height=\"%s\" movable=\"false\"><body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>",
+      std::snprintf(buf, sizeof buf,
+                    "<cylinder id=\"c%d\" radius=\"0.1\" height=\"%s\" movable=\"false\"><body position=\"%g,%g,0\" "
+                    "orientation=\"0,0,0\"/></cylinder>",
                     k, k % 2 ? "0.1" : "0.5", p.x(), p.y());
     else
-      std::snprintf(buf, sizeof buf, "<box id=\"b%d\" size=\"0.3,0.08,%s\" movable=\"%s\" mass=\"1\"><body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>",
+      std::snprintf(buf, sizeof buf,
+                    "<box id=\"b%d\" size=\"0.3,0.08,%s\" movable=\"%s\" mass=\"1\"><body position=\"%g,%g,0\" "
+                    "orientation=\"%d,0,0\"/></box>",
                     k, k % 4 == 1 ? "0.12" : "0.4", k % 2 ? "true" : "false", p.x(), p.y(), k * 41);
     arena += buf;
   }
-  arena += "<box id=\"wall\" size=\"8,0.1,0.5\" movable=\"false\"><body position=\"0,3.3,0\" orientation=\"0,0,0\"/></box>";
+  arena +=
+      "<box id=\"wall\" size=\"8,0.1,0.5\" movable=\"false\"><body position=\"0,3.3,0\" orientation=\"0,0,0\"/></box>";
   for (int i = 0; i < 150; ++i) {
     Vec2 p = spot(0.3);
     arena += Bot("fb" + std::to_string(i), p.x(), p.y(), 0, "look");

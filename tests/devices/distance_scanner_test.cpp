@@ -18,7 +18,8 @@ std::string Controller(const std::string& script, bool actuator = true) {
   return std::string("<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>") +
          (actuator ? "<footbot_distance_scanner implementation=\"default\"/>" : "") +
          "</actuators><sensors><footbot_distance_scanner implementation=\"rot_z_only\" show_rays=\"false\" "
-         "noise_range=\"-1:1\"/></sensors><params script=\"" + script + "\"/></lua_controller>";
+         "noise_range=\"-1:1\"/></sensors><params script=\"" +
+         script + "\"/></lua_controller>";
 }
 
 /// Front wall 10 cm from the body, left wall 5 cm (inside the long range's 12 cm), right
@@ -157,11 +158,12 @@ function step()
   if n == 6 then ds.set_rpm(100) end
   if n == 8 then ds.disable() end
 end
-)", "", true, &log);
+)",
+                       "", true, &log);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 9);
   ASSERT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
-  const std::vector<std::string> expect = {"1 0 0", "2 0 0", "3 2 2", "4 2 2", "5 2 2",
+  const std::vector<std::string> expect = {"1 0 0", "2 0 0",   "3 2 2",   "4 2 2", "5 2 2",
                                            "6 2 2", "7 12 12", "8 12 12", "9 0 0"};
   EXPECT_EQ(log, expect);
 }
@@ -189,16 +191,17 @@ function step()
     assert(ds.long_range[2].distance == -1)
   end
 end
-)", Walls());
+)",
+                       Walls());
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 2);
   ASSERT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
 }
 
 TEST(Scanner, ExactArgumentCounts) {
-  for (const char* call : {"robot.distance_scanner.enable(1)", "robot.distance_scanner.disable(0)",
-                           "robot.distance_scanner.set_angle()", "robot.distance_scanner:set_angle(1)",
-                           "robot.distance_scanner.set_rpm(1, 2)"}) {
+  for (const char* call :
+       {"robot.distance_scanner.enable(1)", "robot.distance_scanner.disable(0)", "robot.distance_scanner.set_angle()",
+        "robot.distance_scanner:set_angle(1)", "robot.distance_scanner.set_rpm(1, 2)"}) {
     TempDir d;
     Scene s = LoadScript(d, std::string("function init() ") + call + " end function step() end", "");
     ASSERT_TRUE(s.ok()) << s.error;
@@ -217,7 +220,8 @@ TEST(Scanner, SensorWithoutActuatorStaysOff) {
   Scene s = LoadScript(d, R"(
 function init() assert(robot.distance_scanner.enable == nil) end
 function step() assert(#robot.distance_scanner.short_range == 0) end
-)", Walls(), false);
+)",
+                       Walls(), false);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 2);
   ASSERT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;

@@ -13,13 +13,14 @@ namespace {
 using namespace essaim::testing;
 
 constexpr double kR = footbot::kRadius;
-constexpr double kCyl = 0.05;    // cylinder radius (m)
-constexpr double kGap = 0.002;   // initial gap between robot and object (m), inside the 1 cm disc
+constexpr double kCyl = 0.05;   // cylinder radius (m)
+constexpr double kGap = 0.002;  // initial gap between robot and object (m), inside the 1 cm disc
 
 const char* kGripController =
     "<lua_controller id=\"g\"><actuators><differential_steering implementation=\"default\"/>"
     "<footbot_gripper implementation=\"default\"/><footbot_turret implementation=\"default\"/></actuators>"
-    "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR "/tests/support/idle.lua\"/></lua_controller>";
+    "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params script=\"" ESSAIM_SOURCE_DIR
+    "/tests/support/idle.lua\"/></lua_controller>";
 
 std::string Cylinder(const std::string& id, double x, double y, bool movable = true, double mass = 0.1) {
   char buf[256];
@@ -178,7 +179,7 @@ TEST(Gripper, TurretCarriesTheHeldObjectRoundTheRobot) {
   // Speed mode through several full turns: the object follows the unwrapped turret.
   r.cmd.turret_mode = TurretMode::Speed;
   r.cmd.turret_speed = 10 * kPi / 30;  // set_rotation_speed(10): ~1.05 rad/s
-  RunTicks(w, 150);                  // 15 s: 2.5 turns
+  RunTicks(w, 150);                    // 15 s: 2.5 turns
   double expected = WrapSigned(kPi / 2 + 150 * 0.1 * 10 * kPi / 30);
   EXPECT_NEAR(WrapSigned(r.turret_rotation - expected), 0, 0.01);
   r.cmd.turret_mode = TurretMode::Passive;
@@ -194,9 +195,10 @@ TEST(Gripper, TowsAnotherRobot) {
   // The towed robot brakes (zero wheels) with a weak servo, 2 N: the tower's 15 N wins.
   // (Two full-strength brakes, 15 N against 15 N, stall — as in ARGoS.)
   const double sep = 2 * kR + kGap;
-  std::string towed =
-      "<foot-bot id=\"towed\"><body position=\"" + std::to_string(sep) + ",0,0\" orientation=\"0,0,0\"/>"
-      "<controller config=\"g\"/><dynamics2d><differential_steering max_force=\"2\" max_torque=\"2\"/></dynamics2d></foot-bot>";
+  std::string towed = "<foot-bot id=\"towed\"><body position=\"" + std::to_string(sep) +
+                      ",0,0\" orientation=\"0,0,0\"/>"
+                      "<controller config=\"g\"/><dynamics2d><differential_steering max_force=\"2\" "
+                      "max_torque=\"2\"/></dynamics2d></foot-bot>";
   Scene s = LoadScene(d, FootBot("tower", 0, 0, 0, "g") + towed);
   ASSERT_TRUE(s.ok()) << s.error;
   World& w = *s.world;
@@ -228,9 +230,10 @@ TEST(Gripper, RigidityCapsTheHoldingForce) {
   TempDir d;
   // gripping_rigidity 1 N against the towed robot's 2 N brake: the grip cannot move it.
   const double sep = 2 * kR + kGap;
-  std::string towed =
-      "<foot-bot id=\"towed\"><body position=\"" + std::to_string(sep) + ",0,0\" orientation=\"0,0,0\"/>"
-      "<controller config=\"g\"/><dynamics2d><differential_steering max_force=\"2\" max_torque=\"2\"/></dynamics2d></foot-bot>";
+  std::string towed = "<foot-bot id=\"towed\"><body position=\"" + std::to_string(sep) +
+                      ",0,0\" orientation=\"0,0,0\"/>"
+                      "<controller config=\"g\"/><dynamics2d><differential_steering max_force=\"2\" "
+                      "max_torque=\"2\"/></dynamics2d></foot-bot>";
   std::string xml = Experiment(FootBot("tower", 0, 0, 0, "g") + towed, kGripController, 1000);
   xml.insert(xml.find("iterations=\"10\""), "gripping_rigidity=\"1\" ");
   Scene s = Load(d, xml);

@@ -22,7 +22,7 @@ const unsigned char kPixels[2][4][3] = {
     {{255, 255, 255}, {255, 255, 255}, {255, 0, 0}, {255, 255, 255}},
     {{0, 0, 0}, {128, 128, 128}, {255, 255, 255}, {255, 255, 255}},
 };
-constexpr double kRed = 0.299;                 // grey level of (255, 0, 0)
+constexpr double kRed = 0.299;  // grey level of (255, 0, 0)
 constexpr double kGrey = 128 * (0.299 + 0.587 + 0.114) / 255;
 
 void WriteTestPng(const std::string& path) {
@@ -39,9 +39,12 @@ std::string Xml(const std::string& robots, const std::string& sensors) {
   return "<argos-configuration>\n"
          "  <framework><experiment length=\"1\" ticks_per_second=\"10\" random_seed=\"5\"/></framework>\n"
          "  <controllers><lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
-         "</actuators><sensors>" + sensors + "</sensors><params script=\"c.lua\"/></lua_controller></controllers>\n"
+         "</actuators><sensors>" +
+         sensors +
+         "</sensors><params script=\"c.lua\"/></lua_controller></controllers>\n"
          "  <arena size=\"4,2,1\" center=\"0,0,0.5\"><floor id=\"floor\" source=\"image\" path=\"floor.png\"/>" +
-         robots + "</arena>\n"
+         robots +
+         "</arena>\n"
          "  <physics_engines><dynamics2d id=\"dyn2d\"/></physics_engines>\n"
          "  <media/>\n"
          "</argos-configuration>\n";
@@ -52,7 +55,7 @@ const char* kBoth =
     "<footbot_motor_ground implementation=\"rot_z_only\"/>";
 
 Scene RunScene(const TempDir& d, const std::string& robots, const std::string& sensors = kBoth,
-          const std::string& lua = "function init() end function step() end") {
+               const std::string& lua = "function init() end function step() end") {
   WriteTestPng(d.path() + "/floor.png");
   d.Write("c.lua", lua);
   Scene s = Load(d, Xml(robots, sensors));
@@ -62,8 +65,8 @@ Scene RunScene(const TempDir& d, const std::string& robots, const std::string& s
 
 TEST(Ground, ImageOrientationBottomLeftIsArenaMinCorner) {
   TempDir d;
-  Scene s = RunScene(d, FootBot("a", -1.5, -0.5, 0, "c") + FootBot("b", 0.5, 0.5, 0, "c") + FootBot("c", -0.5, -0.5, 0, "c") +
-                       FootBot("d", 1.5, 0.5, 0, "c"));
+  Scene s = RunScene(d, FootBot("a", -1.5, -0.5, 0, "c") + FootBot("b", 0.5, 0.5, 0, "c") +
+                            FootBot("c", -0.5, -0.5, 0, "c") + FootBot("d", 1.5, 0.5, 0, "c"));
   ASSERT_TRUE(s.ok()) << s.error;
   auto motor = [&](int r) { return s.world->robots[r].rd.motor_ground; };
   auto base = [&](int r) { return s.world->robots[r].rd.base_ground; };
@@ -121,9 +124,9 @@ TEST(Ground, OffsetsTurnWithTheRobot) {
   ASSERT_TRUE(u.ok()) << u.error;
   const double* ub = u.world->robots[0].rd.base_ground;
   const double* um = u.world->robots[0].rd.motor_ground;
-  EXPECT_EQ(ub[0], 0.0);   // front at x = −1.13
-  EXPECT_EQ(ub[4], 1.0);   // back at x = −0.97, grey
-  EXPECT_EQ(um[0], 0.0);   // front-left at x = −1.113
+  EXPECT_EQ(ub[0], 0.0);             // front at x = −1.13
+  EXPECT_EQ(ub[4], 1.0);             // back at x = −0.97, grey
+  EXPECT_EQ(um[0], 0.0);             // front-left at x = −1.113
   EXPECT_NEAR(um[1], kGrey, 1e-12);  // back-left at x = −0.987
 }
 
@@ -144,8 +147,8 @@ TEST(Ground, LeftSensorsLookLeft) {
 TEST(Ground, NoiseKeepsBaseBinaryAndMotorClamped) {
   TempDir d;
   Scene s = RunScene(d, FootBot("a", -0.5, -0.5, 0, "c"),
-                "<footbot_base_ground implementation=\"rot_z_only\" noise_level=\"0.3\"/>"
-                "<footbot_motor_ground implementation=\"rot_z_only\" noise_level=\"0.3\"/>");
+                     "<footbot_base_ground implementation=\"rot_z_only\" noise_level=\"0.3\"/>"
+                     "<footbot_motor_ground implementation=\"rot_z_only\" noise_level=\"0.3\"/>");
   ASSERT_TRUE(s.ok()) << s.error;
   int ones = 0, zeros = 0;
   bool motor_varies = false;

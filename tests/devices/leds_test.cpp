@@ -12,9 +12,10 @@ namespace {
 using namespace essaim::testing;
 
 std::string LedController(const std::string& id, const std::string& script) {
-  return "<lua_controller id=\"" + id + "\"><actuators><differential_steering implementation=\"default\"/>"
-         "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors/><params script=\"" + script +
-         "\"/></lua_controller>";
+  return "<lua_controller id=\"" + id +
+         "\"><actuators><differential_steering implementation=\"default\"/>"
+         "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors/><params script=\"" +
+         script + "\"/></lua_controller>";
 }
 
 std::string LedExperiment(const std::string& arena, const std::string& controllers) {
@@ -41,12 +42,13 @@ bool Same(const Color& c, int r, int g, int b, int a = 255) { return c.r == r &&
 
 TEST(Leds, ColoursApplyInTheNextAct) {
   TempDir d;
-  d.Write("c.lua",
-          "n = 0\nfunction init() robot.leds.set_all_colors('red') end\n"
-          "function step() n = n + 1\n"
-          "  if n == 1 then robot.leds.set_single_color(13, 10, 20, 30); robot.leds.set_single_color(2, '1,2,3,4') end\n"
-          "  if n == 2 then robot.leds.set_all_colors(300, 2.9, -1); robot.leds.set_single_color(12.5, 'gray50') end\n"
-          "end\n");
+  d.Write(
+      "c.lua",
+      "n = 0\nfunction init() robot.leds.set_all_colors('red') end\n"
+      "function step() n = n + 1\n"
+      "  if n == 1 then robot.leds.set_single_color(13, 10, 20, 30); robot.leds.set_single_color(2, '1,2,3,4') end\n"
+      "  if n == 2 then robot.leds.set_all_colors(300, 2.9, -1); robot.leds.set_single_color(12.5, 'gray50') end\n"
+      "end\n");
   Scene s = Load(d, LedExperiment(FootBot("fb0", 0, 0, 0, "c"), LedController("c", "c.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   const RobotState& r = s.world->robots[0];
@@ -58,7 +60,7 @@ TEST(Leds, ColoursApplyInTheNextAct) {
   EXPECT_TRUE(Same(r.leds[1], 1, 2, 3, 4));
   EXPECT_TRUE(Same(r.leds[0], 255, 0, 0));
   Step(*s.world);
-  EXPECT_TRUE(Same(r.leds[0], 44, 2, 255));  // C++ byte casts: wrap, truncate
+  EXPECT_TRUE(Same(r.leds[0], 44, 2, 255));      // C++ byte casts: wrap, truncate
   EXPECT_TRUE(Same(r.leds[11], 127, 127, 127));  // index 12.5 -> 12
 }
 

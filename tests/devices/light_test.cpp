@@ -30,8 +30,11 @@ std::string Xml(const std::string& arena, const std::string& noise = "0") {
          "  <framework><experiment length=\"1\" ticks_per_second=\"10\" random_seed=\"3\"/></framework>\n"
          "  <controllers><lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
          "</actuators><sensors><footbot_light implementation=\"rot_z_only\" show_rays=\"false\" noise_level=\"" +
-         noise + "\"/></sensors><params script=\"c.lua\"/></lua_controller></controllers>\n"
-         "  <arena size=\"10,10,1\" center=\"0,0,0.5\">" + arena + "</arena>\n"
+         noise +
+         "\"/></sensors><params script=\"c.lua\"/></lua_controller></controllers>\n"
+         "  <arena size=\"10,10,1\" center=\"0,0,0.5\">" +
+         arena +
+         "</arena>\n"
          "  <physics_engines><dynamics2d id=\"dyn2d\"/></physics_engines>\n"
          "  <media><led id=\"leds\"/></media>\n"
          "</argos-configuration>\n";
@@ -39,7 +42,7 @@ std::string Xml(const std::string& arena, const std::string& noise = "0") {
 
 /// Robot fb0 at the origin with heading `yaw_deg`, the lights, and more arena XML; one tick.
 Scene RunScene(const TempDir& d, double yaw_deg, const std::vector<Light>& lights, const std::string& more = "",
-          const std::string& noise = "0") {
+               const std::string& noise = "0") {
   d.Write("c.lua", "function init() end function step() end");
   std::string arena = FootBot("fb0", 0, 0, yaw_deg, "c") + more;
   for (size_t i = 0; i < lights.size(); ++i) arena += LightXml(static_cast<int>(i), lights[i]);
@@ -77,11 +80,11 @@ TEST(Light, FalloffAndThirteenSensorSpread) {
   ASSERT_TRUE(s.ok()) << s.error;
   const double* v = s.world->robots[0].rd.light;
   const double base = std::exp(-2 * std::sqrt(1.25));  // 3D distance to the light
-  EXPECT_NEAR(v[0], base * (1 - 7.5 / 90), 1e-6);       // sensor 1 at 7.5°
-  EXPECT_NEAR(v[23], base * (1 - 7.5 / 90), 1e-6);      // sensor 24 at −7.5°
-  EXPECT_NEAR(v[1], base * 0.75, 1e-6);                 // 22.5°
-  EXPECT_NEAR(v[5], base * (1 - 82.5 / 90), 1e-6);      // 82.5°: last lit
-  EXPECT_EQ(v[6], 0);                                   // 97.5°
+  EXPECT_NEAR(v[0], base * (1 - 7.5 / 90), 1e-6);      // sensor 1 at 7.5°
+  EXPECT_NEAR(v[23], base * (1 - 7.5 / 90), 1e-6);     // sensor 24 at −7.5°
+  EXPECT_NEAR(v[1], base * 0.75, 1e-6);                // 22.5°
+  EXPECT_NEAR(v[5], base * (1 - 82.5 / 90), 1e-6);     // 82.5°: last lit
+  EXPECT_EQ(v[6], 0);                                  // 97.5°
   EXPECT_EQ(v[17], 0);
   int lit = 0;
   for (int k = 0; k < 24; ++k) lit += v[k] > 0;

@@ -76,8 +76,8 @@ struct Bench {
 };
 
 TEST(Noise, WheelBiasIsDrawnOncePerRobotFromItsGaussian) {
-  DeviceConfig cfg = Config(DeviceType::WheelsActuator, {{"bias_avg", "0.01"}, {"bias_stddev", "0.002"},
-                                                         {"bias_avg_right", "-0.03"}});
+  DeviceConfig cfg =
+      Config(DeviceType::WheelsActuator, {{"bias_avg", "0.01"}, {"bias_stddev", "0.002"}, {"bias_avg_right", "-0.03"}});
   ASSERT_TRUE(cfg.params.wheel_noise);
   std::vector<double> left, right;
   for (int i = 0; i < kRobots; ++i) {
@@ -93,8 +93,8 @@ TEST(Noise, WheelBiasIsDrawnOncePerRobotFromItsGaussian) {
 
 TEST(Noise, WheelFactorIsDrawnPerCommandAndMultipliesSpeedPlusBias) {
   Bench b;
-  DeviceConfig cfg = Config(DeviceType::WheelsActuator, {{"factor_avg", "0.9"}, {"factor_stddev", "0.1"},
-                                                         {"factor_stddev_left", "0.05"}});
+  DeviceConfig cfg = Config(DeviceType::WheelsActuator,
+                            {{"factor_avg", "0.9"}, {"factor_stddev", "0.1"}, {"factor_stddev_left", "0.05"}});
   RobotState r;
   r.actuator_rng.Seed(11);
   InitWheelNoise(cfg, r);
@@ -244,7 +244,9 @@ Trace RunPair(const std::string& second_ctrl, bool with_second, int threads = 1)
   std::vector<double> logged;  // robot.random draws, robot order within a tick
   SimOptions sim;
   sim.threads = threads;
-  sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { logged.push_back(std::strtod(line.c_str(), nullptr)); };
+  sim.log_sink = [&](char, const std::string& line, const LogOrigin&) {
+    logged.push_back(std::strtod(line.c_str(), nullptr));
+  };
   Scene s = Load(d, Experiment(arena, std::string(kQuiet) + kNoisy, 100, 42), {}, sim);
   EXPECT_TRUE(s.ok()) << s.error;
   if (!s.ok()) return t;
@@ -301,7 +303,9 @@ TEST(Noise, SensorNoiseLeavesRobotRandomAlone) {
   auto run = [&](const std::string& ctrl) {
     std::vector<double> out;
     SimOptions sim;
-    sim.log_sink = [&](char, const std::string& line, const LogOrigin&) { out.push_back(std::strtod(line.c_str(), nullptr)); };
+    sim.log_sink = [&](char, const std::string& line, const LogOrigin&) {
+      out.push_back(std::strtod(line.c_str(), nullptr));
+    };
     Scene s = Load(d, Experiment(FootBot("r0", 0, 0, 0, ctrl), std::string(kQuiet) + clean, 30, 42), {}, sim);
     EXPECT_TRUE(s.ok()) << s.error;
     if (s.ok()) RunTicks(*s.world, 30);

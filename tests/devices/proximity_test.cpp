@@ -15,8 +15,8 @@ constexpr double kR = footbot::kRadius;
 
 std::string Controller(const std::string& script, const std::string& prox_attrs = "") {
   return "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/></actuators>"
-         "<sensors><footbot_proximity implementation=\"default\" show_rays=\"false\" " + prox_attrs +
-         "/></sensors><params script=\"" + script + "\"/></lua_controller>";
+         "<sensors><footbot_proximity implementation=\"default\" show_rays=\"false\" " +
+         prox_attrs + "/></sensors><params script=\"" + script + "\"/></lua_controller>";
 }
 
 /// Distance along the ray of sensor angle `a` (robot at the origin, yaw 0) to the plane x = X.
@@ -69,9 +69,9 @@ TEST(Proximity, WallAtKnownDistanceAndAngle) {
   }
   // Hand-computed: sensor 1 (7.5°) sees the wall at 0.135036758/cos(7.5°) − r = 0.0511652 m.
   EXPECT_NEAR(v[0], 0.0100527 / (0.0511652 + 0.000163144), 1e-5);
-  EXPECT_NEAR(v[0], v[23], 1e-6);   // symmetric about the heading
-  EXPECT_GT(v[2], 0);                // 37.5°: 0.0852 m
-  EXPECT_EQ(v[3], 0);                // 52.5°: 0.137 m, out of range
+  EXPECT_NEAR(v[0], v[23], 1e-6);  // symmetric about the heading
+  EXPECT_GT(v[2], 0);              // 37.5°: 0.0852 m
+  EXPECT_EQ(v[3], 0);              // 52.5°: 0.137 m, out of range
 }
 
 TEST(Proximity, RotatedRobotSeesTheWallOnItsSide) {
@@ -108,7 +108,7 @@ TEST(Proximity, AnotherRobot) {
     EXPECT_NEAR(v[k], expect, 1e-5) << "sensor " << k + 1;
   }
   EXPECT_GT(v[0], 0.1);
-  EXPECT_EQ(v[1], 0);      // 22.5° passes beside the other body
+  EXPECT_EQ(v[1], 0);  // 22.5° passes beside the other body
   // The other robot sees this one behind it (sensors 12 and 13), not itself.
   const double* w = s.world->robots[1].rd.proximity;
   EXPECT_NEAR(w[11], v[0], 1e-5);

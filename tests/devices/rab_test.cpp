@@ -12,21 +12,24 @@ using namespace essaim::testing;
 
 std::string Bot(const std::string& id, double x, double y, const std::string& ctrl, const std::string& attrs = "") {
   char buf[320];
-  std::snprintf(buf, sizeof buf,
-                "<foot-bot id=\"%s\" %s><body position=\"%g,%g,0\" orientation=\"0,0,0\"/><controller config=\"%s\"/></foot-bot>",
-                id.c_str(), attrs.c_str(), x, y, ctrl.c_str());
+  std::snprintf(
+      buf, sizeof buf,
+      "<foot-bot id=\"%s\" %s><body position=\"%g,%g,0\" orientation=\"0,0,0\"/><controller config=\"%s\"/></foot-bot>",
+      id.c_str(), attrs.c_str(), x, y, ctrl.c_str());
   return buf;
 }
 
 std::string Controller(const std::string& id, const std::string& script) {
-  return "<lua_controller id=\"" + id + "\"><actuators>"
+  return "<lua_controller id=\"" + id +
+         "\"><actuators>"
          "<differential_steering implementation=\"default\"/>"
          "<leds implementation=\"default\" medium=\"leds\"/>"
          "<range_and_bearing implementation=\"default\"/>"
          "</actuators><sensors>"
          "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\" show_rays=\"false\"/>"
          "<range_and_bearing implementation=\"medium\" medium=\"rab\" show_rays=\"false\"/>"
-         "</sensors><params script=\"" + script + "\"/></lua_controller>";
+         "</sensors><params script=\"" +
+         script + "\"/></lua_controller>";
 }
 
 std::string Media(std::string xml) {
@@ -70,13 +73,15 @@ function step()
   robot.range_and_bearing.set_data(1, have)
 end
 )");
-  auto run = Start(d, Media(Experiment(Bot("A", 0, 0, "relay", "rab_range=\"1\"") + Bot("B", 0.8, 0.3, "relay", "rab_range=\"1\"") +
-                                           Bot("C", 1.6, 0, "relay", "rab_range=\"1\""),
-                                       Controller("relay", "relay.lua"), 100)));
+  auto run = Start(
+      d, Media(Experiment(Bot("A", 0, 0, "relay", "rab_range=\"1\"") + Bot("B", 0.8, 0.3, "relay", "rab_range=\"1\"") +
+                              Bot("C", 1.6, 0, "relay", "rab_range=\"1\""),
+                          Controller("relay", "relay.lua"), 100)));
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   RunTicks(*run->s.world, 6);
   EXPECT_TRUE(run->s.world->controller_errors.empty());
-  EXPECT_EQ(run->lines, std::vector<std::string>({"A\thas it at step\t1", "B\thas it at step\t2", "C\thas it at step\t3"}));
+  EXPECT_EQ(run->lines,
+            std::vector<std::string>({"A\thas it at step\t1", "B\thas it at step\t2", "C\thas it at step\t3"}));
   // C never hears A directly.
   for (const RabPacket& p : run->s.world->robots[2].rd.rab) EXPECT_NE(p.sender, 0);
 }
@@ -184,8 +189,8 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
   d.Write("spin.lua", "function init() end function step() robot.wheels.set_velocity(8, 3) end");
   std::string bots;
   for (int i = 0; i < 60; ++i)  // a 10 x 6 lattice, 0.3 m apart, jittered: many occluders
-    bots += Bot("b" + std::to_string(i), -1.4 + 0.3 * (i % 10) + 0.01 * (i % 3), -0.8 + 0.3 * (i / 10.0) - 0.02 * (i % 4),
-                "spin", "rab_range=\"1.2\"");
+    bots += Bot("b" + std::to_string(i), -1.4 + 0.3 * (i % 10) + 0.01 * (i % 3),
+                -0.8 + 0.3 * (i / 10.0) - 0.02 * (i % 4), "spin", "rab_range=\"1.2\"");
   auto run = Start(d, Media(Experiment(bots, Controller("spin", "spin.lua"), 100)));
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   World& w = *run->s.world;
@@ -200,8 +205,10 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
         if (b == a) continue;
         if ((m.rab_pos[b] - m.rab_pos[a]).norm() >= run->s.model->robots[b].rab_range) continue;
         const bool blocked = HiddenByABody(m, RayBetween(m, a, b), n);
-        if (blocked) ++hidden;
-        else expect.push_back(b);
+        if (blocked)
+          ++hidden;
+        else
+          expect.push_back(b);
       }
       heard += expect.size();
       EXPECT_EQ(m.rab_inbox[a], expect) << "robot " << a << " at tick " << tick;
@@ -226,17 +233,24 @@ TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
     char buf[320];
     const double x = -1.65 + 0.5 * k, y = k % 2 ? -0.35 : 0.15;  // cell centres
     if (k % 3 == 2)
-      std::snprintf(buf, sizeof buf, "<cylinder id=\"o%d\" radius=\"0.06\" height=\"0.5\" movable=\"false\">"
-                    "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>", k, x, y);
+      std::snprintf(buf, sizeof buf,
+                    "<cylinder id=\"o%d\" radius=\"0.06\" height=\"0.5\" movable=\"false\">"
+                    "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>",
+                    k, x, y);
     else
-      std::snprintf(buf, sizeof buf, "<box id=\"o%d\" size=\"0.3,0.05,0.5\" movable=\"false\">"
-                    "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>", k, x, y, 25 + 40 * k);
+      std::snprintf(buf, sizeof buf,
+                    "<box id=\"o%d\" size=\"0.3,0.05,0.5\" movable=\"false\">"
+                    "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>",
+                    k, x, y, 25 + 40 * k);
     scene += buf;
   }
   // Two long, slightly turned walls between rows: segments that cross them away from
   // their centres (the bounding-box shortcut's hard case).
-  scene += "<box id=\"w0\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"-0.6,-0.85,0\" orientation=\"3,0,0\"/></box>"
-           "<box id=\"w1\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"0.5,0.65,0\" orientation=\"-4,0,0\"/></box>";
+  scene +=
+      "<box id=\"w0\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"-0.6,-0.85,0\" "
+      "orientation=\"3,0,0\"/></box>"
+      "<box id=\"w1\" size=\"1.2,0.04,0.5\" movable=\"false\"><body position=\"0.5,0.65,0\" "
+      "orientation=\"-4,0,0\"/></box>";
   auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
   ASSERT_TRUE(run->s.ok()) << run->s.error;
   World& w = *run->s.world;
@@ -258,18 +272,22 @@ TEST(RabIntegration, LongRangesAcrossScatteredObstaclesMatchBruteForceOcclusion)
   d.Write("spin.lua", "function init() end function step() robot.wheels.set_velocity(5, -4) end");
   std::string scene;
   for (int i = 0; i < 100; ++i)  // a 10 x 10 lattice, 0.96 m apart, to 0.2 m from the walls' edge
-    scene += Bot("b" + std::to_string(i), -4.8 + 0.96 * (i % 10) + 0.03 * (i % 3), -4.8 + 0.96 * (i / 10) - 0.02 * (i % 4),
-                 "spin", "rab_range=\"6\"");
+    scene += Bot("b" + std::to_string(i), -4.8 + 0.96 * (i % 10) + 0.03 * (i % 3),
+                 -4.8 + 0.96 * (i / 10) - 0.02 * (i % 4), "spin", "rab_range=\"6\"");
   char buf[320];
   for (int k = 0; k < 45; ++k) {  // small cylinders at the centres of the lattice's even rows
     const double x = -4.32 + 0.96 * (k % 9), y = -4.32 + 1.92 * (k / 9);
-    std::snprintf(buf, sizeof buf, "<cylinder id=\"c%d\" radius=\"0.05\" height=\"0.5\" movable=\"false\">"
-                  "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>", k, x + 0.1 * (k % 3), y);
+    std::snprintf(buf, sizeof buf,
+                  "<cylinder id=\"c%d\" radius=\"0.05\" height=\"0.5\" movable=\"false\">"
+                  "<body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>",
+                  k, x + 0.1 * (k % 3), y);
     scene += buf;
   }
   for (int k = 0; k < 5; ++k) {  // long, slightly turned walls along the odd rows' centres
-    std::snprintf(buf, sizeof buf, "<box id=\"w%d\" size=\"2.6,0.04,0.5\" movable=\"false\">"
-                  "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>", k, -3 + 1.5 * k, -3.36 + 1.92 * k, 4 - 2 * k);
+    std::snprintf(buf, sizeof buf,
+                  "<box id=\"w%d\" size=\"2.6,0.04,0.5\" movable=\"false\">"
+                  "<body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>",
+                  k, -3 + 1.5 * k, -3.36 + 1.92 * k, 4 - 2 * k);
     scene += buf;
   }
   auto run = Start(d, Media(Experiment(scene, Controller("spin", "spin.lua"), 100)));
@@ -300,8 +318,8 @@ end
 )");
   std::string bots;
   for (int i = 0; i < 240; ++i)  // a 20 x 12 lattice, 0.35 m apart, jittered
-    bots += Bot("c" + std::to_string(i), -3.3 + 0.35 * (i % 20) + 0.013 * (i % 7), -2 + 0.35 * (i / 20) - 0.011 * (i % 5),
-                "chat", "rab_range=\"2\"");
+    bots += Bot("c" + std::to_string(i), -3.3 + 0.35 * (i % 20) + 0.013 * (i % 7),
+                -2 + 0.35 * (i / 20) - 0.011 * (i % 5), "chat", "rab_range=\"2\"");
   const std::string xml = Media(Experiment(bots, Controller("chat", "chat.lua"), 100));
   std::vector<std::vector<std::vector<int>>> inboxes[3];  // [threads - 1][tick][robot]
   std::vector<Vec2> poses[3];

@@ -32,7 +32,8 @@ std::string Bot(const std::string& id, double x, double y, double yaw_deg, const
                 const std::string& attrs = "") {
   char buf[320];
   std::snprintf(buf, sizeof buf,
-                "<foot-bot id=\"%s\" %s><body position=\"%.17g,%.17g,0\" orientation=\"%g,0,0\"/><controller config=\"%s\"/></foot-bot>",
+                "<foot-bot id=\"%s\" %s><body position=\"%.17g,%.17g,0\" orientation=\"%g,0,0\"/><controller "
+                "config=\"%s\"/></foot-bot>",
                 id.c_str(), attrs.c_str(), x, y, yaw_deg, ctrl.c_str());
   return buf;
 }
@@ -44,8 +45,9 @@ std::string WithMedia(std::string xml, const std::string& media) {
 }
 
 std::string RabExperiment(const std::string& arena, const std::string& controllers, bool occlusions = true) {
-  return WithMedia(Experiment(arena, controllers, 100000),
-                   std::string("<range_and_bearing id=\"rab\" check_occlusions=\"") + (occlusions ? "true" : "false") + "\"/>");
+  return WithMedia(
+      Experiment(arena, controllers, 100000),
+      std::string("<range_and_bearing id=\"rab\" check_occlusions=\"") + (occlusions ? "true" : "false") + "\"/>");
 }
 
 /// Loads with the log lines collected.
@@ -96,9 +98,10 @@ TEST(RangeAndBearing, TheSendersRangeStrictly) {
   d.Write("s.lua", kSilent);
   // 2 m apart: a (range 1) is not heard by b; b (range 3) is heard by a. c has range
   // exactly 2 at exactly 2 m from a: not heard (strict <).
-  Scene s = Load(d, RabExperiment(Bot("a", 0, 0, 0, "c", "rab_range=\"1\"") + Bot("b", 2, 0, 0, "c", "rab_range=\"3\"") +
-                                      Bot("c", 0, 2, 0, "c", "rab_range=\"2\""),
-                                  RabController("c", "s.lua")));
+  Scene s =
+      Load(d, RabExperiment(Bot("a", 0, 0, 0, "c", "rab_range=\"1\"") + Bot("b", 2, 0, 0, "c", "rab_range=\"3\"") +
+                                Bot("c", 0, 2, 0, "c", "rab_range=\"2\""),
+                            RabController("c", "s.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 1);
   EXPECT_EQ(Senders(*s.world, 0), std::vector<int>({1}));
@@ -121,15 +124,18 @@ TEST(RangeAndBearing, BoxesAndRobotsOcclude) {
   TempDir d;
   d.Write("s.lua", kSilent);
   // Three rows 4 m apart (beyond the 3 m range): a | wall | b;  c | 5 cm box | e;  f g h.
-  const std::string wall = "<box id=\"wall\" size=\"0.2,0.2,0.5\" movable=\"false\"><body position=\"0,-4,0\" orientation=\"0,0,0\"/></box>";
-  const std::string low = "<box id=\"low\" size=\"0.2,0.2,0.05\" movable=\"false\"><body position=\"0,0,0\" orientation=\"0,0,0\"/></box>";
-  const std::string bots = Bot("a", -1, -4, 0, "c") + Bot("b", 1, -4, 0, "c") + Bot("c", -1, 0, 0, "c") + Bot("e", 1, 0, 0, "c") +
-                           Bot("f", -1, 4, 0, "c") + Bot("g", 0, 4, 0, "c") + Bot("h", 1, 4, 0, "c");
+  const std::string wall =
+      "<box id=\"wall\" size=\"0.2,0.2,0.5\" movable=\"false\"><body position=\"0,-4,0\" orientation=\"0,0,0\"/></box>";
+  const std::string low =
+      "<box id=\"low\" size=\"0.2,0.2,0.05\" movable=\"false\"><body position=\"0,0,0\" orientation=\"0,0,0\"/></box>";
+  const std::string bots = Bot("a", -1, -4, 0, "c") + Bot("b", 1, -4, 0, "c") + Bot("c", -1, 0, 0, "c") +
+                           Bot("e", 1, 0, 0, "c") + Bot("f", -1, 4, 0, "c") + Bot("g", 0, 4, 0, "c") +
+                           Bot("h", 1, 4, 0, "c");
   {
     Scene s = Load(d, RabExperiment(wall + low + bots, RabController("c", "s.lua")));
     ASSERT_TRUE(s.ok()) << s.error;
     RunTicks(*s.world, 1);
-    EXPECT_EQ(Senders(*s.world, 0), std::vector<int>());   // the wall reaches z = 0.1
+    EXPECT_EQ(Senders(*s.world, 0), std::vector<int>());  // the wall reaches z = 0.1
     EXPECT_EQ(Senders(*s.world, 1), std::vector<int>());
     EXPECT_EQ(Senders(*s.world, 2), std::vector<int>({3}));  // the 5 cm box does not
     EXPECT_EQ(Senders(*s.world, 4), std::vector<int>({5}));  // h is hidden by g (a foot-bot)
@@ -152,8 +158,8 @@ TEST(RangeAndBearing, OnlyTheSensorPutsARobotInTheMedium) {
   // a: actuator only (broadcasts nothing, ARGoS quirk); b: sensor only (heard, zeros);
   // c: both.
   Scene s = Load(d, RabExperiment(Bot("a", 0, 0, 0, "act") + Bot("b", 0.5, 0, 0, "sen") + Bot("c", 1, 0, 0, "both"),
-                                  RabController("act", "s.lua", "", true, false) + RabController("sen", "q.lua", "", false, true) +
-                                      RabController("both", "s.lua")));
+                                  RabController("act", "s.lua", "", true, false) +
+                                      RabController("sen", "q.lua", "", false, true) + RabController("both", "s.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 2);
   EXPECT_EQ(Senders(*s.world, 1), std::vector<int>({2}));
@@ -174,13 +180,14 @@ TEST(RangeAndBearing, OneTickLatencyBothRobotOrders) {
           "n = 0\nfunction init() end\n"
           "function step() n = n + 1; local m = robot.range_and_bearing[1]\n"
           "  log(robot.id .. ' ' .. n .. ' ' .. (m and tostring(m.data[1]) or 'none')) end\n");
-  auto ls = LoadLogged(d, RabExperiment(Bot("r0", 0, 0.5, 0, "recv") + Bot("s", 0, 0, 0, "send") + Bot("r2", 0, -0.5, 0, "recv"),
-                                        RabController("send", "send.lua") + RabController("recv", "recv.lua")));
+  auto ls = LoadLogged(
+      d, RabExperiment(Bot("r0", 0, 0.5, 0, "recv") + Bot("s", 0, 0, 0, "send") + Bot("r2", 0, -0.5, 0, "recv"),
+                       RabController("send", "send.lua") + RabController("recv", "recv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 4);
   // r0 (before the sender) and r2 (after it) both hear step t's byte at t+1, init's at 1.
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"r0 1 200", "r2 1 200", "r0 2 1", "r2 2 1", "r0 3 2", "r2 3 2", "r0 4 3",
-                                                 "r2 4 3"}));
+  EXPECT_EQ(ls->lines, std::vector<std::string>(
+                           {"r0 1 200", "r2 1 200", "r0 2 1", "r2 2 1", "r0 3 2", "r2 3 2", "r0 4 3", "r2 4 3"}));
 }
 
 TEST(RangeAndBearing, ClearDataAndLuaTables) {
@@ -210,7 +217,8 @@ TEST(RangeAndBearing, AKeptMessageStillHoldsItsOwnTick) {
   TempDir d;
   d.Write("send.lua",
           "n = 0\nfunction init() robot.range_and_bearing.set_data(1, 100) end\n"
-          "function step() n = n + 1; robot.range_and_bearing.set_data(1, n); robot.range_and_bearing.set_data(2, 2 * n) end\n");
+          "function step() n = n + 1; robot.range_and_bearing.set_data(1, n); robot.range_and_bearing.set_data(2, 2 * "
+          "n) end\n");
   d.Write("recv.lua", R"(
 local kept, kept_data, kept_range, kept_byte
 function init() end
@@ -330,13 +338,13 @@ function step() end
 )");
   auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "conv"), RabController("conv", "conv.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
-  EXPECT_EQ(ls->lines, std::vector<std::string>({"10\tfloat\tinteger", "0\telement #10 9.0072e+15 is out of range",
-                                                 "0\telement #10 -9.22337e+18 is out of range",
-                                                 "0\telement #10 1e+300 is out of range",
-                                                 "0\telement #10 2.14748e+09 is out of range",
-                                                 "0\telement #10 -2.14748e+09 is out of range"}));
-  const double as_read[] = {2147483647.0, -2147483647.0, 2147483647.5, -2147483647.5, 255.0, -0.5, 1e9,
-                            1073741824.0, -300.0, 44.7};
+  EXPECT_EQ(ls->lines,
+            std::vector<std::string>(
+                {"10\tfloat\tinteger", "0\telement #10 9.0072e+15 is out of range",
+                 "0\telement #10 -9.22337e+18 is out of range", "0\telement #10 1e+300 is out of range",
+                 "0\telement #10 2.14748e+09 is out of range", "0\telement #10 -2.14748e+09 is out of range"}));
+  const double as_read[] = {2147483647.0, -2147483647.0, 2147483647.5, -2147483647.5, 255.0,
+                            -0.5,         1e9,           1073741824.0, -300.0,        44.7};
   std::vector<int> want;
   for (double v : as_read) want.push_back(LuaNumberToByte(v));
   EXPECT_EQ(want, std::vector<int>({255, 1, 255, 1, 255, 0, 0, 0, 212, 44}));
@@ -364,7 +372,8 @@ function init()
 end
 function step() end
 )");
-  auto ls = LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "big", "rab_data_size=\"300\""), RabController("big", "big.lua")));
+  auto ls =
+      LoadLogged(d, RabExperiment(Bot("a", 0, 0, 0, "big", "rab_data_size=\"300\""), RabController("big", "big.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   ASSERT_EQ(ls->lines.size(), 3u);
   EXPECT_NE(ls->lines[0].find("element #300 is not a number"), std::string::npos) << ls->lines[0];
@@ -383,9 +392,11 @@ TEST(RangeAndBearing, StaleEntriesBecomeNil) {
           "function init() end\n"
           "function step() log(#robot.range_and_bearing, tostring(robot.range_and_bearing[2] == nil)) end\n");
   // r hears a (still) and b, which drives away at 20 cm/s from 0.9 m: out of 1 m in < 1 s.
-  auto ls = LoadLogged(d, RabExperiment(Bot("r", 0, 0, 0, "recv", "rab_range=\"1\"") + Bot("a", 0, 0.5, 0, "s", "rab_range=\"1\"") +
-                                            Bot("b", 0.9, 0, 0, "go", "rab_range=\"1\""),
-                                        RabController("recv", "recv.lua") + RabController("s", "s.lua") + RabController("go", "go.lua")));
+  auto ls = LoadLogged(
+      d,
+      RabExperiment(Bot("r", 0, 0, 0, "recv", "rab_range=\"1\"") + Bot("a", 0, 0.5, 0, "s", "rab_range=\"1\"") +
+                        Bot("b", 0.9, 0, 0, "go", "rab_range=\"1\""),
+                    RabController("recv", "recv.lua") + RabController("s", "s.lua") + RabController("go", "go.lua")));
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   RunTicks(*ls->s.world, 15);
   EXPECT_EQ(ls->lines.front(), "2\tfalse");
@@ -396,9 +407,10 @@ TEST(RangeAndBearing, PacketDropStatistics) {
   TempDir d;
   d.Write("s.lua", kSilent);
   // One receiver, four senders around it: 4 packets per tick, 600 ticks.
-  Scene s = Load(d, RabExperiment(Bot("r", 0, 0, 0, "recv") + Bot("a", 0.5, 0, 0, "s") + Bot("b", -0.5, 0, 0, "s") +
-                                      Bot("c", 0, 0.5, 0, "s") + Bot("e", 0, -0.5, 0, "s"),
-                                  RabController("recv", "s.lua", "packet_drop_prob=\"0.3\"") + RabController("s", "s.lua")));
+  Scene s =
+      Load(d, RabExperiment(Bot("r", 0, 0, 0, "recv") + Bot("a", 0.5, 0, 0, "s") + Bot("b", -0.5, 0, 0, "s") +
+                                Bot("c", 0, 0.5, 0, "s") + Bot("e", 0, -0.5, 0, "s"),
+                            RabController("recv", "s.lua", "packet_drop_prob=\"0.3\"") + RabController("s", "s.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   int received = 0, sent = 0;
   for (int t = 0; t < 600; ++t) {
@@ -414,8 +426,9 @@ TEST(RangeAndBearing, PacketDropStatistics) {
 TEST(RangeAndBearing, NoiseIsCentredAndDeterministic) {
   TempDir d;
   d.Write("s.lua", kSilent);
-  const std::string xml = RabExperiment(Bot("r", 0, 0, 0, "recv") + Bot("a", 1, 0, 0, "s"),
-                                        RabController("recv", "s.lua", "noise_std_dev=\"0.05\"") + RabController("s", "s.lua"));
+  const std::string xml =
+      RabExperiment(Bot("r", 0, 0, 0, "recv") + Bot("a", 1, 0, 0, "s"),
+                    RabController("recv", "s.lua", "noise_std_dev=\"0.05\"") + RabController("s", "s.lua"));
   double sum_range = 0, sum_bearing = 0;
   std::vector<double> first;
   for (int run = 0; run < 2; ++run) {
@@ -479,7 +492,6 @@ TEST(RangeAndBearing, GridRoutingMatchesAllPairs) {
   EXPECT_GT(total, 1000u);  // the test means something
 }
 
-
 TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
   // A dense scene with boxes, cylinders (one too low to matter) and robots without the
   // sensor: the media's occlusion shortcut must agree with a Box2D ray per pair (spec §5.2).
@@ -503,10 +515,14 @@ TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
     Vec2 p = free_spot(0.5);
     char buf[256];
     if (k % 3 == 0)
-      std::snprintf(buf, sizeof buf, "<cylinder id=\"c%d\" radius=\"0.12\" height=\"%s\" movable=\"false\"><body position=\"%g,%g,0\" orientation=\"0,0,0\"/></cylinder>",
+      std::snprintf(buf, sizeof buf,
+                    "<cylinder id=\"c%d\" radius=\"0.12\" height=\"%s\" movable=\"false\"><body position=\"%g,%g,0\" "
+                    "orientation=\"0,0,0\"/></cylinder>",
                     k, k % 2 ? "0.05" : "0.3", p.x(), p.y());
     else
-      std::snprintf(buf, sizeof buf, "<box id=\"b%d\" size=\"0.3,0.1,0.2\" movable=\"%s\" mass=\"1\"><body position=\"%g,%g,0\" orientation=\"%d,0,0\"/></box>",
+      std::snprintf(buf, sizeof buf,
+                    "<box id=\"b%d\" size=\"0.3,0.1,0.2\" movable=\"%s\" mass=\"1\"><body position=\"%g,%g,0\" "
+                    "orientation=\"%d,0,0\"/></box>",
                     k, k % 2 ? "true" : "false", p.x(), p.y(), k * 37);
     arena += buf;
   }
@@ -514,7 +530,8 @@ TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
     Vec2 p = free_spot(0.4);
     arena += Bot("fb" + std::to_string(i), p.x(), p.y(), 0, i % 7 == 3 ? "blind" : "c", "rab_range=\"2\"");
   }
-  Scene s = Load(d, RabExperiment(arena, RabController("c", "s.lua") + RabController("blind", "s.lua", "", true, false)));
+  Scene s =
+      Load(d, RabExperiment(arena, RabController("c", "s.lua") + RabController("blind", "s.lua", "", true, false)));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 1);
   size_t heard = 0, hidden = 0;
@@ -540,7 +557,6 @@ TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
   EXPECT_GT(hidden, 500u);
 }
 
-
 TEST(RangeAndBearing, ThreadCountDoesNotChangeTheRun) {
   // Robots steer by what they hear and see, with drop and noise on: 1 and 3 threads must
   // give the same poses (receivers draw from their own streams; media are single-threaded).
@@ -563,11 +579,14 @@ end
   std::string ctrl =
       "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
       "<leds implementation=\"default\" medium=\"leds\"/><range_and_bearing implementation=\"default\"/></actuators>"
-      "<sensors><range_and_bearing implementation=\"medium\" medium=\"rab\" noise_std_dev=\"0.02\" packet_drop_prob=\"0.2\"/>"
-      "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\" noise_std_dev=\"0.05\"/></sensors>"
+      "<sensors><range_and_bearing implementation=\"medium\" medium=\"rab\" noise_std_dev=\"0.02\" "
+      "packet_drop_prob=\"0.2\"/>"
+      "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\" "
+      "noise_std_dev=\"0.05\"/></sensors>"
       "<params script=\"steer.lua\"/></lua_controller>";
   std::string bots;
-  for (int i = 0; i < 60; ++i) bots += Bot("fb" + std::to_string(i), -3 + (i % 8) * 0.6, -3 + (i / 8) * 0.6, i * 17, "c", "rab_range=\"1.5\"");
+  for (int i = 0; i < 60; ++i)
+    bots += Bot("fb" + std::to_string(i), -3 + (i % 8) * 0.6, -3 + (i / 8) * 0.6, i * 17, "c", "rab_range=\"1.5\"");
   std::string xml = WithMedia(Experiment(bots, ctrl, 100000), "<range_and_bearing id=\"rab\"/><led id=\"leds\"/>");
   uint64_t hash[2];
   for (int k = 0; k < 2; ++k) {
@@ -690,7 +709,8 @@ TEST(RangeAndBearing, GrazingAndTangentOccludersMatchBruteForce) {
       const double half = std::asin(r / c.norm()), mid = std::atan2(c.y(), c.x());
       for (double side : {-1.0, 1.0})
         for (double eps : {-1e-6, 0.0, 1e-6})
-          add(o + rng.Uniform(0.5, 1.4) * Vec2(std::cos(mid + side * (half + eps)), std::sin(mid + side * (half + eps))));
+          add(o +
+              rng.Uniform(0.5, 1.4) * Vec2(std::cos(mid + side * (half + eps)), std::sin(mid + side * (half + eps))));
     }
     for (int k = 0; k < 60; ++k) add(o + Vec2(rng.Uniform(-1.6, 1.6), rng.Uniform(-1.6, 1.6)));
     for (const Vec2& p : pos) bots += Bot("fb" + std::to_string(id++), p.x(), p.y(), 0, "c");

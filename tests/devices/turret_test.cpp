@@ -17,7 +17,8 @@ const char* kTurretController =
     "<sensors><footbot_turret_encoder implementation=\"default\"/></sensors><params %s/></lua_controller>";
 
 std::string Controller(const std::string& script = "") {
-  std::string params = "script=\"" + (script.empty() ? std::string(ESSAIM_SOURCE_DIR "/tests/support/idle.lua") : script) + "\"";
+  std::string params =
+      "script=\"" + (script.empty() ? std::string(ESSAIM_SOURCE_DIR "/tests/support/idle.lua") : script) + "\"";
   char buf[512];
   std::snprintf(buf, sizeof buf, kTurretController, params.c_str());
   return buf;
@@ -75,8 +76,7 @@ TEST(Turret, SpeedModeTurnsAtXPiOver30AndWraps) {
       40);
   ASSERT_EQ(rot.size(), 40u);
   const double w = 10 * kPi / 30;  // rad/s
-  for (int k = 0; k < 40; ++k)
-    EXPECT_NEAR(WrapSigned(rot[k] - w * 0.1 * (k + 1)), 0, 1e-9) << "tick " << k + 1;
+  for (int k = 0; k < 40; ++k) EXPECT_NEAR(WrapSigned(rot[k] - w * 0.1 * (k + 1)), 0, 1e-9) << "tick " << k + 1;
   // 4 s at 1.047 rad/s = 4.19 rad: past pi, so the reading has wrapped to negative.
   EXPECT_LT(rot[39], 0);
 }

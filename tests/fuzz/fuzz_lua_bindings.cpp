@@ -6,10 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <lua.hpp>
 #include <memory>
 #include <string>
-
-#include <lua.hpp>
 
 #include "core/error_list.h"
 #include "model/xml_loader.h"
@@ -41,14 +40,22 @@ const char* kXml = R"(<argos-configuration>
 </argos-configuration>)";
 
 const char* kFunctions[][2] = {
-    {"wheels", "set_velocity"},          {"leds", "set_all_colors"},
-    {"leds", "set_single_color"},        {"range_and_bearing", "set_data"},
-    {"range_and_bearing", "clear_data"}, {"distance_scanner", "enable"},
-    {"distance_scanner", "disable"},     {"distance_scanner", "set_angle"},
-    {"distance_scanner", "set_rpm"},     {"gripper", "lock_positive"},
-    {"gripper", "unlock"},               {"turret", "set_rotation"},
-    {"turret", "set_rotation_speed"},    {"turret", "set_position_control_mode"},
-    {"turret", "set_speed_control_mode"}, {"turret", "set_passive_mode"},
+    {"wheels", "set_velocity"},
+    {"leds", "set_all_colors"},
+    {"leds", "set_single_color"},
+    {"range_and_bearing", "set_data"},
+    {"range_and_bearing", "clear_data"},
+    {"distance_scanner", "enable"},
+    {"distance_scanner", "disable"},
+    {"distance_scanner", "set_angle"},
+    {"distance_scanner", "set_rpm"},
+    {"gripper", "lock_positive"},
+    {"gripper", "unlock"},
+    {"turret", "set_rotation"},
+    {"turret", "set_rotation_speed"},
+    {"turret", "set_position_control_mode"},
+    {"turret", "set_speed_control_mode"},
+    {"turret", "set_passive_mode"},
     {"colored_blob_omnidirectional_camera", "enable"},
 };
 constexpr int kFunctionCount = sizeof kFunctions / sizeof kFunctions[0];
@@ -73,10 +80,18 @@ struct Bytes {
 void PushArgument(lua_State* L, Bytes& in) {
   static const double kSpecial[] = {NAN, INFINITY, -INFINITY, 1e300, -1e300, 0, 1, 13, 14, 256, -1, 1e18};
   switch (in.U8() % 7) {
-    case 0: lua_pushnil(L); break;
-    case 1: lua_pushinteger(L, static_cast<int8_t>(in.U8())); break;
-    case 2: lua_pushnumber(L, kSpecial[in.U8() % (sizeof kSpecial / sizeof kSpecial[0])]); break;
-    case 3: lua_pushnumber(L, in.F64()); break;
+    case 0:
+      lua_pushnil(L);
+      break;
+    case 1:
+      lua_pushinteger(L, static_cast<int8_t>(in.U8()));
+      break;
+    case 2:
+      lua_pushnumber(L, kSpecial[in.U8() % (sizeof kSpecial / sizeof kSpecial[0])]);
+      break;
+    case 3:
+      lua_pushnumber(L, in.F64());
+      break;
     case 4: {
       static const char* kText[] = {"red", "255,0,0,255", "nope", "", "1,2", "0,0,0,0,0"};
       lua_pushstring(L, kText[in.U8() % 6]);
@@ -86,13 +101,16 @@ void PushArgument(lua_State* L, Bytes& in) {
       int len = in.U8() % 12;
       lua_createtable(L, len, 0);
       for (int i = 1; i <= len; ++i) {
-        if (in.U8() % 4 == 0) lua_pushstring(L, "x");
-        else lua_pushnumber(L, in.U8() % 3 == 0 ? in.F64() : in.U8());
+        if (in.U8() % 4 == 0)
+          lua_pushstring(L, "x");
+        else
+          lua_pushnumber(L, in.U8() % 3 == 0 ? in.F64() : in.U8());
         lua_rawseti(L, -2, i);
       }
       break;
     }
-    default: lua_pushboolean(L, in.U8() & 1);
+    default:
+      lua_pushboolean(L, in.U8() & 1);
   }
 }
 }  // namespace

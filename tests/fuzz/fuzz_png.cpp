@@ -20,6 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   int w = 0, h = 0;
   std::vector<Color> pixels;
   std::string error;
-  if (LoadPngBottomUp(path, LimitsDef().floor_pixels, &w, &h, &pixels, &error) && pixels.size() != static_cast<size_t>(w) * h) __builtin_trap();
+  if (LoadPngBottomUp(path, LimitsDef().floor_pixels, &w, &h, &pixels, &error) &&
+      pixels.size() != static_cast<size_t>(w) * h)
+    __builtin_trap();
   return 0;
 }

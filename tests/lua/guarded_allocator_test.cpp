@@ -1,6 +1,7 @@
 // The guarded allocator every Lua state runs on (lua/host/lua_guard.h, over the small-block
 // pool of lua/host/small_block_pool.h): its accounting is exact on every path it takes.
 #include <gtest/gtest.h>
+
 #include <lua.hpp>
 
 #include "lua/host/lua_guard.h"

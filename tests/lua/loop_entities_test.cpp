@@ -6,8 +6,8 @@
 #include <numeric>
 
 #include "core/json.h"
-#include "sim/run_end.h"
 #include "output/recording.h"
+#include "sim/run_end.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -20,11 +20,12 @@ std::string SensingController(const std::string& script) {
          "<leds implementation=\"default\" medium=\"leds\"/></actuators><sensors>"
          "<colored_blob_omnidirectional_camera implementation=\"rot_z_only\" medium=\"leds\"/>"
          "<footbot_light implementation=\"rot_z_only\" show_rays=\"false\"/>"
-         "<positioning implementation=\"default\"/></sensors><params script=\"" + script + "\"/></lua_controller>";
+         "<positioning implementation=\"default\"/></sensors><params script=\"" +
+         script + "\"/></lua_controller>";
 }
 
-std::string LoopExperiment(const std::string& arena, const std::string& controllers, const std::string& loop_children = "",
-                           int threads = 0) {
+std::string LoopExperiment(const std::string& arena, const std::string& controllers,
+                           const std::string& loop_children = "", int threads = 0) {
   std::string xml = Experiment(arena, controllers, 1000, 3,
                                "<loop_functions script=\"loop.lua\">" + loop_children + "</loop_functions>\n");
   xml.replace(xml.find("<media/>"), 8, "<media><led id=\"leds\"/></media>");
@@ -42,7 +43,8 @@ std::string Cylinder(const std::string& id, double x, double y, bool movable, co
   return buf;
 }
 
-constexpr char kStill[] = "function init() robot.colored_blob_omnidirectional_camera.enable() end\nfunction step() end\n";
+constexpr char kStill[] =
+    "function init() robot.colored_blob_omnidirectional_camera.enable() end\nfunction step() end\n";
 
 std::string Fails(const std::string& loop, const std::string& arena = "") {
   TempDir d;
@@ -122,14 +124,16 @@ function pre_step()
   end
 end
 )");
-  const std::string leds = "<leds medium=\"leds\"><led offset=\"0,0,0.2\" anchor=\"origin\" color=\"red\"/>"
-                           "<led offset=\"0.05,0,0.2\" anchor=\"origin\" color=\"red\"/></leds>";
+  const std::string leds =
+      "<leds medium=\"leds\"><led offset=\"0,0,0.2\" anchor=\"origin\" color=\"red\"/>"
+      "<led offset=\"0.05,0,0.2\" anchor=\"origin\" color=\"red\"/></leds>";
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c") + Cylinder("cyl", 0.5, 0, false, leds),
                                    SensingController("c.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   auto colours = [&] {
     std::string out;
-    for (const Blob& b : s.world->robots[0].rd.blobs) out += std::to_string(b.color.r) + "," + std::to_string(b.color.g) + "," + std::to_string(b.color.b) + ";";
+    for (const Blob& b : s.world->robots[0].rd.blobs)
+      out += std::to_string(b.color.r) + "," + std::to_string(b.color.g) + "," + std::to_string(b.color.b) + ";";
     return out;
   };
   Step(*s.world);
@@ -191,8 +195,7 @@ function post_step()
   end
 end
 )");
-  Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"),
-                                   WheelsController("c", "c.lua")));
+  Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   RecordingWriter rec;
   std::string err;
@@ -215,7 +218,7 @@ end
   EXPECT_TRUE(r.MovablePresent(5, 0));
   EXPECT_EQ(r.scene().obstacles[0].led.r, 255);  // as added
   EXPECT_EQ(r.MovableLed(9, 0).r, 255);
-  EXPECT_EQ(r.MovableLed(10, 0).b, 255);          // recoloured in post_step of tick 10
+  EXPECT_EQ(r.MovableLed(10, 0).b, 255);  // recoloured in post_step of tick 10
   EXPECT_EQ(r.MovableLed(10, 0).r, 0);
   ASSERT_EQ(r.scene().movable.size(), 3u);
   EXPECT_EQ(r.scene().obstacles[2].id, "late");
@@ -231,8 +234,9 @@ end
 
 TEST(LoopEntities, RemovingAHeldCylinderReleasesTheGripAndShiftsNoOtherHold) {
   TempDir d;
-  d.Write("c.lua", "function init() robot.gripper.lock_positive() robot.wheels.set_velocity(5, 5) end\n"
-                   "function step() end");
+  d.Write("c.lua",
+          "function init() robot.gripper.lock_positive() robot.wheels.set_velocity(5, 5) end\n"
+          "function step() end");
   d.Write("loop.lua", R"(
 function post_step()
   if experiment.tick == 40 then experiment.remove_entity(experiment.entities("cylinder")[1]) end
@@ -299,8 +303,9 @@ function post_experiment() return {total = total, cfg = experiment.robots[1]:lua
 TEST(LoopEntities, LoopFunctionChildrenAreParams) {
   TempDir d;
   d.Write("c.lua", kStill);
-  d.Write("loop.lua", "function post_experiment() return {r = experiment.params.params.reset_all, "
-                      "n = experiment.params.zone.radius, s = experiment.params.script} end");
+  d.Write("loop.lua",
+          "function post_experiment() return {r = experiment.params.params.reset_all, "
+          "n = experiment.params.zone.radius, s = experiment.params.script} end");
   Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"), SensingController("c.lua"),
                                    "<params reset_all=\"true\"/><zone radius=\"0.5\"/>"));
   ASSERT_TRUE(s.ok()) << s.error;
@@ -318,10 +323,12 @@ TEST(LoopEntities, LegacyLedPositionLoadsWithOneWarning) {
   TempDir d;
   d.Write("c.lua", kStill);
   d.Write("loop.lua", "");
-  const std::string leds = "<leds medium=\"leds\"><led position=\"0.1,0,0.3\" color=\"red\"/>"
-                           "<led position=\"0,0.1,0.3\" color=\"green\"/></leds>";
-  std::string path = d.Write("experiment.argos", LoopExperiment(Cylinder("a", 1, 0, false, leds) +
-                                                                Cylinder("b", 2, 0, false, leds), SensingController("c.lua")));
+  const std::string leds =
+      "<leds medium=\"leds\"><led position=\"0.1,0,0.3\" color=\"red\"/>"
+      "<led position=\"0,0.1,0.3\" color=\"green\"/></leds>";
+  std::string path = d.Write(
+      "experiment.argos",
+      LoopExperiment(Cylinder("a", 1, 0, false, leds) + Cylinder("b", 2, 0, false, leds), SensingController("c.lua")));
   ErrorList errors, warnings;
   auto model = LoadExperimentFile(path, {}, &errors, &warnings);
   ASSERT_TRUE(model) << errors.Format();
@@ -339,16 +346,19 @@ TEST(LoopEntities, BadCallsNameTheHookAndTheLine) {
   };
   expect("function pre_step()\n  experiment.entities('tree')\nend", "loop functions (pre_step): ");
   expect("function pre_step()\n  experiment.entities('tree')\nend", "loop.lua:2: entities: unknown kind 'tree'");
-  expect("function init()\n  experiment.add_entity('box', {position = {1, 1}})\nend", "loop.lua:2: add_entity: a box spec needs 'size'");
+  expect("function init()\n  experiment.add_entity('box', {position = {1, 1}})\nend",
+         "loop.lua:2: add_entity: a box spec needs 'size'");
   expect("function init() experiment.add_entity('light', {position = {1, 1}, color = 'plaid', medium = 'leds'}) end",
          "add_entity: bad colour 'plaid'");
   expect("function init() experiment.add_entity('light', {position = {1, 1}, color = 'red', medium = 'nope'}) end",
          "medium 'nope' is not declared");
-  expect("function post_step()\n  local c = experiment.entities('cylinder')[1]\n  experiment.remove_entity(c)\n"
-         "  c:position()\nend",
-         "loop.lua:4: position: cylinder 'cyl' was removed", Cylinder("cyl", 1, 1, true));
+  expect(
+      "function post_step()\n  local c = experiment.entities('cylinder')[1]\n  experiment.remove_entity(c)\n"
+      "  c:position()\nend",
+      "loop.lua:4: position: cylinder 'cyl' was removed", Cylinder("cyl", 1, 1, true));
   expect("function post_step() experiment.entities('cylinder')[1]:set_led_color('plaid') end",
-         "set_led_color: bad colour 'plaid'", Cylinder("cyl", 1, 1, true, "<leds medium=\"leds\"><led offset=\"0,0,0.3\" color=\"red\"/></leds>"));
+         "set_led_color: bad colour 'plaid'",
+         Cylinder("cyl", 1, 1, true, "<leds medium=\"leds\"><led offset=\"0,0,0.3\" color=\"red\"/></leds>"));
   expect("function post_step() experiment.entities('cylinder')[1]:set_pose(2, 2) end",
          "set_pose: cylinder 'cyl' is static", Cylinder("cyl", 1, 1, false));
   expect("function post_step() experiment.robots[1]:intensity() end", "intensity: 'fb0' is a foot-bot, not a light");
@@ -386,10 +396,12 @@ end
   uint64_t hashes[2];
   int k = 0;
   for (int threads : {1, 4}) {
-    Scene s = Load(d, LoopExperiment(arena, "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
-                                            "</actuators><sensors><colored_blob_omnidirectional_camera implementation=\"rot_z_only\" "
-                                            "medium=\"leds\"/></sensors><params script=\"c.lua\"/></lua_controller>",
-                                     "", threads));
+    Scene s = Load(
+        d, LoopExperiment(arena,
+                          "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\"/>"
+                          "</actuators><sensors><colored_blob_omnidirectional_camera implementation=\"rot_z_only\" "
+                          "medium=\"leds\"/></sensors><params script=\"c.lua\"/></lua_controller>",
+                          "", threads));
     ASSERT_TRUE(s.ok()) << s.error;
     for (int i = 0; i < 80; ++i) ASSERT_EQ(Step(*s.world), StepStatus::Running) << s.world->failure;
     ASSERT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;

@@ -1,9 +1,10 @@
 // A controller's Lua global as a value tree, checked through its JSON form (LuaGlobalToValue,
 // behind the Python module's lua_global).
+#include "lua/loop/lua_copy.h"
+
 #include <gtest/gtest.h>
 
 #include "core/json.h"
-#include "lua/loop/lua_copy.h"
 #include "support/scene.h"
 
 namespace essaim {

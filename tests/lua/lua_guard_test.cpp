@@ -73,8 +73,9 @@ TEST(LuaSandbox, LoopFunctionsAreSandboxedToo) {
   TempDir d;
   d.Write("c.lua", "function step() end");
   d.Write("loop.lua", "function post_step() os.execute('true') end");
-  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua"), 10, 1,
-                              "<loop_functions script=\"loop.lua\"/>"),
+  Scene s = Load(d,
+                 Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua"), 10, 1,
+                            "<loop_functions script=\"loop.lua\"/>"),
                  {}, Sandboxed());
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_EQ(Step(*s.world), StepStatus::Failed);
@@ -100,7 +101,8 @@ TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
   so.lua.instruction_limit = 1000000;
   // debug.sethook is refused outright (a loop calling it kept removing the hook)...
   std::string e = StepError("function step() debug.sethook() local x = 1 while x > 0 do x = x + 1 end end", so);
-  EXPECT_NE(e.find("c.lua:1: debug.sethook is not available: the watchdog's hook cannot be replaced"), std::string::npos)
+  EXPECT_NE(e.find("c.lua:1: debug.sethook is not available: the watchdog's hook cannot be replaced"),
+            std::string::npos)
       << e;
   // ...and a script that catches the refusal is still stopped by its budget.
   e = StepError("function step() pcall(debug.sethook) local x = 1 while x > 0 do x = x + 1 end end", so);
@@ -111,11 +113,13 @@ TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
 TEST(LuaWatchdog, ByDefaultCoversCoroutinesToo) {
   SimOptions so;
   so.lua.instruction_limit = 1000000;
-  for (const char* body : {"coroutine.wrap(function() while true do end end)()",
-                           "coroutine.resume(coroutine.create(function() while true do end end)) while true do end",
-                           "local co = coroutine.wrap(function() coroutine.yield(1) while true do end end) co() co()"}) {
+  for (const char* body :
+       {"coroutine.wrap(function() while true do end end)()",
+        "coroutine.resume(coroutine.create(function() while true do end end)) while true do end",
+        "local co = coroutine.wrap(function() coroutine.yield(1) while true do end end) co() co()"}) {
     std::string e = StepError(std::string("function step() ") + body + " end", so);
-    EXPECT_NE(e.find("instruction budget exceeded (1000000 instructions per call"), std::string::npos) << body << "\n" << e;
+    EXPECT_NE(e.find("instruction budget exceeded (1000000 instructions per call"), std::string::npos) << body << "\n"
+                                                                                                       << e;
   }
 }
 
@@ -161,8 +165,9 @@ TEST(LuaWatchdog, MemoryHogIsClosedAndFreedOthersUntouched) {
   d.Write("good.lua", "function step() robot.wheels.set_velocity(5, 5) end");
   SimOptions so;
   so.lua.memory_limit = 8u << 20;
-  Scene s = Load(d, Experiment(FootBot("hog", 0, 0, 0, "h") + FootBot("good", 0, 1, 0, "g"),
-                              WheelsController("h", "hog.lua") + WheelsController("g", "good.lua")),
+  Scene s = Load(d,
+                 Experiment(FootBot("hog", 0, 0, 0, "h") + FootBot("good", 0, 1, 0, "g"),
+                            WheelsController("h", "hog.lua") + WheelsController("g", "good.lua")),
                  {}, so);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 10);
@@ -197,13 +202,15 @@ function step()
 end)");
   d.Write("talk.lua", "function step() robot.range_and_bearing.set_data(1, 7) robot.wheels.set_velocity(1, 1) end");
   auto rab_controller = [](const std::string& id, const std::string& script) {
-    return "<lua_controller id=\"" + id + "\"><actuators><differential_steering implementation=\"default\"/>"
+    return "<lua_controller id=\"" + id +
+           "\"><actuators><differential_steering implementation=\"default\"/>"
            "<range_and_bearing implementation=\"default\"/></actuators><sensors>"
-           "<range_and_bearing implementation=\"medium\" medium=\"rab\"/></sensors><params script=\"" + script +
-           "\"/></lua_controller>";
+           "<range_and_bearing implementation=\"medium\" medium=\"rab\"/></sensors><params script=\"" +
+           script + "\"/></lua_controller>";
   };
   std::string bots = FootBot("hog", 0, 0, 0, "h");
-  for (int k = 0; k < 4; ++k) bots += FootBot("t" + std::to_string(k), 0.5 * std::cos(k * 1.5), 0.5 * std::sin(k * 1.5), 0, "t");
+  for (int k = 0; k < 4; ++k)
+    bots += FootBot("t" + std::to_string(k), 0.5 * std::cos(k * 1.5), 0.5 * std::sin(k * 1.5), 0, "t");
   std::string xml = Experiment(bots, rab_controller("h", "hog.lua") + rab_controller("t", "talk.lua"));
   xml.replace(xml.find("<media/>"), 8, "<media><range_and_bearing id=\"rab\"/></media>");
   SimOptions so;
@@ -234,8 +241,9 @@ end)");
   SimOptions so;
   so.lua.instruction_limit = 1000000;
   d.Write("c2.lua", "function step() robot.wheels.set_velocity(5, 5) end");
-  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c2"),
-                              WheelsController("c", "c.lua") + WheelsController("c2", "c2.lua")),
+  Scene s = Load(d,
+                 Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c2"),
+                            WheelsController("c", "c.lua") + WheelsController("c2", "c2.lua")),
                  {}, so);
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 5);
@@ -312,8 +320,8 @@ TEST(ErrorReports, InitErrorsArePrintedAndIdenticalOnesGrouped) {
   so.log_sink = [&](char stream, const std::string& line, const LogOrigin&) {
     if (stream == 'E') printed.push_back(line);
   };
-  std::string arena = FootBot("a", 0, 0, 0, "c") + FootBot("b", 0, 1, 0, "c") + FootBot("c", 0, 2, 0, "c") +
-                      FootBot("d", 1, 0, 0, "k");
+  std::string arena =
+      FootBot("a", 0, 0, 0, "c") + FootBot("b", 0, 1, 0, "c") + FootBot("c", 0, 2, 0, "c") + FootBot("d", 1, 0, 0, "k");
   Scene s = Load(d, Experiment(arena, WheelsController("c", "c.lua") + WheelsController("k", "ok.lua")), {}, so);
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_EQ(s.world->controller_errors.size(), 3u);

@@ -41,7 +41,8 @@ end
 function step() end
 )");
   Logged log;
-  Scene s = LoadWithLog(d, Experiment(FootBot("fb7", 0, 0, 0, "c"), WheelsController("c", "c.lua", "", "speed=\"12.5\"")), &log);
+  Scene s = LoadWithLog(
+      d, Experiment(FootBot("fb7", 0, 0, 0, "c"), WheelsController("c", "c.lua", "", "speed=\"12.5\"")), &log);
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
   RunTicks(*s.world, 1);
@@ -106,7 +107,8 @@ TEST(LuaHost, RequireFindsModulesBesideTheScript) {
   TempDir d;
   system(("mkdir -p " + d.path() + "/ctrl/lib").c_str());
   d.Write("ctrl/lib/helper.lua", "local M = {} function M.double(x) return 2 * x end return M");
-  d.Write("ctrl/main.lua", "local h = require 'lib.helper'\nfunction init() assert(h.double(21) == 42) end\nfunction step() end");
+  d.Write("ctrl/main.lua",
+          "local h = require 'lib.helper'\nfunction init() assert(h.double(21) == 42) end\nfunction step() end");
   Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "ctrl/main.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_TRUE(s.world->controller_errors.empty());
@@ -209,7 +211,8 @@ TEST(LuaHost, SandboxStopsARunawayStep) {
   ASSERT_TRUE(s.ok()) << s.error;
   Step(*s.world);
   ASSERT_EQ(s.world->controller_errors.size(), 1u);
-  EXPECT_NE(s.world->controller_errors[0].message.find("instruction budget exceeded (100000 instructions per call"), std::string::npos)
+  EXPECT_NE(s.world->controller_errors[0].message.find("instruction budget exceeded (100000 instructions per call"),
+            std::string::npos)
       << s.world->controller_errors[0].message;
 }
 
@@ -233,7 +236,7 @@ end
 )");
   std::string arena = FootBot("a", 0, 0, 0, "c") + FootBot("b", 0, 1, 0, "c");
   Scene s = Load(d, Experiment(arena, WheelsController("c", "c.lua"), 1000, 1,
-                              "<loop_functions script=\"loop.lua\" label=\"hello\"/>"));
+                               "<loop_functions script=\"loop.lua\" label=\"hello\"/>"));
   ASSERT_TRUE(s.ok()) << s.error;
   StepStatus st;
   while ((st = Step(*s.world)) == StepStatus::Running) {
@@ -249,9 +252,10 @@ end
   ASSERT_TRUE(FinishRun(*s.world, &metrics_tree, &has, &err)) << err;
   Json metrics = ToJson(metrics_tree);
   ASSERT_TRUE(has);
-  EXPECT_EQ(DumpJson(metrics),
-            "{\n  \"alive2\": false,\n  \"id\": \"a\",\n  \"label\": \"hello\",\n  \"list\": [\n    1,\n    2,\n    3\n  ],\n"
-            "  \"robots\": 2\n}\n");
+  EXPECT_EQ(
+      DumpJson(metrics),
+      "{\n  \"alive2\": false,\n  \"id\": \"a\",\n  \"label\": \"hello\",\n  \"list\": [\n    1,\n    2,\n    3\n  ],\n"
+      "  \"robots\": 2\n}\n");
   const Timeseries& ts = s.world->loop_functions.Series();
   ASSERT_EQ(ts.columns.size(), 2u);
   ASSERT_EQ(ts.rows.size(), 4u);
@@ -271,7 +275,7 @@ std::string LoopFailure(const std::string& body, const std::string& floor = "") 
   d.Write("c.lua", "function step() end");
   d.Write("loop.lua", body);
   Scene s = Load(d, Experiment(floor + FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua"), 100, 1,
-                              "<loop_functions script=\"loop.lua\"/>"));
+                               "<loop_functions script=\"loop.lua\"/>"));
   if (!s.ok()) return s.error;
   for (int i = 0; i < 5; ++i)
     if (Step(*s.world) == StepStatus::Failed) return s.world->failure;
@@ -291,7 +295,8 @@ TEST(LoopFunctions, RebindingExperimentOrMetatablesOnGlobalsCannotCrashTheHost) 
   EXPECT_EQ(LoopFailure("function init() setmetatable(experiment, {__newindex = function() error('no') end}) end"), "");
   EXPECT_EQ(LoopFailure("function init() setmetatable(_G, {__index = function() error('no') end}) end"), "");
   // The script's own use of the rebound global is an ordinary, reported error.
-  std::string f = LoopFailure("function pre_step() experiment = nil end\nfunction post_step() return experiment.tick end");
+  std::string f =
+      LoopFailure("function pre_step() experiment = nil end\nfunction post_step() return experiment.tick end");
   EXPECT_NE(f.find("loop functions (post_step): "), std::string::npos) << f;
 }
 
@@ -344,7 +349,8 @@ TEST(LuaHost, AScriptWithoutStepFailsTheRun) {
   // It would stand still all run: the run fails (ARGoS logs it and goes on).
   TempDir d;
   d.Write("c.lua", "function init() end");
-  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c"), WheelsController("c", "c.lua")));
+  Scene s =
+      Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c"), WheelsController("c", "c.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   EXPECT_NE(s.world->failure.find("robot fb0: "), std::string::npos) << s.world->failure;
   EXPECT_NE(s.world->failure.find("c.lua: no global function 'step' after init() (nor in 1 more robots)"),

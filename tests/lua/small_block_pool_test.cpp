@@ -1,12 +1,12 @@
 // The Lua states' small-block pool (lua/host/small_block_pool.h): classes, reuse, alignment.
+#include "lua/host/small_block_pool.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 #include <set>
 #include <vector>
-
-#include "lua/host/small_block_pool.h"
 
 namespace essaim {
 namespace {

@@ -54,8 +54,9 @@ TEST(UnknownAttributes, SetOfATypoIsAnErrorWithTheClosestName) {
   opt.overrides = {"arena.distribute.entity.quantiy=50", "framework.experiment.lenght=3"};
   Loaded l = LoadWith(Experiment(kDistribute, kCtrl), opt);
   EXPECT_FALSE(l.model);
-  EXPECT_TRUE(Contains(l.Errors(), "<entity>: --set arena.distribute.entity.quantiy=50: essaim reads no attribute "
-                                   "'quantiy' on <entity>; did you mean 'quantity'?"))
+  EXPECT_TRUE(Contains(l.Errors(),
+                       "<entity>: --set arena.distribute.entity.quantiy=50: essaim reads no attribute "
+                       "'quantiy' on <entity>; did you mean 'quantity'?"))
       << l.Errors();
   EXPECT_TRUE(Contains(l.Errors(), ":2: <experiment>: --set framework.experiment.lenght=3")) << l.Errors();
   EXPECT_TRUE(Contains(l.Errors(), "did you mean 'length'?")) << l.Errors();
@@ -79,18 +80,21 @@ TEST(UnknownAttributes, SetOnADeviceOrAnIgnoredElementIsChecked) {
   Loaded l = LoadWith(xml, opt);
   EXPECT_FALSE(l.model);
   EXPECT_TRUE(Contains(l.Errors(), "did you mean 'noise_level'?")) << l.Errors();
-  EXPECT_TRUE(Contains(l.Errors(), "--set visualization.qt-opengl.x=1: essaim does not read <qt-opengl>")) << l.Errors();
+  EXPECT_TRUE(Contains(l.Errors(), "--set visualization.qt-opengl.x=1: essaim does not read <qt-opengl>"))
+      << l.Errors();
 }
 
 TEST(UnknownAttributes, ATypoInTheFileIsAWarningAndAnErrorUnderStrict) {
-  std::string arena = "<light id=\"l\" position=\"1,1,0.5\" orientation=\"0,0,0\" color=\"yellow\" intensty=\"2\" "
-                      "intensity=\"1\" medium=\"leds\"/>";
+  std::string arena =
+      "<light id=\"l\" position=\"1,1,0.5\" orientation=\"0,0,0\" color=\"yellow\" intensty=\"2\" "
+      "intensity=\"1\" medium=\"leds\"/>";
   std::string xml = Experiment(arena, kCtrl);
   xml = Replace(xml, "<media/>", "<media><led id=\"leds\"/></media>");
   Loaded l = LoadWith(xml);
   ASSERT_TRUE(l.model) << l.Errors();
-  EXPECT_TRUE(Contains(l.Warnings(), ":4: <light>: unknown attribute 'intensty' (essaim does not read it); did you "
-                                     "mean 'intensity'?"))
+  EXPECT_TRUE(Contains(l.Warnings(),
+                       ":4: <light>: unknown attribute 'intensty' (essaim does not read it); did you "
+                       "mean 'intensity'?"))
       << l.Warnings();
   EXPECT_EQ(l.warnings.Size(), 1u) << l.Warnings();
 
@@ -111,11 +115,14 @@ TEST(UnknownAttributes, DeviceAttributeTyposAndIgnoredOnesAreTold) {
 }
 
 TEST(UnknownAttributes, AttributesArgosAcceptsAndEssaimIgnoresAreNotTypos) {
-  std::string xml = Experiment(
-      "<foot-bot id=\"fb\" perspective_camera_front=\"true\"><controller config=\"c\"/></foot-bot>", kCtrl);
-  xml = Replace(xml, "<framework>", "<framework><system threads=\"0\" pin_threads_to_cores=\"false\"/>"
-              "<profiling file=\"p.txt\" format=\"table\" truncate_file=\"true\"/>");
-  xml = Replace(xml, "<dynamics2d id=\"dyn2d\" iterations=\"10\"/>", "<dynamics2d id=\"dyn2d\" iterations=\"10\"><spatial_hash cell_size=\"1\" cell_num=\"10\"/></dynamics2d>");
+  std::string xml =
+      Experiment("<foot-bot id=\"fb\" perspective_camera_front=\"true\"><controller config=\"c\"/></foot-bot>", kCtrl);
+  xml = Replace(xml, "<framework>",
+                "<framework><system threads=\"0\" pin_threads_to_cores=\"false\"/>"
+                "<profiling file=\"p.txt\" format=\"table\" truncate_file=\"true\"/>");
+  xml = Replace(
+      xml, "<dynamics2d id=\"dyn2d\" iterations=\"10\"/>",
+      "<dynamics2d id=\"dyn2d\" iterations=\"10\"><spatial_hash cell_size=\"1\" cell_num=\"10\"/></dynamics2d>");
   xml = Replace(xml, "<argos-configuration>",
                 "<argos-configuration xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
                 "xsi:noNamespaceSchemaLocation=\"argos.xsd\">");
@@ -131,8 +138,9 @@ TEST(UnknownAttributes, AnAttributeThatCountsOnlyWithOtherSettingsIsToldSo) {
   opt.overrides = {"arena.a.mass=3"};  // a static box has no mass: a sweep over it changes nothing
   Loaded l = LoadWith(Experiment(arena, kCtrl), opt);
   EXPECT_FALSE(l.model);
-  EXPECT_TRUE(Contains(l.Errors(), "--set arena.a.mass=3: essaim reads no attribute 'mass' on <box>; it counts on "
-                                   "other <box> elements, not with this one's settings"))
+  EXPECT_TRUE(Contains(l.Errors(),
+                       "--set arena.a.mass=3: essaim reads no attribute 'mass' on <box>; it counts on "
+                       "other <box> elements, not with this one's settings"))
       << l.Errors();
 }
 
@@ -142,8 +150,9 @@ TEST(UnknownAttributes, ADistributedPrototypeIsCheckedEvenWithQuantityZero) {
   arena = Replace(arena, "<foot-bot id=\"fb\"", "<foot-bot id=\"fb\" rab_rnage=\"2\"");
   Loaded l = LoadWith(Experiment(arena, kCtrl));
   ASSERT_TRUE(l.model) << l.Errors();
-  EXPECT_TRUE(Contains(l.Warnings(), "unknown attribute 'rab_rnage' (essaim does not read it); did you mean "
-                                     "'rab_range'?"))
+  EXPECT_TRUE(Contains(l.Warnings(),
+                       "unknown attribute 'rab_rnage' (essaim does not read it); did you mean "
+                       "'rab_range'?"))
       << l.Warnings();
 }
 
@@ -171,7 +180,8 @@ TEST(UnknownAttributes, EveryAttributeDeviceParamsReadsIsInTheDeviceTable) {
 TEST(UnknownAttributes, EveryShippedExperimentLoadsWithoutWarnings) {
   int files = 0;
   for (const char* dir : {"arenas", "bench", "tests"}) {
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(std::string(ESSAIM_SOURCE_DIR) + "/" + dir)) {
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(ESSAIM_SOURCE_DIR) + "/" + dir)) {
       if (entry.path().extension() != ".argos") continue;
       // Fuzz seeds are inputs for the fuzzer (their scripts live in tests/fuzz/data), not experiments.
       if (entry.path().string().find("/tests/fuzz/") != std::string::npos) continue;
@@ -236,13 +246,15 @@ TEST(Placement, DistributeAtFixedOverlappingPositionsIsAnErrorWithTheLine) {
   EXPECT_TRUE(Contains(l.Errors(), "could not place 'fb1' without overlap after 101 attempts")) << l.Errors();
 
   std::string grid = kDistribute;
-  grid = Replace(grid, "method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"", "method=\"grid\" center=\"0,0,0\" distances=\"0.1,0.1,0\" layout=\"5,1,1\"");
+  grid = Replace(grid, "method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"",
+                 "method=\"grid\" center=\"0,0,0\" distances=\"0.1,0.1,0\" layout=\"5,1,1\"");
   Loaded g = LoadWith(Experiment(grid, kCtrl));
   EXPECT_FALSE(g.model);
   EXPECT_TRUE(Contains(g.Errors(), "could not place 'fb1'")) << g.Errors();
 
   std::string outside = kDistribute;
-  outside = Replace(outside, "method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"", "method=\"constant\" values=\"9,0,0\"");
+  outside =
+      Replace(outside, "method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"", "method=\"constant\" values=\"9,0,0\"");
   Loaded o = LoadWith(Experiment(outside, kCtrl));
   EXPECT_FALSE(o.model);
   EXPECT_TRUE(Contains(o.Errors(), "generated foot-bot 'fb0' at (9, 0) is outside the arena")) << o.Errors();
@@ -259,8 +271,7 @@ TEST(Placement, DistributeAtRandomRetriesUntilNoRobotOverlaps) {
   ASSERT_EQ(robots.size(), 40u);
   for (size_t i = 0; i < robots.size(); ++i)
     for (size_t j = 0; j < i; ++j)
-      EXPECT_GE(std::hypot(robots[i].pose.x - robots[j].pose.x, robots[i].pose.y - robots[j].pose.y),
-                2 * 0.085036758)
+      EXPECT_GE(std::hypot(robots[i].pose.x - robots[j].pose.x, robots[i].pose.y - robots[j].pose.y), 2 * 0.085036758)
           << robots[i].id << " and " << robots[j].id;
 }
 

@@ -49,15 +49,15 @@ TEST(Loader, LengthIsTruncatedAsArgos) {
 TEST(Loader, ReportsEveryErrorWithLineAndElement) {
   TempDir d;
   std::string xml =
-      "<argos-configuration>\n"                                          // 1
-      "  <framework><experiment ticks_per_second=\"ten\"/></framework>\n"  // 2
-      "  <controllers>\n"                                                // 3
+      "<argos-configuration>\n"                                                                         // 1
+      "  <framework><experiment ticks_per_second=\"ten\"/></framework>\n"                               // 2
+      "  <controllers>\n"                                                                               // 3
       "    <lua_controller id=\"c\"><actuators><warp_drive implementation=\"default\"/></actuators>\n"  // 4
-      "      <sensors/><params script=\"missing.lua\"/></lua_controller>\n"  // 5
-      "  </controllers>\n"                                               // 6
-      "  <arena size=\"10,10\">\n"                                         // 7
-      "    <teapot id=\"t\"/>\n"                                          // 8
-      "    <box id=\"b\" size=\"1,1,1\" movable=\"true\"><body position=\"0,0,0\"/></box>\n"  // 9
+      "      <sensors/><params script=\"missing.lua\"/></lua_controller>\n"                             // 5
+      "  </controllers>\n"                                                                              // 6
+      "  <arena size=\"10,10\">\n"                                                                      // 7
+      "    <teapot id=\"t\"/>\n"                                                                        // 8
+      "    <box id=\"b\" size=\"1,1,1\" movable=\"true\"><body position=\"0,0,0\"/></box>\n"            // 9
       "  </arena>\n"
       "  <physics_engines><dynamics2d id=\"d\"/></physics_engines><media/>\n"
       "</argos-configuration>\n";
@@ -65,7 +65,9 @@ TEST(Loader, ReportsEveryErrorWithLineAndElement) {
   auto m = LoadText(d, xml, &e);
   EXPECT_FALSE(m);
   std::string all = e.Format();
-  EXPECT_NE(all.find("x.argos:2: <experiment>: attribute 'ticks_per_second': 'ten' is not an integer"), std::string::npos) << all;
+  EXPECT_NE(all.find("x.argos:2: <experiment>: attribute 'ticks_per_second': 'ten' is not an integer"),
+            std::string::npos)
+      << all;
   EXPECT_NE(all.find(":4: <warp_drive>: unknown actuator"), std::string::npos) << all;
   EXPECT_NE(all.find(":5: <params>: script 'missing.lua' not found"), std::string::npos) << all;
   EXPECT_NE(all.find(":7: <arena>: attribute 'size'"), std::string::npos) << all;
@@ -93,7 +95,9 @@ TEST(Loader, UnsupportedDeviceIsNamed) {
   TempDir d;
   d.Write("c.lua", "");
   ErrorList e;
-  std::string c = "<lua_controller id=\"c\"><actuators/><sensors><perspective_camera implementation=\"default\"/></sensors><params/></lua_controller>";
+  std::string c =
+      "<lua_controller id=\"c\"><actuators/><sensors><perspective_camera "
+      "implementation=\"default\"/></sensors><params/></lua_controller>";
   EXPECT_FALSE(LoadText(d, Experiment("", c), &e));
   EXPECT_NE(e.Format().find("<perspective_camera>: unknown sensor"), std::string::npos) << e.Format();
 }
@@ -114,8 +118,7 @@ TEST(Loader, HugeNumbersAreClearErrors) {
   o.overrides = {"framework.experiment.ticks_per_second=99999999999"};
   ErrorList e2;
   EXPECT_FALSE(LoadText(d, xml, &e2, o));
-  EXPECT_NE(e2.Format().find("ticks_per_second must be between 1 and 1000000"), std::string::npos)
-      << e2.Format();
+  EXPECT_NE(e2.Format().find("ticks_per_second must be between 1 and 1000000"), std::string::npos) << e2.Format();
   std::string with_system = xml;
   with_system.replace(at, 0, "<system threads=\"100000\"/>");
   ErrorList e3;
@@ -144,7 +147,8 @@ TEST(Loader, PerRobotParamsReplaceTheControllers) {
   TempDir d;
   d.Write("c.lua", "");
   ErrorList e;
-  std::string bot = "<foot-bot id=\"fb0\"><controller config=\"c\"><params script=\"c.lua\" mine=\"1\"/></controller></foot-bot>";
+  std::string bot =
+      "<foot-bot id=\"fb0\"><controller config=\"c\"><params script=\"c.lua\" mine=\"1\"/></controller></foot-bot>";
   auto m = LoadText(d, Experiment(bot, kCtrl), &e);
   ASSERT_TRUE(m) << e.Format();
   EXPECT_EQ(m->robots[0].params.count("speed"), 0u);
@@ -158,7 +162,8 @@ TEST(Loader, GridDistributeFollowsTheFormulaAndNamesIds) {
   std::string dist =
       "<distribute><position method=\"grid\" center=\"1,2,0\" distances=\"0.5,0.4,0\" layout=\"3,2,1\"/>"
       "<orientation method=\"constant\" values=\"45,0,0\"/>"
-      "<entity quantity=\"5\" max_trials=\"10\" base_num=\"7\"><foot-bot id=\"bot\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+      "<entity quantity=\"5\" max_trials=\"10\" base_num=\"7\"><foot-bot id=\"bot\"><controller "
+      "config=\"c\"/></foot-bot></entity></distribute>";
   auto m = LoadText(d, Experiment(dist, kCtrl), &e);
   ASSERT_TRUE(m) << e.Format();
   ASSERT_EQ(m->robots.size(), 5u);
@@ -177,7 +182,9 @@ TEST(Loader, DistributeAvoidsOverlapsOrFailsClearly) {
   auto dist = [](int n) {
     return "<distribute><position method=\"uniform\" min=\"-0.5,-0.5,0\" max=\"0.5,0.5,0\"/>"
            "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/>"
-           "<entity quantity=\"" + std::to_string(n) + "\" max_trials=\"200\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+           "<entity quantity=\"" +
+           std::to_string(n) +
+           "\" max_trials=\"200\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
   };
   ErrorList e;
   auto m = LoadText(d, Experiment(dist(10), kCtrl), &e);
@@ -198,7 +205,8 @@ TEST(Loader, SameSeedSamePlacementDifferentSeedDiffers) {
   std::string dist =
       "<distribute><position method=\"uniform\" min=\"-4,-4,0\" max=\"4,4,0\"/>"
       "<orientation method=\"gaussian\" mean=\"0,0,0\" std_dev=\"90,0,0\"/>"
-      "<entity quantity=\"20\" max_trials=\"50\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+      "<entity quantity=\"20\" max_trials=\"50\"><foot-bot id=\"fb\"><controller "
+      "config=\"c\"/></foot-bot></entity></distribute>";
   ErrorList e;
   auto a = LoadText(d, Experiment(dist, kCtrl, 10, 5), &e);
   auto b = LoadText(d, Experiment(dist, kCtrl, 10, 5), &e);
@@ -252,7 +260,8 @@ TEST(Loader, MissingFloorImageAndExhaustedGridAreErrors) {
       "<floor id=\"f\" source=\"image\" path=\"nowhere.png\"/>"
       "<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"2,1,1\"/>"
       "<orientation method=\"constant\" values=\"0,0,0\"/>"
-      "<entity quantity=\"3\" max_trials=\"5\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+      "<entity quantity=\"3\" max_trials=\"5\"><foot-bot id=\"fb\"><controller "
+      "config=\"c\"/></foot-bot></entity></distribute>";
   ErrorList e;
   EXPECT_FALSE(LoadExperimentFile(d.Write("x.argos", Experiment(arena, kCtrl)), {}, &e));
   std::string all = e.Format();
@@ -281,9 +290,10 @@ TEST(Loader, GridLayoutOutOfIntRangeIsAnError) {
   TempDir d;
   d.Write("c.lua", "function step() end");
   for (const char* layout : {"1e80,1,1", "-1e80,1,1", "1,0,1"}) {
-    std::string arena = std::string("<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"") +
-                        layout + "\"/><orientation method=\"constant\" values=\"0,0,0\"/>"
-                        "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+    std::string arena =
+        std::string("<distribute><position method=\"grid\" center=\"0,0,0\" distances=\"1,1,0\" layout=\"") + layout +
+        "\"/><orientation method=\"constant\" values=\"0,0,0\"/>"
+        "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
     ErrorList e;
     EXPECT_FALSE(LoadText(d, Experiment(arena, kCtrl), &e)) << layout;
     EXPECT_NE(e.Format().find("<position>: layout components must be > 0 (and at most 1000000)"), std::string::npos)
@@ -297,18 +307,21 @@ TEST(Loader, FarPositionsAreErrorsAndHugeAnglesAreReduced) {
   TempDir d;
   d.Write("c.lua", "function step() end");
   ErrorList e;
-  std::string arena = FootBot("far", 1e39, 0, 0, "c") +
-                      "<distribute><position method=\"uniform\" min=\"0,0,0\" max=\"1e300,1,0\"/>"
-                      "<orientation method=\"constant\" values=\"0,0,0\"/>"
-                      "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+  std::string arena =
+      FootBot("far", 1e39, 0, 0, "c") +
+      "<distribute><position method=\"uniform\" min=\"0,0,0\" max=\"1e300,1,0\"/>"
+      "<orientation method=\"constant\" values=\"0,0,0\"/>"
+      "<entity quantity=\"1\"><foot-bot id=\"d\"><controller config=\"c\"/></foot-bot></entity></distribute>";
   EXPECT_FALSE(LoadText(d, Experiment(arena, kCtrl), &e));
   std::string all = e.Format();
   EXPECT_NE(all.find("<body>: position beyond 1e6 m from the origin"), std::string::npos) << all;
   EXPECT_NE(all.find("<position>: position beyond 1e6 m from the origin"), std::string::npos) << all;
 
   ErrorList e2;
-  auto m = LoadText(d, Experiment(FootBot("a", 0, 0, 1e300, "c") + FootBot("b", 1, 0, 450, "c") +
-                                  FootBot("c", -1, 0, 90, "c"), kCtrl), &e2);
+  auto m = LoadText(
+      d,
+      Experiment(FootBot("a", 0, 0, 1e300, "c") + FootBot("b", 1, 0, 450, "c") + FootBot("c", -1, 0, 90, "c"), kCtrl),
+      &e2);
   ASSERT_TRUE(m) << e2.Format();
   EXPECT_DOUBLE_EQ(m->robots[0].pose.yaw, DegToRad(std::fmod(1e300, 360.0)));
   EXPECT_DOUBLE_EQ(m->robots[1].pose.yaw, DegToRad(90));

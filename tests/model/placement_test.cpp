@@ -1,10 +1,11 @@
 // PlacedFootprints (model/placement.h): the grid-backed overlap test gives the same answer
 // (and names the same first footprint) as testing every placed footprint, for circles and
 // turned boxes, inside the arena and beyond it, while footprints are being added.
+#include "model/placement.h"
+
 #include <gtest/gtest.h>
 
 #include "core/rng.h"
-#include "model/placement.h"
 
 namespace essaim {
 namespace {

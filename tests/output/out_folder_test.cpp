@@ -1,17 +1,17 @@
 // The run folder's bookkeeping (output/out_folder, output/atomic_file, TimeseriesCsv): which
 // names are essaim's, what is moved aside, what an output may replace. The CLI's behaviour
 // around them is tested in tests/python/test_cli_outputs.py.
+#include "output/out_folder.h"
+
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 
-#include <gtest/gtest.h>
-
 #include "core/paths.h"
 #include "output/atomic_file.h"
-#include "output/out_folder.h"
 #include "output/summary.h"
 #include "support/scene.h"
 

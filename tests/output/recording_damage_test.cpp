@@ -46,8 +46,8 @@ std::string RecordedBytes(const TempDir& d) {
 size_t FirstObstacleOffset(const std::string& b) {
   size_t pos = 104;
   auto str = [&] { pos += 2 + (static_cast<uint8_t>(b[pos]) | static_cast<uint8_t>(b[pos + 1]) << 8); };
-  str();      // experiment
-  str();      // one robot id
+  str();  // experiment
+  str();  // one robot id
   return pos;
 }
 

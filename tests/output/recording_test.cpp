@@ -2,6 +2,8 @@
 // within the quantisation (1 mm, 2π/65536 rad, 1/255 of battery); every=N keeps ticks
 // 0, N, 2N… and the last; dead flags, battery, LED colour, movable obstacles, the scene and
 // the floor are stored; the file appears only when the recording is finished.
+#include "output/recording.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "core/paths.h"
 #include "core/strings.h"
-#include "output/recording.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -167,8 +168,10 @@ TEST(Recording, DeadFlagBatteryAndLedColour) {
     EXPECT_DOUBLE_EQ(rec.Robot(k, 0).battery, 1.0);
     EXPECT_NEAR(rec.Robot(k, 2).battery, killed ? 0.25 : 1.0, 0.5 / 255 + 1e-12);
     Color c = rec.Robot(k, 0).color;
-    if (rec.Tick(k) >= 4) EXPECT_TRUE(c == (Color{255, 0, 0, 255}));
-    else EXPECT_TRUE(c.IsBlack());
+    if (rec.Tick(k) >= 4)
+      EXPECT_TRUE(c == (Color{255, 0, 0, 255}));
+    else
+      EXPECT_TRUE(c.IsBlack());
     EXPECT_TRUE(rec.Robot(k, 1).color.IsBlack());
   }
 }
@@ -180,8 +183,10 @@ TEST(Recording, SceneMovableObstaclesAndFloor) {
   std::string arena =
       "<floor id=\"f\" source=\"loop_functions\" pixels_per_meter=\"100\"/>"
       "<box id=\"wall\" size=\"0.1,4,0.5\" movable=\"false\"><body position=\"3,0,0\" orientation=\"0,0,0\"/></box>"
-      "<cylinder id=\"post\" radius=\"0.2\" height=\"0.3\" movable=\"false\"><body position=\"-2,2,0\" orientation=\"0,0,0\"/></cylinder>"
-      "<box id=\"crate\" size=\"0.2,0.2,0.2\" movable=\"true\" mass=\"0.1\"><body position=\"0.4,0,0\" orientation=\"30,0,0\"/></box>" +
+      "<cylinder id=\"post\" radius=\"0.2\" height=\"0.3\" movable=\"false\"><body position=\"-2,2,0\" "
+      "orientation=\"0,0,0\"/></cylinder>"
+      "<box id=\"crate\" size=\"0.2,0.2,0.2\" movable=\"true\" mass=\"0.1\"><body position=\"0.4,0,0\" "
+      "orientation=\"30,0,0\"/></box>" +
       FootBot("pusher", 0, 0, 0, "p");
   Scene s = Load(d, Experiment(arena, kPlainController, 100, 1, "<loop_functions script=\"lf.lua\"/>\n"));
   ASSERT_TRUE(s.ok()) << s.error;

@@ -10,7 +10,8 @@ namespace {
 using namespace essaim::testing;
 
 std::string Drive(double l, double r) {
-  return "function init() robot.wheels.set_velocity(" + std::to_string(l) + ", " + std::to_string(r) + ") end\nfunction step() end\n";
+  return "function init() robot.wheels.set_velocity(" + std::to_string(l) + ", " + std::to_string(r) +
+         ") end\nfunction step() end\n";
 }
 
 class Physics : public ::testing::TestWithParam<int> {};  // sub-steps per tick
@@ -24,7 +25,8 @@ std::string WithIterations(std::string xml, int it) {
 TEST_P(Physics, StraightDriveCoversVT) {
   TempDir d;
   d.Write("go.lua", Drive(10, 10));  // 10 cm/s
-  Scene s = Load(d, WithIterations(Experiment(FootBot("fb0", -2, 0, 0, "c"), WheelsController("c", "go.lua")), GetParam()));
+  Scene s =
+      Load(d, WithIterations(Experiment(FootBot("fb0", -2, 0, 0, "c"), WheelsController("c", "go.lua")), GetParam()));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 100);  // 10 s
   Pose2 p = s.world->physics.RobotPose(0);
@@ -37,7 +39,8 @@ TEST_P(Physics, StraightDriveCoversVT) {
 TEST_P(Physics, SpinInPlaceTurnsAtDeltaVOverAxis) {
   TempDir d;
   d.Write("spin.lua", Drive(-5, 5));  // ω = 0.1 / 0.14 rad/s
-  Scene s = Load(d, WithIterations(Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "spin.lua")), GetParam()));
+  Scene s =
+      Load(d, WithIterations(Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "spin.lua")), GetParam()));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 100);
   Pose2 p = s.world->physics.RobotPose(0);
@@ -83,14 +86,16 @@ TEST(PhysicsContacts, PushingABrakedRobotIsLimitedByTheForceCaps) {
   d.Write("stay.lua", "function step() end");
   std::string ctrls = WheelsController("go", "go.lua") + WheelsController("stay", "stay.lua");
   auto run = [&](const std::string& brake_force) {
-    std::string braked = "<foot-bot id=\"b\"><body position=\"-0.3,0,0\"/><controller config=\"stay\"/>"
-                         "<dynamics2d><differential_steering max_force=\"" + brake_force + "\"/></dynamics2d></foot-bot>";
+    std::string braked =
+        "<foot-bot id=\"b\"><body position=\"-0.3,0,0\"/><controller config=\"stay\"/>"
+        "<dynamics2d><differential_steering max_force=\"" +
+        brake_force + "\"/></dynamics2d></foot-bot>";
     Scene s = Load(d, Experiment(FootBot("a", -0.5, 0, 0, "go") + braked, ctrls));
     EXPECT_TRUE(s.ok()) << s.error;
     RunTicks(*s.world, 50);  // 5 s: 1 m if nothing were in the way
     Pose2 a = s.world->physics.RobotPose(0), b = s.world->physics.RobotPose(1);
     EXPECT_GE(b.x - a.x, 2 * footbot::kRadius - 0.01);  // never through each other
-    return b.x + 0.3;  // how far the braked robot was pushed
+    return b.x + 0.3;                                   // how far the braked robot was pushed
   };
   // A brake four times stronger than the pusher's drive holds: it barely moves.
   EXPECT_LT(run("60"), 0.02);
@@ -105,7 +110,8 @@ TEST(PhysicsContacts, RobotPushesAMovableCylinder) {
   TempDir d;
   d.Write("go.lua", Drive(10, 10));
   std::string arena = FootBot("a", 0, 0, 0, "c") +
-                      "<cylinder id=\"cyl\" radius=\"0.1\" height=\"0.2\" movable=\"true\" mass=\"0.1\"><body position=\"0.3,0,0\"/></cylinder>";
+                      "<cylinder id=\"cyl\" radius=\"0.1\" height=\"0.2\" movable=\"true\" mass=\"0.1\"><body "
+                      "position=\"0.3,0,0\"/></cylinder>";
   Scene s = Load(d, Experiment(arena, WheelsController("c", "go.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 100);

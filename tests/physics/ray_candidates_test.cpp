@@ -42,7 +42,8 @@ std::string Crowd(int robots, uint64_t seed, double half = 2.5) {
                 -half, half, half);
   arena += buf;
   arena += "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/><entity quantity=\"" +
-           std::to_string(robots) + "\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot>"
+           std::to_string(robots) +
+           "\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot>"
            "</entity></distribute>";
   return arena;
 }
@@ -50,8 +51,9 @@ std::string Crowd(int robots, uint64_t seed, double half = 2.5) {
 TEST(RayCandidates, SameHitsAndDistancesAsTheTree) {
   TempDir d;
   // Robots wander and push movable boxes, so dynamic bodies' boxes are the swept kind.
-  d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
-                        "20 * robot.random.uniform()) end\n");
+  d.Write("wander.lua",
+          "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
+          "20 * robot.random.uniform()) end\n");
   int rays = 0, hits = 0;
   for (uint64_t seed : {1, 2, 3}) {
     Scene s = Load(d, Experiment(Crowd(60, seed), WheelsController("c", "wander.lua"), 40, static_cast<int>(seed)));
@@ -96,8 +98,9 @@ TEST(RayCandidates, SameHitsAndDistancesAsTheTree) {
 // Box2D's float fractions are least precise. Same hit or miss, same distance to the last bit.
 TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
   TempDir d;
-  d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
-                        "20 * robot.random.uniform()) end\n");
+  d.Write("wander.lua",
+          "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
+          "20 * robot.random.uniform()) end\n");
   Scene s = Load(d, Experiment(Crowd(300, 7, 2.2), WheelsController("c", "wander.lua"), 40, 7));
   ASSERT_TRUE(s.ok()) << s.error;
   World& w = *s.world;
@@ -168,8 +171,9 @@ TEST(RayCandidates, NearestFirstStopMatchesTheTreeInADenseCrowd) {
 // fraction of the disc's candidates.
 TEST(RayCandidates, WedgeKeepsEveryShapeItsRaysCanHit) {
   TempDir d;
-  d.Write("wander.lua", "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
-                        "20 * robot.random.uniform()) end\n");
+  d.Write("wander.lua",
+          "function step() robot.wheels.set_velocity(20 * robot.random.uniform(), "
+          "20 * robot.random.uniform()) end\n");
   Scene s = Load(d, Experiment(Crowd(300, 11, 2.2), WheelsController("c", "wander.lua"), 40, 11));
   ASSERT_TRUE(s.ok()) << s.error;
   World& w = *s.world;
@@ -260,7 +264,8 @@ TEST(RayCandidates, WedgeAlongLongAndRotatedWalls) {
   auto clear = [&](double x, double y) {
     for (const auto& b : walls) {
       const double a = DegToRad(b[2]), dx = x - b[0], dy = y - b[1];
-      const double lx = std::abs(dx * std::cos(a) + dy * std::sin(a)), ly = std::abs(-dx * std::sin(a) + dy * std::cos(a));
+      const double lx = std::abs(dx * std::cos(a) + dy * std::sin(a)),
+                   ly = std::abs(-dx * std::sin(a) + dy * std::cos(a));
       const double ex = std::max(lx - b[3], 0.0), ey = std::max(ly - b[4], 0.0);
       if (ex * ex + ey * ey < std::pow(footbot::kRadius + 0.001, 2)) return false;
     }
@@ -314,8 +319,8 @@ TEST(RayCandidates, WedgeAlongLongAndRotatedWalls) {
 TEST(RayCandidates, FollowTeleportsAndObstaclesAddedMovedOrRemoved) {
   TempDir d;
   d.Write("still.lua", "function step() end\n");
-  Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.5, 0, 0, "c"),
-                               WheelsController("c", "still.lua")));
+  Scene s = Load(
+      d, Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.5, 0, 0, "c"), WheelsController("c", "still.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   PhysicsWorld& ph = s.world->physics;
   const double z = footbot::kScannerElevation, r = footbot::kRadius;
@@ -351,8 +356,9 @@ TEST(RayCandidates, FollowTeleportsAndObstaclesAddedMovedOrRemoved) {
 TEST(RayCandidates, ExcludedRobotAndShapesBelowTheRayAreNotCandidates) {
   TempDir d;
   d.Write("still.lua", "function step() end\n");
-  const std::string arena = FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.3, 0, 0, "c") +
-                            "<box id=\"low\" size=\"0.1,0.1,0.03\" movable=\"false\"><body position=\"0,0.3,0\"/></box>";
+  const std::string arena =
+      FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 0.3, 0, 0, "c") +
+      "<box id=\"low\" size=\"0.1,0.1,0.03\" movable=\"false\"><body position=\"0,0.3,0\"/></box>";
   Scene s = Load(d, Experiment(arena, WheelsController("c", "still.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   RayCandidates c;

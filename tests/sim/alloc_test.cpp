@@ -102,7 +102,7 @@ TEST(Allocations, AStepMakesNoCppAllocationAfterWarmUp) {
     ASSERT_TRUE(s.ok()) << s.error << s.errors.Format();
     RunTicks(*s.world, 50);  // warm-up: contacts, Lua tables, buffers reach their size
     long before = g_news.load();
-    RunTicks(*s.world, 9);   // between two time-series rows (the series grows by design)
+    RunTicks(*s.world, 9);  // between two time-series rows (the series grows by design)
     EXPECT_EQ(g_news.load() - before, 0) << "threads=" << threads;
     EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
   }

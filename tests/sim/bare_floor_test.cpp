@@ -1,11 +1,13 @@
 // The bare-Lua floor (issue 12): a controller replayed in a BareController on the readings of
 // a real run must compute exactly what it computed in the run (same readings, same
 // robot.random stream), and MeasureBareFloor must time every robot-step.
+#include "sim/bare_floor.h"
+
 #include <gtest/gtest.h>
+
 #include <lua.hpp>
 
 #include "lua/robot/bare_controller.h"
-#include "sim/bare_floor.h"
 #include "support/scene.h"
 
 namespace essaim {
@@ -108,8 +110,10 @@ TEST(BareFloor, ActuatorsAreNoOpsInTheBareState) {
   std::string error;
   ASSERT_TRUE(b.Load(*s.model, s.model->robots[0], 0, 1, &error)) << error;
   lua_State* L = b.State();
-  ASSERT_EQ(luaL_dostring(L, "robot.wheels.set_velocity(1e300, 'not even a number'); "
-                             "return robot.wheels.set_velocity == robot.range_and_bearing.set_data"), LUA_OK);
+  ASSERT_EQ(luaL_dostring(L,
+                          "robot.wheels.set_velocity(1e300, 'not even a number'); "
+                          "return robot.wheels.set_velocity == robot.range_and_bearing.set_data"),
+            LUA_OK);
   EXPECT_TRUE(lua_toboolean(L, -1));  // one shared no-op, whatever the arguments
   ASSERT_EQ(luaL_dostring(L, "return type(robot.random.uniform())"), LUA_OK);
   EXPECT_STREQ(lua_tostring(L, -1), "number");  // robot.random kept

@@ -23,10 +23,12 @@ std::string Swarm(int seed) {
       "<box id=\"w2\" size=\"0.1,4,0.5\" movable=\"false\"><body position=\"-2,0,0\"/></box>"
       "<box id=\"w3\" size=\"4,0.1,0.5\" movable=\"false\"><body position=\"0,2,0\"/></box>"
       "<box id=\"w4\" size=\"4,0.1,0.5\" movable=\"false\"><body position=\"0,-2,0\"/></box>"
-      "<cylinder id=\"m\" radius=\"0.1\" height=\"0.2\" movable=\"true\" mass=\"0.5\"><body position=\"0.5,0.5,0\"/></cylinder>"
+      "<cylinder id=\"m\" radius=\"0.1\" height=\"0.2\" movable=\"true\" mass=\"0.5\"><body "
+      "position=\"0.5,0.5,0\"/></cylinder>"
       "<distribute><position method=\"uniform\" min=\"-1.8,-1.8,0\" max=\"1.8,1.8,0\"/>"
       "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/>"
-      "<entity quantity=\"30\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+      "<entity quantity=\"30\" max_trials=\"100\"><foot-bot id=\"fb\"><controller "
+      "config=\"c\"/></foot-bot></entity></distribute>";
   return Experiment(arena, WheelsController("c", "wander.lua"), 200, seed);
 }
 

@@ -22,7 +22,9 @@ std::string Crowd(int robots) {
   const std::string arena =
       "<distribute><position method=\"uniform\" min=\"-4.8,-4.8,0\" max=\"4.8,4.8,0\"/>"
       "<orientation method=\"uniform\" min=\"0,0,0\" max=\"360,0,0\"/>"
-      "<entity quantity=\"" + std::to_string(robots) + "\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
+      "<entity quantity=\"" +
+      std::to_string(robots) +
+      "\" max_trials=\"100\"><foot-bot id=\"fb\"><controller config=\"c\"/></foot-bot></entity></distribute>";
   const std::string controller =
       "<lua_controller id=\"c\"><actuators><differential_steering implementation=\"default\" "
       "bias_stddev=\"0.01\" factor_stddev=\"0.2\"/></actuators>"

@@ -38,8 +38,10 @@ TEST(ThreadPool, EveryItemOnceAtAnyThreadCountAndSize) {
         Visits v(n);
         auto f = [&](int b, int e) { v.Range(b, e); };
         for (int rep = 0; rep < 3; ++rep) {  // the pool is reused loop after loop
-          if (balanced) pool.ParallelForBalanced(n, f);
-          else pool.ParallelFor(n, f);
+          if (balanced)
+            pool.ParallelForBalanced(n, f);
+          else
+            pool.ParallelFor(n, f);
         }
         for (int i = 0; i < n; ++i) ASSERT_EQ(v.count[i], 3) << "threads " << threads << " n " << n << " item " << i;
         if (!balanced && n > 0) EXPECT_LE(v.ranges, 3 * threads);  // one contiguous chunk per thread
@@ -59,8 +61,10 @@ TEST(ThreadPool, StaticAndBalancedLoopsInterleaveManyTimes) {
     };
     for (int rep = 0; rep < 2000; ++rep) {
       const int n = (rep * 37) % 300;
-      if (rep % 3 == 0) pool.ParallelFor(n, f);
-      else pool.ParallelForBalanced(n, f);
+      if (rep % 3 == 0)
+        pool.ParallelFor(n, f);
+      else
+        pool.ParallelForBalanced(n, f);
       if (n > 0) ++expected;  // item 0 is in every non-empty loop
     }
     int total = 0;

@@ -2,6 +2,8 @@
 // query, each once where asked, whatever the items' sizes and places (checked against
 // brute force on random scenes); the bucket sort is stable; segment entries into circles
 // and boxes match hand-computed values.
+#include "spatial/uniform_grid.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +14,6 @@
 #include "core/rng.h"
 #include "spatial/bucket_sort.h"
 #include "spatial/segment.h"
-#include "spatial/uniform_grid.h"
 
 namespace essaim {
 namespace {
@@ -32,8 +33,9 @@ void FileCircles(const std::vector<Circle>& circles, UniformGrid* grid) {
   }
   const int n = static_cast<int>(circles.size());
   grid->CoverSpan(lo, hi, 0.5, std::max(4096.0, 4.0 * n));
-  grid->FileBoxes(n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
-                  [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
+  grid->FileBoxes(
+      n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
+      [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
 }
 
 // Reported circles (index -> times) for the disc (x, y, radius).
@@ -137,8 +139,8 @@ TEST(UniformGrid, PointsInABoxMatchBruteForceInAscendingOrderPerCell) {
     for (size_t i = 0; i < points.size(); ++i) {
       const Vec2 d = (points[i] - c).cwiseAbs();
       if (d.x() <= h && d.y() <= h)
-        ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), static_cast<int>(i))) << "point " << i
-                                                                                            << " missed";
+        ASSERT_TRUE(std::binary_search(sorted.begin(), sorted.end(), static_cast<int>(i)))
+            << "point " << i << " missed";
     }
     const bool any = grid.AnyInBox(c.x() - h, c.y() - h, c.x() + h, c.y() + h, [](int) { return true; });
     EXPECT_EQ(any, !seen.empty());
@@ -155,8 +157,9 @@ TEST(BucketSort, IsStableAndReportsEachBucketsRange) {
   const std::vector<int> key = {3, 0, 2, 3, 0, 1, 3, 2, 0, 0};
   std::vector<int> start(5);
   std::vector<int> out(key.size(), -1);
-  const int total = BucketSort(static_cast<int>(key.size()), &start, [&](int i, auto&& file) { file(key[i]); },
-                               [&](int slot, int i) { out[slot] = i; });
+  const int total = BucketSort(
+      static_cast<int>(key.size()), &start, [&](int i, auto&& file) { file(key[i]); },
+      [&](int slot, int i) { out[slot] = i; });
   EXPECT_EQ(total, 10);
   EXPECT_EQ(out, (std::vector<int>{1, 4, 8, 9, 5, 2, 7, 0, 3, 6}));  // by key, then by index
   EXPECT_EQ(start, (std::vector<int>{0, 4, 5, 7, 10}));
@@ -166,8 +169,8 @@ TEST(BucketSort, FilesAnItemInSeveralBucketsInOrder) {
   // Item i in buckets i and i + 1 (a box over two cells).
   std::vector<int> start(5);
   std::vector<int> out(6, -1);
-  const int total = BucketSort(3, &start, [&](int i, auto&& file) { file(i), file(i + 1); },
-                               [&](int slot, int i) { out[slot] = i; });
+  const int total = BucketSort(
+      3, &start, [&](int i, auto&& file) { file(i), file(i + 1); }, [&](int slot, int i) { out[slot] = i; });
   EXPECT_EQ(total, 6);
   EXPECT_EQ(out, (std::vector<int>{0, 0, 1, 1, 2, 2}));
   EXPECT_EQ(start, (std::vector<int>{0, 1, 3, 5, 6}));
@@ -178,10 +181,10 @@ TEST(SegmentEntry, CircleHitsMissesAndStartsInside) {
   EXPECT_DOUBLE_EQ(CircleEntry(Vec2(0, 0), Vec2(10, 0), Vec2(5, 0), 1), 0.4);
   // Grazing 0.6 off the axis: enters where x = 5 - 0.8, fraction 0.42.
   EXPECT_NEAR(CircleEntry(Vec2(0, 0.6), Vec2(10, 0.6), Vec2(5, 0), 1), 0.42, 1e-12);
-  EXPECT_EQ(CircleEntry(Vec2(0, 2), Vec2(10, 2), Vec2(5, 0), 1), 2);   // passes by
-  EXPECT_EQ(CircleEntry(Vec2(0, 0), Vec2(3, 0), Vec2(5, 0), 1), 2);    // stops short
-  EXPECT_EQ(CircleEntry(Vec2(5, 0), Vec2(10, 0), Vec2(5, 0), 1), 2);   // starts inside
-  EXPECT_EQ(CircleEntry(Vec2(1, 1), Vec2(1, 1), Vec2(5, 0), 1), 2);    // no length
+  EXPECT_EQ(CircleEntry(Vec2(0, 2), Vec2(10, 2), Vec2(5, 0), 1), 2);  // passes by
+  EXPECT_EQ(CircleEntry(Vec2(0, 0), Vec2(3, 0), Vec2(5, 0), 1), 2);   // stops short
+  EXPECT_EQ(CircleEntry(Vec2(5, 0), Vec2(10, 0), Vec2(5, 0), 1), 2);  // starts inside
+  EXPECT_EQ(CircleEntry(Vec2(1, 1), Vec2(1, 1), Vec2(5, 0), 1), 2);   // no length
 }
 
 TEST(SegmentEntry, BoxHitsMissesAndTurns) {

@@ -38,32 +38,39 @@ class TempDir {
 };
 
 /// The usual .argos skeleton around an arena body and a controller.
-inline std::string Experiment(const std::string& arena, const std::string& controllers, int ticks = 10,
-                              int seed = 1, const std::string& extra = "", int tps = 10) {
+inline std::string Experiment(const std::string& arena, const std::string& controllers, int ticks = 10, int seed = 1,
+                              const std::string& extra = "", int tps = 10) {
   return "<argos-configuration>\n"
-         "  <framework><experiment length=\"" + std::to_string(ticks / static_cast<double>(tps)) +
-         "\" ticks_per_second=\"" + std::to_string(tps) + "\" random_seed=\"" + std::to_string(seed) +
+         "  <framework><experiment length=\"" +
+         std::to_string(ticks / static_cast<double>(tps)) + "\" ticks_per_second=\"" + std::to_string(tps) +
+         "\" random_seed=\"" + std::to_string(seed) +
          "\"/></framework>\n"
-         "  <controllers>" + controllers + "</controllers>\n"
-         "  <arena size=\"10,10,1\" center=\"0,0,0.5\">" + arena + "</arena>\n"
+         "  <controllers>" +
+         controllers +
+         "</controllers>\n"
+         "  <arena size=\"10,10,1\" center=\"0,0,0.5\">" +
+         arena +
+         "</arena>\n"
          "  <physics_engines><dynamics2d id=\"dyn2d\" iterations=\"10\"/></physics_engines>\n"
-         "  <media/>\n" + extra +
-         "</argos-configuration>\n";
+         "  <media/>\n" +
+         extra + "</argos-configuration>\n";
 }
 
 /// A lua_controller with wheels and positioning.
-inline std::string WheelsController(const std::string& id, const std::string& script, const std::string& more_sensors = "",
-                                    const std::string& params = "") {
-  return "<lua_controller id=\"" + id + "\"><actuators><differential_steering implementation=\"default\"/></actuators>"
+inline std::string WheelsController(const std::string& id, const std::string& script,
+                                    const std::string& more_sensors = "", const std::string& params = "") {
+  return "<lua_controller id=\"" + id +
+         "\"><actuators><differential_steering implementation=\"default\"/></actuators>"
          "<sensors><differential_steering implementation=\"default\"/><positioning implementation=\"default\"/>" +
          more_sensors + "</sensors><params script=\"" + script + "\" " + params + "/></lua_controller>";
 }
 
 inline std::string FootBot(const std::string& id, double x, double y, double yaw_deg, const std::string& ctrl) {
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "<foot-bot id=\"%s\"><body position=\"%g,%g,0\" orientation=\"%g,0,0\"/><controller config=\"%s\"/></foot-bot>",
-                id.c_str(), x, y, yaw_deg, ctrl.c_str());
+  std::snprintf(
+      buf, sizeof buf,
+      "<foot-bot id=\"%s\"><body position=\"%g,%g,0\" orientation=\"%g,0,0\"/><controller config=\"%s\"/></foot-bot>",
+      id.c_str(), x, y, yaw_deg, ctrl.c_str());
   return buf;
 }
 

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-
 #include <lua.hpp>
 
 #include "lua/host/guard_hook.h"
@@ -40,8 +39,10 @@ void RecordMemoryWhere(LuaGuard* g) {
     p = SmallBlockPool::IsSmall(nsize) ? g->pool.Allocate(nsize) : std::malloc(nsize);
     if (p && ptr) {
       std::memcpy(p, ptr, std::min(old, nsize));
-      if (SmallBlockPool::IsSmall(old)) g->pool.Free(ptr, old);
-      else std::free(ptr);
+      if (SmallBlockPool::IsSmall(old))
+        g->pool.Free(ptr, old);
+      else
+        std::free(ptr);
     }
   }
   if (p) {

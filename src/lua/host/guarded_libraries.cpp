@@ -3,11 +3,10 @@
 // or bytecode.
 #include <algorithm>
 #include <cstdio>
+#include <lua.hpp>
 #include <mutex>
 #include <string>
 #include <vector>
-
-#include <lua.hpp>
 
 #include "core/paths.h"
 #include "lua/host/guard_hook.h"
@@ -95,10 +94,14 @@ std::string FindAllowedModule(lua_State* L, LuaGuard* g, const std::string& name
     for (size_t q = candidate.find('?'); q != std::string::npos; q = candidate.find('?', q + file_name.size()))
       candidate.replace(q, 1, file_name);
     const std::string real = CanonicalPath(candidate);
-    const bool allowed = !real.empty() && std::any_of(g->require_roots.begin(), g->require_roots.end(),
-                                                      [&](const std::string& root) { return IsInsideFolder(real, root); });
+    const bool allowed =
+        !real.empty() && std::any_of(g->require_roots.begin(), g->require_roots.end(),
+                                     [&](const std::string& root) { return IsInsideFolder(real, root); });
     if (allowed && FileExists(real)) return candidate;
-    *tried += std::string(tried->empty() ? "" : "\n\t") + "no file '" + candidate + "'" + (real.empty() ? "" : allowed ? "" : " (outside the arena's folder)");
+    *tried += std::string(tried->empty() ? "" : "\n\t") + "no file '" + candidate + "'" +
+              (real.empty() ? ""
+               : allowed    ? ""
+                            : " (outside the arena's folder)");
   }
   return "";
 }
@@ -116,7 +119,8 @@ int TextOnlyLuaSearcher(lua_State* L) {
     failed = luaL_loadfilex(L, filename.c_str(), "t") != LUA_OK;
     if (failed) {
       luaL_where(L, 1);
-      lua_pushfstring(L, "error loading module '%s' from file '%s':\n\t%s", name, filename.c_str(), lua_tostring(L, -2));
+      lua_pushfstring(L, "error loading module '%s' from file '%s':\n\t%s", name, filename.c_str(),
+                      lua_tostring(L, -2));
       lua_concat(L, 2);
     } else {
       lua_pushstring(L, filename.c_str());

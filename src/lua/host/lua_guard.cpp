@@ -4,9 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <mutex>
-
 #include <lua.hpp>
+#include <mutex>
 
 #include "lua/host/guard_hook.h"
 
@@ -71,8 +70,9 @@ std::string StuckMessage(LuaGuard* g, double seconds) {
     if (g->where[0]) std::snprintf(where, sizeof where, " (last at %s)", g->where);
   }
   char message[320];
-  std::snprintf(message, sizeof message, "%s: stuck for %.0f s inside a C function called from Lua%s; stopping (exit 1)",
-                g->name.c_str(), seconds, where);
+  std::snprintf(message, sizeof message,
+                "%s: stuck for %.0f s inside a C function called from Lua%s; stopping (exit 1)", g->name.c_str(),
+                seconds, where);
   return message;
 }
 }  // namespace
@@ -84,7 +84,8 @@ void GuardHook(lua_State* L, lua_Debug*) {
   if (g->budget > 0 && (g->budget_exceeded || (g->used += lua_gethookcount(L)) > g->budget)) {
     g->budget_exceeded = true;
     char what[96];
-    std::snprintf(what, sizeof what, "instruction budget exceeded (%lld instructions per call, --lua-budget)", g->budget);
+    std::snprintf(what, sizeof what, "instruction budget exceeded (%lld instructions per call, --lua-budget)",
+                  g->budget);
     Stop(L, what);
   }
   if (g->interrupted.load(std::memory_order_relaxed)) Stop(L, "interrupted by a signal");

@@ -30,11 +30,11 @@ class Watchdog;
 constexpr double kArmAfterSeconds = 0.1;
 
 struct LuaOptions {
-  bool sandbox = false;                       // no io, os, debug, loadlib, C modules, bytecode
-  size_t memory_limit = size_t{256} << 20;    // bytes per state; 0 = unlimited
-  long long instruction_limit = 1000000000;   // per call into Lua; 0 = unlimited
-  double wall_seconds = 60;                   // per call, backstop for time in C functions; 0 = off
-  InputFiles* inputs = nullptr;               // where `require` lists the files it loads; null: nowhere
+  bool sandbox = false;                      // no io, os, debug, loadlib, C modules, bytecode
+  size_t memory_limit = size_t{256} << 20;   // bytes per state; 0 = unlimited
+  long long instruction_limit = 1000000000;  // per call into Lua; 0 = unlimited
+  double wall_seconds = 60;                  // per call, backstop for time in C functions; 0 = off
+  InputFiles* inputs = nullptr;              // where `require` lists the files it loads; null: nowhere
   /// The run's monitor thread (arms long calls, wall clock, interrupts, stuck calls). Null:
   /// the World makes its own; a state made with none is never watched.
   Watchdog* watchdog = nullptr;
@@ -54,11 +54,11 @@ struct LuaGuard {
   long long budget = 0;
   long long used = 0;
   bool budget_exceeded = false;
-  bool stopped = false;      // the guard raised a stop in this call: message handlers are skipped
-  std::string exit_called;   // "os.exit called at foo.lua:12": the run must end
-  bool always_armed = false;              // --sandbox: hooked from the first instruction
-  std::atomic<bool> armed{false};         // the count hook is installed
-  std::string name;  // "robot fb3" or "loop functions", for the stuck-in-C message
+  bool stopped = false;            // the guard raised a stop in this call: message handlers are skipped
+  std::string exit_called;         // "os.exit called at foo.lua:12": the run must end
+  bool always_armed = false;       // --sandbox: hooked from the first instruction
+  std::atomic<bool> armed{false};  // the count hook is installed
+  std::string name;                // "robot fb3" or "loop functions", for the stuck-in-C message
   // --sandbox: the folders (canonical) `require` may load from, whatever package.path says.
   std::vector<std::string> require_roots;
   // The library functions the guarded ones wrap, called directly: kept out of the Lua
@@ -70,12 +70,12 @@ struct LuaGuard {
   double wall_seconds = 0;
   std::atomic<long long> call_started_ns{0};  // 0: not inside a call
   std::atomic<bool> wall_exceeded{false};
-  std::atomic<bool> interrupted{false};   // a signal arrived while this call was stuck
+  std::atomic<bool> interrupted{false};     // a signal arrived while this call was stuck
   std::atomic<bool> stuck_reported{false};  // the watchdog reported this call stuck in C
   // Where a long call was last seen ("foo.lua:12"), for the stuck-in-C message: the hook
   // records it once the watchdog asks (calls over a second), so normal calls pay nothing.
   std::atomic<bool> track_where{false};
-  char where[128] = "";                    // under thread_mutex
+  char where[128] = "";  // under thread_mutex
   // The coroutine being resumed (null: the main thread), so that the watchdog arms the
   // thread that actually runs: hooks are per coroutine.
   std::mutex thread_mutex;

@@ -3,7 +3,6 @@
 #include <lua.hpp>
 
 #include "core/paths.h"
-
 #include "lua/host/guard_hook.h"
 #include "lua/host/watchdog.h"
 

@@ -1,7 +1,6 @@
 #include "lua/host/lua_require.h"
 
 #include <exception>
-
 #include <lua.hpp>
 
 #include "core/input_files.h"

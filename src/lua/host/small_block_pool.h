@@ -11,8 +11,8 @@ namespace essaim {
 
 class SmallBlockPool {
  public:
-  static constexpr size_t kGranule = 16;     // bytes: every class is a multiple (malloc's alignment)
-  static constexpr size_t kMaxSmall = 256;   // larger blocks go to malloc
+  static constexpr size_t kGranule = 16;    // bytes: every class is a multiple (malloc's alignment)
+  static constexpr size_t kMaxSmall = 256;  // larger blocks go to malloc
   static bool IsSmall(size_t size) { return size > 0 && size <= kMaxSmall; }
 
   SmallBlockPool() = default;

@@ -73,7 +73,8 @@ Color ColorField(lua_State* L, int idx, const char* name) {
 void CheckMedium(lua_State* L, const Model& model, const std::string& medium) {
   for (const LedMediumDef& m : model.led_media)
     if (m.id == medium) return;
-  luaL_error(L, "add_entity: medium '%s' is not declared in <media> (<led id=\"%s\"/>)", medium.c_str(), medium.c_str());
+  luaL_error(L, "add_entity: medium '%s' is not declared in <media> (<led id=\"%s\"/>)", medium.c_str(),
+             medium.c_str());
 }
 
 void SetString(lua_State* L, const char* name, std::string* out, bool required) {
@@ -88,8 +89,10 @@ void SetString(lua_State* L, const char* name, std::string* out, bool required) 
 LedDef ParseLed(lua_State* L, lua_Integer k) {
   LedDef led;
   lua_pushliteral(L, "offset");
-  if (lua_rawget(L, -2) == LUA_TNIL) lua_pop(L, 1);
-  else led.offset = Triple(L, "offset", 3);
+  if (lua_rawget(L, -2) == LUA_TNIL)
+    lua_pop(L, 1);
+  else
+    led.offset = Triple(L, "offset", 3);
   lua_pushliteral(L, "anchor");
   if (lua_rawget(L, -2) != LUA_TNIL && (!lua_isstring(L, -1) || std::strcmp(lua_tostring(L, -1), "origin")))
     luaL_error(L, "add_entity: leds[%d].anchor: boxes and cylinders have one anchor, \"origin\"", static_cast<int>(k));
@@ -205,8 +208,10 @@ int AddEntity(lua_State* L) {
   lua_Debug ar;
   const int line = lua_getstack(L, 1, &ar) && lua_getinfo(L, "l", &ar) ? ar.currentline : 0;
   const bool light = kind == EntityKind::Light;
-  if (light) ParseLight(L, ctx, line);
-  else ParseObstacle(L, ctx, kind, line);
+  if (light)
+    ParseLight(L, ctx, line);
+  else
+    ParseObstacle(L, ctx, kind, line);
   RaiseIf(L, ctx->entities->RoomProblem());
   AssignId(L, *ctx->entities, kind_name, light ? &ctx->light_spec.id : &ctx->obstacle_spec.id);
   const EntityRef e = light ? ctx->entities->AddLight(ctx->light_spec) : ctx->entities->AddObstacle(ctx->obstacle_spec);

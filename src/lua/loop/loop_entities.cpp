@@ -157,13 +157,15 @@ int LedColor(lua_State* L) {
 Color CheckColor(lua_State* L, int first, const char* what) {
   if (lua_type(L, first) == LUA_TSTRING) {
     auto c = ParseColor(lua_tostring(L, first));
-    if (!c) luaL_error(L, "%s: bad colour '%s' (a name such as \"red\", or r, g, b in 0-255)", what, lua_tostring(L, first));
+    if (!c)
+      luaL_error(L, "%s: bad colour '%s' (a name such as \"red\", or r, g, b in 0-255)", what, lua_tostring(L, first));
     return c ? *c : Color();
   }
   Color c{0, 0, 0, 255};
   unsigned char* parts[] = {&c.r, &c.g, &c.b};
   for (int k = 0; k < 3; ++k) {
-    if (!lua_isnumber(L, first + k)) luaL_error(L, "%s: bad colour (a name such as \"red\", or r, g, b in 0-255)", what);
+    if (!lua_isnumber(L, first + k))
+      luaL_error(L, "%s: bad colour (a name such as \"red\", or r, g, b in 0-255)", what);
     const double v = lua_tonumber(L, first + k);
     if (!(v >= 0 && v <= 255)) luaL_error(L, "%s: colour component %f is not in 0-255", what, v);
     *parts[k] = static_cast<unsigned char>(std::lround(v));
@@ -205,7 +207,8 @@ int SetIntensity(lua_State* L) {
   EntityStore* store = nullptr;
   const int i = CheckLight(L, "set_intensity", &store);
   const double v = luaL_checknumber(L, 2);
-  if (!std::isfinite(v) || v < 0) return luaL_error(L, "set_intensity: intensity must be a finite number >= 0, got %f", v);
+  if (!std::isfinite(v) || v < 0)
+    return luaL_error(L, "set_intensity: intensity must be a finite number >= 0, got %f", v);
   store->SetLightIntensity(i, v);
   return 0;
 }
@@ -261,12 +264,10 @@ int RemoveEntity(lua_State* L) {
 void OpenEntityApi(lua_State* L, int experiment) {
   experiment = lua_absindex(L, experiment);
   static const luaL_Reg methods[] = {
-      {"position", Position},           {"heading", Heading},
-      {"set_pose", SetPose},            {"movable", Movable},
-      {"led_count", LedCountFn},        {"led_color", LedColor},
-      {"set_led_color", SetLedColor},   {"intensity", Intensity},
-      {"set_intensity", SetIntensity},  {"color", LightColor},
-      {"set_color", SetLightColor},     {nullptr, nullptr}};
+      {"position", Position},         {"heading", Heading},         {"set_pose", SetPose},
+      {"movable", Movable},           {"led_count", LedCountFn},    {"led_color", LedColor},
+      {"set_led_color", SetLedColor}, {"intensity", Intensity},     {"set_intensity", SetIntensity},
+      {"color", LightColor},          {"set_color", SetLightColor}, {nullptr, nullptr}};
   lua_rawgetp(L, LUA_REGISTRYINDEX, &kHandleMetaKey);
   luaL_setfuncs(L, methods, 0);
   lua_pop(L, 1);

@@ -6,12 +6,12 @@
 
 #include "core/color.h"
 #include "core/paths.h"
-#include "lua/robot/lua_math_types.h"
-#include "lua/robot/lua_params.h"
-#include "lua/robot/lua_random.h"
 #include "lua/host/lua_require.h"
 #include "lua/loop/loop_handles.h"
 #include "lua/loop/lua_to_value.h"
+#include "lua/robot/lua_math_types.h"
+#include "lua/robot/lua_params.h"
+#include "lua/robot/lua_random.h"
 
 namespace essaim {
 
@@ -57,9 +57,7 @@ int LoopLog(lua_State* L) {
 
 }  // namespace
 
-LoopFunctions::~LoopFunctions() {
-  CloseGuardedState(&guard_);
-}
+LoopFunctions::~LoopFunctions() { CloseGuardedState(&guard_); }
 
 void LoopFunctions::OpenLogs() {
   const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}, {"print", 'P'}};
@@ -103,8 +101,10 @@ void PushParamsTable(lua_State* L, const LoopFunctionsDef& def, TrackedParams* t
 
 void PushArenaTable(lua_State* L, const ArenaDef& arena) {
   lua_newtable(L);
-  const std::pair<const char*, double> fields[] = {{"size_x", arena.size.x()}, {"size_y", arena.size.y()},
-                                                   {"center_x", arena.center.x()}, {"center_y", arena.center.y()}};
+  const std::pair<const char*, double> fields[] = {{"size_x", arena.size.x()},
+                                                   {"size_y", arena.size.y()},
+                                                   {"center_x", arena.center.x()},
+                                                   {"center_y", arena.center.y()}};
   for (auto [k, v] : fields) {
     lua_pushnumber(L, v);
     lua_setfield(L, -2, k);
@@ -222,7 +222,10 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
-    *error = "loop functions (" + std::string(what) + "): " + (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : context_.script + ": ") + stopped : msg ? msg : "error");
+    *error = "loop functions (" + std::string(what) + "): " +
+             (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : context_.script + ": ") + stopped
+              : msg            ? msg
+                               : "error");
     lua_settop(L, 0);
     return false;
   }
@@ -257,8 +260,10 @@ bool LoopFunctions::FloorColor(double x, double y, Color* out, std::string* erro
   bool ok = true;
   if (lua_type(L, -3) == LUA_TSTRING) {
     auto c = ParseColor(lua_tostring(L, -3));
-    if (c) *out = *c;
-    else ok = false;
+    if (c)
+      *out = *c;
+    else
+      ok = false;
   } else if (lua_isnumber(L, -3) && lua_isnumber(L, -2) && lua_isnumber(L, -1)) {
     auto byte = [&](int i) { return static_cast<unsigned char>(std::clamp(lua_tonumber(L, i), 0.0, 255.0)); };
     *out = Color{byte(-3), byte(-2), byte(-1), 255};

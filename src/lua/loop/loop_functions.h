@@ -7,10 +7,10 @@
 
 #include "core/value.h"
 #include "devices/entity_store.h"
-#include "lua/loop/loop_context.h"
 #include "lua/host/lua_guard.h"
-#include "lua/robot/lua_params.h"
+#include "lua/loop/loop_context.h"
 #include "lua/robot/lua_controller.h"
+#include "lua/robot/lua_params.h"
 #include "model/model.h"
 
 struct lua_State;
@@ -63,7 +63,7 @@ class LoopFunctions {
   TrackedParams params_;     // experiment.params
   int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
   Rng rng_;
-  LoopContext context_;      // what the bindings reach (LoopContextOf)
+  LoopContext context_;  // what the bindings reach (LoopContextOf)
 };
 
 }  // namespace essaim

@@ -129,10 +129,12 @@ int SetLuaGlobal(lua_State* L) {
     return luaL_error(L, "set_lua_global: '%s' must be plain data (numbers, strings, booleans, tables): %s", name,
                       bad ? bad : "?");
   lua_State* C = ControllerState(ctx, i);
-  if (!C) return luaL_error(L, "set_lua_global: robot '%s' has no running controller", ctx->model->robots[i].id.c_str());
+  if (!C)
+    return luaL_error(L, "set_lua_global: robot '%s' has no running controller", ctx->model->robots[i].id.c_str());
   CopyJob job{&ctx->tape, name, nullptr, false};
   if (!RunInController(C, StoreGlobal, &job))
-    return luaL_error(L, "set_lua_global: robot '%s': its Lua state is out of memory", ctx->model->robots[i].id.c_str());
+    return luaL_error(L, "set_lua_global: robot '%s': its Lua state is out of memory",
+                      ctx->model->robots[i].id.c_str());
   return 0;
 }
 
@@ -143,8 +145,10 @@ int HandleIndex(lua_State* L) {
   if (!std::strcmp(k, "id")) return lua_getiuservalue(L, 1, 1), 1;  // kept after removal, for messages
   if (!std::strcmp(k, "kind")) return lua_pushstring(L, EntityKindName(h->ref.kind)), 1;
   if (!std::strcmp(k, "index")) {
-    if (h->ref.kind == EntityKind::FootBot) lua_pushinteger(L, static_cast<lua_Integer>(h->ref.serial) + 1);
-    else lua_pushnil(L);
+    if (h->ref.kind == EntityKind::FootBot)
+      lua_pushinteger(L, static_cast<lua_Integer>(h->ref.serial) + 1);
+    else
+      lua_pushnil(L);
     return 1;
   }
   lua_getmetatable(L, 1);
@@ -156,10 +160,15 @@ int HandleIndex(lua_State* L) {
 }  // namespace
 
 void OpenRobotApi(lua_State* L) {
-  static const luaL_Reg handle_methods[] = {
-      {"battery", Battery},         {"lua_global", LuaGlobal}, {"set_lua_global", SetLuaGlobal},
-      {"set_battery", SetBattery},  {"alive", Alive},          {"kill", Kill},
-      {"led", Led},                 {"controller_ok", ControllerOk}, {nullptr, nullptr}};
+  static const luaL_Reg handle_methods[] = {{"battery", Battery},
+                                            {"lua_global", LuaGlobal},
+                                            {"set_lua_global", SetLuaGlobal},
+                                            {"set_battery", SetBattery},
+                                            {"alive", Alive},
+                                            {"kill", Kill},
+                                            {"led", Led},
+                                            {"controller_ok", ControllerOk},
+                                            {nullptr, nullptr}};
   lua_newtable(L);  // the handle metatable
   luaL_setfuncs(L, handle_methods, 0);
   lua_pushcfunction(L, HandleIndex);

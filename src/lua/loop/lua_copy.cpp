@@ -1,7 +1,6 @@
 #include "lua/loop/lua_copy.h"
 
 #include <algorithm>
-
 #include <lua.hpp>
 
 #include "core/strings.h"
@@ -27,11 +26,16 @@ bool LuaTape::Record(lua_State* L, int idx, bool plain_only, const char** bad_ty
 bool LuaTape::RecordAt(lua_State* L, int idx, int depth) {
   Item item;
   switch (lua_type(L, idx)) {
-    case LUA_TNIL: break;
-    case LUA_TBOOLEAN: item.type = lua_toboolean(L, idx) ? Type::True : Type::False; break;
+    case LUA_TNIL:
+      break;
+    case LUA_TBOOLEAN:
+      item.type = lua_toboolean(L, idx) ? Type::True : Type::False;
+      break;
     case LUA_TNUMBER:
-      if (lua_isinteger(L, idx)) item.type = Type::Integer, item.integer = lua_tointeger(L, idx);
-      else item.type = Type::Number, item.number = lua_tonumber(L, idx);
+      if (lua_isinteger(L, idx))
+        item.type = Type::Integer, item.integer = lua_tointeger(L, idx);
+      else
+        item.type = Type::Number, item.number = lua_tonumber(L, idx);
       break;
     case LUA_TSTRING: {
       size_t len = 0;
@@ -74,8 +78,8 @@ bool LuaTape::RecordTable(lua_State* L, int idx, int depth, Item* item) {
   while (lua_next(L, idx)) {
     const int key = lua_type(L, -2), value = lua_type(L, -1);
     const bool plain_key = key == LUA_TNUMBER || key == LUA_TSTRING || key == LUA_TBOOLEAN || key == LUA_TTABLE;
-    const bool plain_value = value != LUA_TFUNCTION && value != LUA_TUSERDATA && value != LUA_TLIGHTUSERDATA &&
-                             value != LUA_TTHREAD;
+    const bool plain_value =
+        value != LUA_TFUNCTION && value != LUA_TUSERDATA && value != LUA_TLIGHTUSERDATA && value != LUA_TTHREAD;
     if (!plain_key || !plain_value) {
       if (plain_only_) {
         bad_type_ = lua_typename(L, plain_key ? value : key);
@@ -100,25 +104,39 @@ void LuaTape::Replay(lua_State* L) const {
   lua_createtable(L, 0, 0);  // table id → table, for shared and cyclic ones
   const int refs = lua_gettop(L);
   size_t pos = 0;
-  if (items_.empty()) lua_pushnil(L);
-  else ReplayAt(L, &pos, refs);
+  if (items_.empty())
+    lua_pushnil(L);
+  else
+    ReplayAt(L, &pos, refs);
   lua_remove(L, refs);
 }
 
 void LuaTape::ReplayAt(lua_State* L, size_t* pos, int refs) const {
   const Item& item = items_[(*pos)++];
   switch (item.type) {
-    case Type::Nil: lua_pushnil(L); break;
-    case Type::False: lua_pushboolean(L, 0); break;
-    case Type::True: lua_pushboolean(L, 1); break;
-    case Type::Integer: lua_pushinteger(L, static_cast<lua_Integer>(item.integer)); break;
-    case Type::Number: lua_pushnumber(L, item.number); break;
+    case Type::Nil:
+      lua_pushnil(L);
+      break;
+    case Type::False:
+      lua_pushboolean(L, 0);
+      break;
+    case Type::True:
+      lua_pushboolean(L, 1);
+      break;
+    case Type::Integer:
+      lua_pushinteger(L, static_cast<lua_Integer>(item.integer));
+      break;
+    case Type::Number:
+      lua_pushnumber(L, item.number);
+      break;
     case Type::String: {
       const std::string& s = strings_[static_cast<size_t>(item.integer)];
       lua_pushlstring(L, s.data(), s.size());
       break;
     }
-    case Type::TableRef: lua_rawgeti(L, refs, item.integer + 1); break;
+    case Type::TableRef:
+      lua_rawgeti(L, refs, item.integer + 1);
+      break;
     case Type::TableBegin: {
       luaL_checkstack(L, 4, "copying a Lua value");
       lua_createtable(L, 0, 0);
@@ -132,7 +150,9 @@ void LuaTape::ReplayAt(lua_State* L, size_t* pos, int refs) const {
       ++*pos;
       break;
     }
-    case Type::TableEnd: lua_pushnil(L); break;  // not reached: consumed by TableBegin
+    case Type::TableEnd:
+      lua_pushnil(L);
+      break;  // not reached: consumed by TableBegin
   }
 }
 
@@ -146,18 +166,32 @@ bool LuaTape::ToValue(Value* out, std::string* error) const {
 bool LuaTape::ValueAt(size_t* pos, std::vector<Value>* tables, Value* out, std::string* error) const {
   const Item& item = items_[(*pos)++];
   switch (item.type) {
-    case Type::Nil: *out = Value(); return true;
-    case Type::False: *out = Value::OfBool(false); return true;
-    case Type::True: *out = Value::OfBool(true); return true;
-    case Type::Integer: *out = Value::OfInteger(item.integer); return true;
-    case Type::Number: *out = Value::OfNumber(item.number); return true;
-    case Type::String: *out = Value::OfString(strings_[static_cast<size_t>(item.integer)]); return true;
+    case Type::Nil:
+      *out = Value();
+      return true;
+    case Type::False:
+      *out = Value::OfBool(false);
+      return true;
+    case Type::True:
+      *out = Value::OfBool(true);
+      return true;
+    case Type::Integer:
+      *out = Value::OfInteger(item.integer);
+      return true;
+    case Type::Number:
+      *out = Value::OfNumber(item.number);
+      return true;
+    case Type::String:
+      *out = Value::OfString(strings_[static_cast<size_t>(item.integer)]);
+      return true;
     case Type::TableRef:
       *out = (*tables)[static_cast<size_t>(item.integer)];
       if (out->IsNull()) return *error = "a table that contains itself has no JSON form", false;
       return true;
-    case Type::TableBegin: return ValueTable(pos, tables, out, error);
-    case Type::TableEnd: break;  // not reached: consumed by ValueTable
+    case Type::TableBegin:
+      return ValueTable(pos, tables, out, error);
+    case Type::TableEnd:
+      break;  // not reached: consumed by ValueTable
   }
   return *error = "malformed copy", false;
 }
@@ -192,12 +226,23 @@ bool LuaTape::ValueTable(size_t* pos, std::vector<Value>* tables, Value* out, st
 bool LuaTape::KeyText(size_t pos, std::string* key, std::string* error) const {
   const Item& k = items_[pos];
   switch (k.type) {
-    case Type::String: *key = strings_[static_cast<size_t>(k.integer)]; return true;
-    case Type::Integer: *key = std::to_string(k.integer); return true;
-    case Type::Number: *key = FormatDouble(k.number); return true;
-    case Type::False: *key = "false"; return true;
-    case Type::True: *key = "true"; return true;
-    default: return *error = "a table used as a key has no JSON form", false;
+    case Type::String:
+      *key = strings_[static_cast<size_t>(k.integer)];
+      return true;
+    case Type::Integer:
+      *key = std::to_string(k.integer);
+      return true;
+    case Type::Number:
+      *key = FormatDouble(k.number);
+      return true;
+    case Type::False:
+      *key = "false";
+      return true;
+    case Type::True:
+      *key = "true";
+      return true;
+    default:
+      return *error = "a table used as a key has no JSON form", false;
   }
 }
 

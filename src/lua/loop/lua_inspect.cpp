@@ -1,10 +1,9 @@
 #include "lua/loop/lua_inspect.h"
 
-#include <lua.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <lua.hpp>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -18,9 +17,9 @@ namespace {
 
 // Globals every state has: the standard library and what essaim itself defines.
 bool IsLibraryGlobal(const char* name) {
-  static const char* const kNames[] = {"_G",     "_VERSION", "coroutine", "debug", "io",     "math",  "os",
-                                       "package", "string",  "table",     "utf8",  "robot",  "vector2",
-                                       "vector3", "quaternion"};
+  static const char* const kNames[] = {"_G",   "_VERSION", "coroutine", "debug",   "io",
+                                       "math", "os",       "package",   "string",  "table",
+                                       "utf8", "robot",    "vector2",   "vector3", "quaternion"};
   for (const char* n : kNames)
     if (std::strcmp(n, name) == 0) return true;
   return false;
@@ -41,7 +40,8 @@ struct TreeWalk {
       return true;
     }
     if (t != LUA_TNUMBER) return false;
-    if (lua_isinteger(L, idx)) *out = std::to_string(lua_tointeger(L, idx));
+    if (lua_isinteger(L, idx))
+      *out = std::to_string(lua_tointeger(L, idx));
     else {
       char text[32];
       std::snprintf(text, sizeof text, "%.17g", lua_tonumber(L, idx));
@@ -101,8 +101,8 @@ struct TreeWalk {
     std::string key;
     lua_pushnil(L);
     while (lua_next(L, idx) != 0) {
-      bool skip = lua_type(L, -1) == LUA_TFUNCTION || !KeyText(L, -2, &key) ||
-                  (globals && IsLibraryGlobal(key.c_str()));
+      bool skip =
+          lua_type(L, -1) == LUA_TFUNCTION || !KeyText(L, -2, &key) || (globals && IsLibraryGlobal(key.c_str()));
       if (!skip && (static_cast<int>(entries.size()) >= limits.per_table || budget <= 0)) {
         ++more;
       } else if (!skip) {

@@ -11,9 +11,9 @@ struct lua_State;
 namespace essaim {
 
 struct LuaTreeLimits {
-  int depth = 4;          // tables below this depth are shown as "{...}"
-  int per_table = 100;    // entries shown per table; the rest counted
-  int total = 3000;       // entries in the whole tree
+  int depth = 4;        // tables below this depth are shown as "{...}"
+  int per_table = 100;  // entries shown per table; the rest counted
+  int total = 3000;     // entries in the whole tree
   size_t string_chars = 200;
 };
 

@@ -32,12 +32,22 @@ struct ValueWalk {
     // Runs outside any pcall, one level per nesting: grow the stack without raising.
     if (!lua_checkstack(L, 4)) return Fail("out of Lua stack");
     switch (lua_type(L, idx)) {
-      case LUA_TNIL: *out = Value(); return true;
-      case LUA_TBOOLEAN: *out = Value::OfBool(lua_toboolean(L, idx) != 0); return true;
-      case LUA_TNUMBER: *out = Number(idx, where); return true;
-      case LUA_TSTRING: *out = Value::OfString(LuaString(L, idx)); return true;
-      case LUA_TTABLE: return Table(idx, out, depth, where);
-      default: return Fail(std::string("cannot write a ") + luaL_typename(L, idx) + " to JSON");
+      case LUA_TNIL:
+        *out = Value();
+        return true;
+      case LUA_TBOOLEAN:
+        *out = Value::OfBool(lua_toboolean(L, idx) != 0);
+        return true;
+      case LUA_TNUMBER:
+        *out = Number(idx, where);
+        return true;
+      case LUA_TSTRING:
+        *out = Value::OfString(LuaString(L, idx));
+        return true;
+      case LUA_TTABLE:
+        return Table(idx, out, depth, where);
+      default:
+        return Fail(std::string("cannot write a ") + luaL_typename(L, idx) + " to JSON");
     }
   }
 
@@ -54,8 +64,10 @@ struct ValueWalk {
     *all_int = true;
     lua_pushnil(L);
     while (lua_next(L, idx)) {
-      if (lua_type(L, -2) == LUA_TSTRING) keys->push_back(LuaString(L, -2));
-      else if (lua_isinteger(L, -2)) keys->push_back(std::to_string(lua_tointeger(L, -2)));
+      if (lua_type(L, -2) == LUA_TSTRING)
+        keys->push_back(LuaString(L, -2));
+      else if (lua_isinteger(L, -2))
+        keys->push_back(std::to_string(lua_tointeger(L, -2)));
       else {
         lua_pop(L, 2);
         return Fail("table keys must be strings or integers");

@@ -52,8 +52,10 @@ lua_State* BareController::NewState(BareAllocator allocator) {
 }
 
 BareController::~BareController() {
-  if (guard_) CloseGuardedState(guard_.get());
-  else if (L_) lua_close(L_);
+  if (guard_)
+    CloseGuardedState(guard_.get());
+  else if (L_)
+    lua_close(L_);
 }
 
 bool BareController::Load(const Model& model, const RobotDef& def, int index, uint64_t experiment_seed,

@@ -26,7 +26,9 @@ void SetNumber(lua_State* L, int t, const char* k, double v) {
 }
 }  // namespace
 
-void CreateWheelsActuator(lua_State* L, int t, RobotState* robot) { SetClosure(L, t, "set_velocity", SetVelocity, robot); }
+void CreateWheelsActuator(lua_State* L, int t, RobotState* robot) {
+  SetClosure(L, t, "set_velocity", SetVelocity, robot);
+}
 
 void CreateWheelsSensor(lua_State* L, int t) {
   SetNumber(L, t, "axis_length", 14.0);  // cm; 0.14 * 100 is not exactly 14 in binary

@@ -112,8 +112,8 @@ void PushScanner(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs)
   const int scanner = lua_gettop(L);
   Fill(L, scanner, "short_range", refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,
        rd.scanner_short_count, &refs->scanner_short_count);
-  Fill(L, scanner, "long_range", refs->scanner_long, refs->scanner_long_pool, rd.scanner_long,
-       rd.scanner_long_count, &refs->scanner_long_count);
+  Fill(L, scanner, "long_range", refs->scanner_long, refs->scanner_long_pool, rd.scanner_long, rd.scanner_long_count,
+       &refs->scanner_long_count);
   lua_pop(L, 1);
 }
 

@@ -27,7 +27,8 @@ Color CheckColor(lua_State* L, int first, const char* fn) {
       luaL_error(L, "robot.leds.%s: the colour must be a string (a name or \"r,g,b,a\") or three numbers", fn);
     const char* text = lua_tostring(L, first);
     if (!ColorFromText(text, &c))
-      luaL_error(L, "robot.leds.%s: unknown colour '%s' (a name such as \"red\", or \"r,g,b,a\" with four 0..255 values)",
+      luaL_error(L,
+                 "robot.leds.%s: unknown colour '%s' (a name such as \"red\", or \"r,g,b,a\" with four 0..255 values)",
                  fn, text);
     return c;
   }

@@ -23,7 +23,8 @@ uint8_t RangedByte(lua_State* L, double v, const char* what) {
   if (std::fabs(v) < kMaxByteMagnitude) return LuaNumberToByte(v);
   char shown[32];
   std::snprintf(shown, sizeof shown, "%g", v);
-  luaL_error(L, "robot.range_and_bearing.set_data: %s %s is out of range (a byte: numbers within +-2^31 wrap modulo 256)",
+  luaL_error(L,
+             "robot.range_and_bearing.set_data: %s %s is out of range (a byte: numbers within +-2^31 wrap modulo 256)",
              what, shown);
   return 0;
 }
@@ -44,7 +45,10 @@ uint8_t ElementByte(lua_State* L, lua_Integer i) {
   lua_pop(L, 1);
   if (!std::isfinite(v))
     luaL_error(L, "robot.range_and_bearing.set_data(array): element #%d is %s (must be a finite number)",
-               static_cast<int>(i), std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+               static_cast<int>(i),
+               std::isnan(v) ? "nan"
+               : v > 0       ? "inf"
+                             : "-inf");
   char what[48];
   std::snprintf(what, sizeof what, "element #%d", static_cast<int>(i));
   return RangedByte(L, v, what);
@@ -57,8 +61,9 @@ int SetData(lua_State* L) {
   if (args == 1) {
     luaL_checktype(L, 1, LUA_TTABLE);
     if (static_cast<lua_Integer>(luaL_len(L, 1)) != size)
-      return luaL_error(L, "robot.range_and_bearing.set_data(array) expects an array of %d numbers (rab_data_size), got %d",
-                        static_cast<int>(size), static_cast<int>(luaL_len(L, 1)));
+      return luaL_error(
+          L, "robot.range_and_bearing.set_data(array) expects an array of %d numbers (rab_data_size), got %d",
+          static_cast<int>(size), static_cast<int>(luaL_len(L, 1)));
     // Every element is checked before the payload changes: a bad one leaves it untouched.
     uint8_t* out = r->cmd.rab_data.data();
     if (size <= kOnePassBytes) {

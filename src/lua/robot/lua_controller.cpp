@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <cstring>
-
 #include <lua.hpp>
 
 #include "core/paths.h"
@@ -41,9 +40,14 @@ void AppendArgs(lua_State* L, std::string* out, const char* sep) {
         *out += buf;
         break;
       }
-      case LUA_TSTRING: *out += lua_tostring(L, i); break;
-      case LUA_TBOOLEAN: *out += lua_toboolean(L, i) ? "1" : "0"; break;
-      default: *out += luaL_typename(L, i);
+      case LUA_TSTRING:
+        *out += lua_tostring(L, i);
+        break;
+      case LUA_TBOOLEAN:
+        *out += lua_toboolean(L, i) ? "1" : "0";
+        break;
+      default:
+        *out += luaL_typename(L, i);
     }
   }
 }
@@ -90,9 +94,7 @@ int Print(lua_State* L) {
 
 }  // namespace
 
-LuaController::~LuaController() {
-  CloseGuardedState(&guard_);
-}
+LuaController::~LuaController() { CloseGuardedState(&guard_); }
 
 bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
                          const LuaOptions& options, std::string* error) {
@@ -281,8 +283,11 @@ bool LuaController::Finish(int status, const char* where, const char* name, std:
     const char* msg = lua_tostring(L, -1);
     // The limits name the script, unless their message names its line already.
     const std::string script = StopNamesItsLine(guard_) ? "" : controller_->script + ": ";
-    *error = "robot " + def_->id + ": " + (!stopped.empty() ? script + stopped : msg ? msg : "error") + " (" + where +
-             name + ")";
+    *error = "robot " + def_->id + ": " +
+             (!stopped.empty() ? script + stopped
+              : msg            ? msg
+                               : "error") +
+             " (" + where + name + ")";
     lua_settop(L, 0);
     if (guard_.memory_exceeded) {
       // Free what the runaway took; the robot never runs again.

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "devices/robot_state.h"
-#include "lua/robot/lua_device_refs.h"
 #include "lua/host/lua_guard.h"
+#include "lua/robot/lua_device_refs.h"
 #include "lua/robot/lua_params.h"
 #include "model/model.h"
 
@@ -74,7 +74,7 @@ class LuaController {
   std::string log_;
   std::string write_;  // io.write's open line
   int traceback_ref_ = -1;
-  LuaDeviceRefs refs_;  // device tables refreshed each tick
+  LuaDeviceRefs refs_;    // device tables refreshed each tick
   TrackedParams params_;  // robot.params
 };
 

@@ -9,8 +9,8 @@ struct LuaDeviceRefs {
   /// robot.<lua_key> of each device, indexed by DeviceType. An actuator and a sensor with
   /// the same key (wheels, turret...) share the table and its reference.
   int table[kDeviceCount];
-  int rab_count = 0;       // messages currently in robot.range_and_bearing
-  int blob_count = 0;      // blobs currently in the camera table
+  int rab_count = 0;   // messages currently in robot.range_and_bearing
+  int blob_count = 0;  // blobs currently in the camera table
   // distance scanner: the short_range / long_range arrays, the pools of their 12 inner
   // {angle, distance} tables (reused, never reallocated), and their current lengths
   int scanner_short = -1, scanner_long = -1, scanner_short_pool = -1, scanner_long_pool = -1;

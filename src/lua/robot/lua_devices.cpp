@@ -88,10 +88,8 @@ constexpr std::array<LuaDeviceRow, kDeviceCount> kRows = {{
     // ---- actuators
     {T::WheelsActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateWheelsActuator(L, t, r); },
      nullptr},
-    {T::LedsActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateLedsActuator(L, t, r); },
-     nullptr},
-    {T::RabActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateRabActuator(L, t, r); },
-     nullptr},
+    {T::LedsActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateLedsActuator(L, t, r); }, nullptr},
+    {T::RabActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateRabActuator(L, t, r); }, nullptr},
     {T::ScannerActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateScannerActuator(L, t, r); },
      nullptr},
     {T::GripperActuator, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateGripperActuator(L, t, r); },
@@ -154,8 +152,7 @@ void CreateTables(lua_State* L, int robot_t, const std::vector<DeviceConfig>& de
 }
 }  // namespace
 
-void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot,
-                        LuaDeviceRefs* refs) {
+void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot, LuaDeviceRefs* refs) {
   const int robot_t = lua_gettop(L);
   CreateTables(L, robot_t, c.actuators, robot, refs);
   CreateTables(L, robot_t, c.sensors, robot, refs);

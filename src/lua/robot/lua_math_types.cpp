@@ -12,9 +12,15 @@ constexpr const char* kV3 = "vector3";
 constexpr const char* kQ = "quaternion";
 constexpr double kPiLocal = 3.14159265358979323846;
 
-struct V2 { double x, y; };
-struct V3 { double x, y, z; };
-struct Q { double w, x, y, z; };
+struct V2 {
+  double x, y;
+};
+struct V3 {
+  double x, y, z;
+};
+struct Q {
+  double w, x, y, z;
+};
 
 V2* CheckV2(lua_State* L, int i) { return static_cast<V2*>(luaL_checkudata(L, i, kV2)); }
 V3* CheckV3(lua_State* L, int i) { return static_cast<V3*>(luaL_checkudata(L, i, kV3)); }
@@ -44,14 +50,26 @@ std::string FormatNumber(double v) {
 int V2New(lua_State* L) {
   int n = lua_gettop(L);
   V2 v{0, 0};
-  if (n == 1) v = *CheckV2(L, 1);
-  else if (n == 2) v = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
-  else if (n != 0) return luaL_error(L, "vector2 expects 0, 1 or 2 arguments");
+  if (n == 1)
+    v = *CheckV2(L, 1);
+  else if (n == 2)
+    v = {luaL_checknumber(L, 1), luaL_checknumber(L, 2)};
+  else if (n != 0)
+    return luaL_error(L, "vector2 expects 0, 1 or 2 arguments");
   *NewV2(L) = v;
   return 1;
 }
-int V2Length(lua_State* L) { V2* v = CheckV2(L, 1); lua_pushnumber(L, std::hypot(v->x, v->y)); return 1; }
-int V2Dot(lua_State* L) { V2* a = CheckV2(L, 1); V2* b = CheckV2(L, 2); lua_pushnumber(L, a->x * b->x + a->y * b->y); return 1; }
+int V2Length(lua_State* L) {
+  V2* v = CheckV2(L, 1);
+  lua_pushnumber(L, std::hypot(v->x, v->y));
+  return 1;
+}
+int V2Dot(lua_State* L) {
+  V2* a = CheckV2(L, 1);
+  V2* b = CheckV2(L, 2);
+  lua_pushnumber(L, a->x * b->x + a->y * b->y);
+  return 1;
+}
 int V2Normalize(lua_State* L) {
   V2* v = CheckV2(L, 1);
   double l = std::hypot(v->x, v->y);
@@ -68,8 +86,17 @@ int V2Rotate(lua_State* L) {
   return 1;
 }
 // ARGoS quirk: vector2:cross computes a scalar, discards it and returns self.
-int V2Cross(lua_State* L) { CheckV2(L, 1); CheckV2(L, 2); lua_settop(L, 1); return 1; }
-int V2Angle(lua_State* L) { V2* v = CheckV2(L, 1); lua_pushnumber(L, std::atan2(v->y, v->x)); return 1; }
+int V2Cross(lua_State* L) {
+  CheckV2(L, 1);
+  CheckV2(L, 2);
+  lua_settop(L, 1);
+  return 1;
+}
+int V2Angle(lua_State* L) {
+  V2* v = CheckV2(L, 1);
+  lua_pushnumber(L, std::atan2(v->y, v->x));
+  return 1;
+}
 int V2Index(lua_State* L) {
   V2* v = CheckV2(L, 1);
   const char* k = lua_tostring(L, 2);
@@ -86,14 +113,29 @@ int V2NewIndex(lua_State* L) {
   V2* v = CheckV2(L, 1);
   const char* k = luaL_checkstring(L, 2);
   double x = luaL_checknumber(L, 3);
-  if (!std::strcmp(k, "x")) v->x = x;
-  else if (!std::strcmp(k, "y")) v->y = x;
-  else return luaL_error(L, "vector2 has no field '%s'", k);
+  if (!std::strcmp(k, "x"))
+    v->x = x;
+  else if (!std::strcmp(k, "y"))
+    v->y = x;
+  else
+    return luaL_error(L, "vector2 has no field '%s'", k);
   return 0;
 }
-int V2Add(lua_State* L) { V2 a = *CheckV2(L, 1), b = *CheckV2(L, 2); *NewV2(L) = {a.x + b.x, a.y + b.y}; return 1; }
-int V2Sub(lua_State* L) { V2 a = *CheckV2(L, 1), b = *CheckV2(L, 2); *NewV2(L) = {a.x - b.x, a.y - b.y}; return 1; }
-int V2Unm(lua_State* L) { V2 a = *CheckV2(L, 1); *NewV2(L) = {-a.x, -a.y}; return 1; }
+int V2Add(lua_State* L) {
+  V2 a = *CheckV2(L, 1), b = *CheckV2(L, 2);
+  *NewV2(L) = {a.x + b.x, a.y + b.y};
+  return 1;
+}
+int V2Sub(lua_State* L) {
+  V2 a = *CheckV2(L, 1), b = *CheckV2(L, 2);
+  *NewV2(L) = {a.x - b.x, a.y - b.y};
+  return 1;
+}
+int V2Unm(lua_State* L) {
+  V2 a = *CheckV2(L, 1);
+  *NewV2(L) = {-a.x, -a.y};
+  return 1;
+}
 int V2Mul(lua_State* L) {
   int vi = lua_isnumber(L, 1) ? 2 : 1;
   V2 a = *CheckV2(L, vi);
@@ -101,8 +143,18 @@ int V2Mul(lua_State* L) {
   *NewV2(L) = {a.x * s, a.y * s};
   return 1;
 }
-int V2Div(lua_State* L) { V2 a = *CheckV2(L, 1); double s = luaL_checknumber(L, 2); *NewV2(L) = {a.x / s, a.y / s}; return 1; }
-int V2Eq(lua_State* L) { V2* a = CheckV2(L, 1); V2* b = CheckV2(L, 2); lua_pushboolean(L, a->x == b->x && a->y == b->y); return 1; }
+int V2Div(lua_State* L) {
+  V2 a = *CheckV2(L, 1);
+  double s = luaL_checknumber(L, 2);
+  *NewV2(L) = {a.x / s, a.y / s};
+  return 1;
+}
+int V2Eq(lua_State* L) {
+  V2* a = CheckV2(L, 1);
+  V2* b = CheckV2(L, 2);
+  lua_pushboolean(L, a->x == b->x && a->y == b->y);
+  return 1;
+}
 int V2ToString(lua_State* L) {
   V2* v = CheckV2(L, 1);
   lua_pushstring(L, (FormatNumber(v->x) + "," + FormatNumber(v->y)).c_str());
@@ -113,14 +165,26 @@ int V2ToString(lua_State* L) {
 int V3New(lua_State* L) {
   int n = lua_gettop(L);
   V3 v{0, 0, 0};
-  if (n == 1) v = *CheckV3(L, 1);
-  else if (n == 3) v = {luaL_checknumber(L, 1), luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
-  else if (n != 0) return luaL_error(L, "vector3 expects 0, 1 or 3 arguments");
+  if (n == 1)
+    v = *CheckV3(L, 1);
+  else if (n == 3)
+    v = {luaL_checknumber(L, 1), luaL_checknumber(L, 2), luaL_checknumber(L, 3)};
+  else if (n != 0)
+    return luaL_error(L, "vector3 expects 0, 1 or 3 arguments");
   *NewV3(L) = v;
   return 1;
 }
-int V3Length(lua_State* L) { V3* v = CheckV3(L, 1); lua_pushnumber(L, std::sqrt(v->x * v->x + v->y * v->y + v->z * v->z)); return 1; }
-int V3Dot(lua_State* L) { V3* a = CheckV3(L, 1); V3* b = CheckV3(L, 2); lua_pushnumber(L, a->x * b->x + a->y * b->y + a->z * b->z); return 1; }
+int V3Length(lua_State* L) {
+  V3* v = CheckV3(L, 1);
+  lua_pushnumber(L, std::sqrt(v->x * v->x + v->y * v->y + v->z * v->z));
+  return 1;
+}
+int V3Dot(lua_State* L) {
+  V3* a = CheckV3(L, 1);
+  V3* b = CheckV3(L, 2);
+  lua_pushnumber(L, a->x * b->x + a->y * b->y + a->z * b->z);
+  return 1;
+}
 int V3Normalize(lua_State* L) {
   V3* v = CheckV3(L, 1);
   double l = std::sqrt(v->x * v->x + v->y * v->y + v->z * v->z);
@@ -139,7 +203,12 @@ void RotateByQ(V3* v, const Q& q) {
   double z = 2 * dot_uv * uz + (s * s - dot_uu) * v->z + 2 * s * cz;
   v->x = x, v->y = y, v->z = z;
 }
-int V3Rotate(lua_State* L) { V3* v = CheckV3(L, 1); RotateByQ(v, *CheckQ(L, 2)); lua_settop(L, 1); return 1; }
+int V3Rotate(lua_State* L) {
+  V3* v = CheckV3(L, 1);
+  RotateByQ(v, *CheckQ(L, 2));
+  lua_settop(L, 1);
+  return 1;
+}
 int V3Cross(lua_State* L) {
   V3* a = CheckV3(L, 1);
   V3 b = *CheckV3(L, 2);
@@ -165,15 +234,31 @@ int V3NewIndex(lua_State* L) {
   V3* v = CheckV3(L, 1);
   const char* k = luaL_checkstring(L, 2);
   double x = luaL_checknumber(L, 3);
-  if (!std::strcmp(k, "x")) v->x = x;
-  else if (!std::strcmp(k, "y")) v->y = x;
-  else if (!std::strcmp(k, "z")) v->z = x;
-  else return luaL_error(L, "vector3 has no field '%s'", k);
+  if (!std::strcmp(k, "x"))
+    v->x = x;
+  else if (!std::strcmp(k, "y"))
+    v->y = x;
+  else if (!std::strcmp(k, "z"))
+    v->z = x;
+  else
+    return luaL_error(L, "vector3 has no field '%s'", k);
   return 0;
 }
-int V3Add(lua_State* L) { V3 a = *CheckV3(L, 1), b = *CheckV3(L, 2); *NewV3(L) = {a.x + b.x, a.y + b.y, a.z + b.z}; return 1; }
-int V3Sub(lua_State* L) { V3 a = *CheckV3(L, 1), b = *CheckV3(L, 2); *NewV3(L) = {a.x - b.x, a.y - b.y, a.z - b.z}; return 1; }
-int V3Unm(lua_State* L) { V3 a = *CheckV3(L, 1); *NewV3(L) = {-a.x, -a.y, -a.z}; return 1; }
+int V3Add(lua_State* L) {
+  V3 a = *CheckV3(L, 1), b = *CheckV3(L, 2);
+  *NewV3(L) = {a.x + b.x, a.y + b.y, a.z + b.z};
+  return 1;
+}
+int V3Sub(lua_State* L) {
+  V3 a = *CheckV3(L, 1), b = *CheckV3(L, 2);
+  *NewV3(L) = {a.x - b.x, a.y - b.y, a.z - b.z};
+  return 1;
+}
+int V3Unm(lua_State* L) {
+  V3 a = *CheckV3(L, 1);
+  *NewV3(L) = {-a.x, -a.y, -a.z};
+  return 1;
+}
 int V3Mul(lua_State* L) {
   int vi = lua_isnumber(L, 1) ? 2 : 1;
   V3 a = *CheckV3(L, vi);
@@ -181,8 +266,18 @@ int V3Mul(lua_State* L) {
   *NewV3(L) = {a.x * s, a.y * s, a.z * s};
   return 1;
 }
-int V3Div(lua_State* L) { V3 a = *CheckV3(L, 1); double s = luaL_checknumber(L, 2); *NewV3(L) = {a.x / s, a.y / s, a.z / s}; return 1; }
-int V3Eq(lua_State* L) { V3* a = CheckV3(L, 1); V3* b = CheckV3(L, 2); lua_pushboolean(L, a->x == b->x && a->y == b->y && a->z == b->z); return 1; }
+int V3Div(lua_State* L) {
+  V3 a = *CheckV3(L, 1);
+  double s = luaL_checknumber(L, 2);
+  *NewV3(L) = {a.x / s, a.y / s, a.z / s};
+  return 1;
+}
+int V3Eq(lua_State* L) {
+  V3* a = CheckV3(L, 1);
+  V3* b = CheckV3(L, 2);
+  lua_pushboolean(L, a->x == b->x && a->y == b->y && a->z == b->z);
+  return 1;
+}
 int V3ToString(lua_State* L) {
   V3* v = CheckV3(L, 1);
   lua_pushstring(L, (FormatNumber(v->x) + "," + FormatNumber(v->y) + "," + FormatNumber(v->z)).c_str());
@@ -197,10 +292,14 @@ Q FromAngleAxis(double angle, const V3& axis) {
 int QNew(lua_State* L) {
   int n = lua_gettop(L);
   Q q{1, 0, 0, 0};
-  if (n == 1) q = *CheckQ(L, 1);
-  else if (n == 2) q = FromAngleAxis(luaL_checknumber(L, 1), *CheckV3(L, 2));
-  else if (n == 4) q = {luaL_checknumber(L, 1), luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
-  else if (n != 0) return luaL_error(L, "quaternion expects 0, 1, 2 or 4 arguments");
+  if (n == 1)
+    q = *CheckQ(L, 1);
+  else if (n == 2)
+    q = FromAngleAxis(luaL_checknumber(L, 1), *CheckV3(L, 2));
+  else if (n == 4)
+    q = {luaL_checknumber(L, 1), luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_checknumber(L, 4)};
+  else if (n != 0)
+    return luaL_error(L, "quaternion expects 0, 1, 2 or 4 arguments");
   *NewQ(L) = q;
   return 1;
 }
@@ -208,8 +307,10 @@ void ToAngleAxis(const Q& q, double* angle, V3* axis) {
   double w = std::fmax(-1.0, std::fmin(1.0, q.w));
   *angle = 2 * std::acos(w);
   double s = std::sqrt(1 - w * w);
-  if (s < 1e-12) *axis = {0, 0, 1};
-  else *axis = {q.x / s, q.y / s, q.z / s};
+  if (s < 1e-12)
+    *axis = {0, 0, 1};
+  else
+    *axis = {q.x / s, q.y / s, q.z / s};
 }
 void ToEuler(const Q& q, double* z, double* y, double* x) {
   // ZYX (yaw, pitch, roll), as ARGoS's ToEulerAngles.
@@ -244,7 +345,11 @@ int QNormalize(lua_State* L) {
   lua_settop(L, 1);
   return 1;
 }
-int QInverse(lua_State* L) { Q q = *CheckQ(L, 1); *NewQ(L) = {q.w, -q.x, -q.y, -q.z}; return 1; }
+int QInverse(lua_State* L) {
+  Q q = *CheckQ(L, 1);
+  *NewQ(L) = {q.w, -q.x, -q.y, -q.z};
+  return 1;
+}
 int QIndex(lua_State* L) {
   Q* q = CheckQ(L, 1);
   const char* k = lua_tostring(L, 2);
@@ -258,8 +363,10 @@ int QIndex(lua_State* L) {
       double a;
       V3 ax;
       ToAngleAxis(*q, &a, &ax);
-      if (k[1] == 'n') lua_pushnumber(L, a);
-      else *NewV3(L) = ax;
+      if (k[1] == 'n')
+        lua_pushnumber(L, a);
+      else
+        *NewV3(L) = ax;
       return 1;
     }
   }
@@ -272,11 +379,16 @@ int QNewIndex(lua_State* L) {
   Q* q = CheckQ(L, 1);
   const char* k = luaL_checkstring(L, 2);
   double v = luaL_checknumber(L, 3);
-  if (!std::strcmp(k, "w")) q->w = v;
-  else if (!std::strcmp(k, "x")) q->x = v;
-  else if (!std::strcmp(k, "y")) q->y = v;
-  else if (!std::strcmp(k, "z")) q->z = v;
-  else return luaL_error(L, "quaternion has no field '%s'", k);
+  if (!std::strcmp(k, "w"))
+    q->w = v;
+  else if (!std::strcmp(k, "x"))
+    q->x = v;
+  else if (!std::strcmp(k, "y"))
+    q->y = v;
+  else if (!std::strcmp(k, "z"))
+    q->z = v;
+  else
+    return luaL_error(L, "quaternion has no field '%s'", k);
   return 0;
 }
 int QMul(lua_State* L) {
@@ -309,21 +421,25 @@ void MakeMeta(lua_State* L, const char* name, const char* key, const luaL_Reg* m
 }  // namespace
 
 void OpenMathTypes(lua_State* L) {
-  static const luaL_Reg v2_meta[] = {{"__index", V2Index}, {"__newindex", V2NewIndex}, {"__add", V2Add},
-                                     {"__sub", V2Sub}, {"__unm", V2Unm}, {"__mul", V2Mul}, {"__div", V2Div},
-                                     {"__eq", V2Eq}, {"__tostring", V2ToString}, {nullptr, nullptr}};
-  static const luaL_Reg v2_methods[] = {{"length", V2Length}, {"dot", V2Dot}, {"normalize", V2Normalize},
+  static const luaL_Reg v2_meta[] = {
+      {"__index", V2Index},       {"__newindex", V2NewIndex}, {"__add", V2Add}, {"__sub", V2Sub},
+      {"__unm", V2Unm},           {"__mul", V2Mul},           {"__div", V2Div}, {"__eq", V2Eq},
+      {"__tostring", V2ToString}, {nullptr, nullptr}};
+  static const luaL_Reg v2_methods[] = {{"length", V2Length}, {"dot", V2Dot},     {"normalize", V2Normalize},
                                         {"rotate", V2Rotate}, {"cross", V2Cross}, {"angle", V2Angle},
                                         {nullptr, nullptr}};
-  static const luaL_Reg v3_meta[] = {{"__index", V3Index}, {"__newindex", V3NewIndex}, {"__add", V3Add},
-                                     {"__sub", V3Sub}, {"__unm", V3Unm}, {"__mul", V3Mul}, {"__div", V3Div},
-                                     {"__eq", V3Eq}, {"__tostring", V3ToString}, {nullptr, nullptr}};
-  static const luaL_Reg v3_methods[] = {{"length", V3Length}, {"dot", V3Dot}, {"normalize", V3Normalize},
+  static const luaL_Reg v3_meta[] = {
+      {"__index", V3Index},       {"__newindex", V3NewIndex}, {"__add", V3Add}, {"__sub", V3Sub},
+      {"__unm", V3Unm},           {"__mul", V3Mul},           {"__div", V3Div}, {"__eq", V3Eq},
+      {"__tostring", V3ToString}, {nullptr, nullptr}};
+  static const luaL_Reg v3_methods[] = {{"length", V3Length}, {"dot", V3Dot},     {"normalize", V3Normalize},
                                         {"rotate", V3Rotate}, {"cross", V3Cross}, {nullptr, nullptr}};
   static const luaL_Reg q_meta[] = {{"__index", QIndex}, {"__newindex", QNewIndex}, {"__mul", QMul},
-                                    {"__eq", QEq}, {"__tostring", QToString}, {nullptr, nullptr}};
-  static const luaL_Reg q_methods[] = {{"normalize", QNormalize}, {"inverse", QInverse},
-                                       {"toangleaxis", QToAngleAxis}, {"toeulerangles", QToEuler},
+                                    {"__eq", QEq},       {"__tostring", QToString}, {nullptr, nullptr}};
+  static const luaL_Reg q_methods[] = {{"normalize", QNormalize},
+                                       {"inverse", QInverse},
+                                       {"toangleaxis", QToAngleAxis},
+                                       {"toeulerangles", QToEuler},
                                        {nullptr, nullptr}};
   MakeMeta(L, kV2, &kV2Key, v2_meta, v2_methods);
   MakeMeta(L, kV3, &kV3Key, v3_meta, v3_methods);
@@ -342,9 +458,12 @@ int MathTypeFields(lua_State* L, int idx, const char** names, double* values) {
   static const char* const kWxyz[] = {"w", "x", "y", "z"};
   int n = 0;
   const double* v = nullptr;
-  if (auto* a = static_cast<V2*>(luaL_testudata(L, idx, kV2))) n = 2, v = &a->x;
-  else if (auto* b = static_cast<V3*>(luaL_testudata(L, idx, kV3))) n = 3, v = &b->x;
-  else if (auto* q = static_cast<Q*>(luaL_testudata(L, idx, kQ))) n = 4, v = &q->w;
+  if (auto* a = static_cast<V2*>(luaL_testudata(L, idx, kV2)))
+    n = 2, v = &a->x;
+  else if (auto* b = static_cast<V3*>(luaL_testudata(L, idx, kV3)))
+    n = 3, v = &b->x;
+  else if (auto* q = static_cast<Q*>(luaL_testudata(L, idx, kQ)))
+    n = 4, v = &q->w;
   for (int i = 0; i < n; ++i) {
     names[i] = n == 4 ? kWxyz[i] : kXyz[i];
     values[i] = v[i];

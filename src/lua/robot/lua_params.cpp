@@ -1,7 +1,6 @@
 #include "lua/robot/lua_params.h"
 
 #include <algorithm>
-
 #include <lua.hpp>
 
 namespace essaim {
