@@ -28,7 +28,7 @@ struct Scenario {
   std::vector<const char*> overrides;  // --set values
 };
 
-// Issue 7's fixed scenarios. Robot counts are set with --set on the scenario's distribute.
+// The fixed scenarios. Robot counts are set with --set on the scenario's distribute.
 const Scenario kScenarios[] = {
     {"diffusion-minimal", "diffusion_1000.argos", {}},
     {"diffusion-minimal-100", "diffusion_1000.argos", {"arena.distribute[2].entity.quantity=100"}},
@@ -107,7 +107,7 @@ bool TimeRun(const Model& model, double* wall, double* cpu, StageTimes* times) {
   return true;
 }
 
-// Issue 12's ratio: a normal run's wall time over the controllers' bare-Lua floor on the same
+// The overhead ratio: a normal run's wall time over the controllers' bare-Lua floor on the same
 // readings (sim/bare_floor.h), with each stage's share of the wall time; and the same ratio
 // in CPU time, which a busy machine disturbs far less (at several threads the run's CPU
 // time is summed over them). With --repeat N, each number is the minimum of N runs (the
@@ -179,7 +179,7 @@ static int Bench(BenchArgs a) {
   long long ticks = a.ticks;
   const std::vector<int>& thread_counts = a.thread_counts;
   const std::vector<std::string>& only = a.only;
-  // wall/lua: whole run time over the time inside the controllers' step() (issue 7's
+  // wall/lua: whole run time over the time inside the controllers' step() (the
   // overhead ratio). Stage shares: sense and control are summed over threads.
   std::printf("%-18s %6s %3s %8s %11s %9s %8s  %5s %5s %5s %5s %5s %5s %8s %7s\n", "scenario", "robots", "thr",
               "ticks/s", "robot-st/s", "us/r-step", "wall/lua", "act%", "phys%", "media%", "loop%", "sense%", "lua%",

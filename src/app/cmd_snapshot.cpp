@@ -1,5 +1,5 @@
 // `essaim snapshot RUN_DIR --tick T -o FILE.png [--trail N] [--size PX]`: one frame of a
-// recorded run as a PNG (docs/replay.md), drawn by app/render_cairo.cpp.
+// recorded run as a PNG (docs/replay.md), drawn by render/render_cairo.cpp.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -11,7 +11,7 @@
 #include "output/atomic_file.h"
 #include "output/recording.h"
 #ifdef ESSAIM_HAVE_CAIRO
-#include "app/render_cairo.h"
+#include "render/render_cairo.h"
 #endif
 
 namespace essaim {

@@ -1,4 +1,4 @@
-// ARGoS colour names and "r,g,b,a" strings (spec §7.1).
+// ARGoS colour names and "r,g,b,a" strings.
 #pragma once
 #include <optional>
 #include <string>

@@ -12,7 +12,7 @@ uint64_t SplitMix64(uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-// ARGoS's Floor: returns n-1 for negative integral inputs (spec §8.4 quirk).
+// ARGoS's Floor: returns n-1 for negative integral inputs (an ARGoS quirk).
 double ArgosFloor(double x) {
   if (x >= 0) return std::floor(x);
   return static_cast<double>(static_cast<int64_t>(x) - 1);

@@ -1,4 +1,4 @@
-// Random numbers with ARGoS's distributions (spec §8.4), on MT19937 streams.
+// Random numbers with ARGoS's distributions, on MT19937 streams.
 // The standard fixes mt19937's output sequence; the std:: distributions are not fixed
 // across standard libraries, so every transform here is our own (determinism contract).
 #pragma once

@@ -1,4 +1,4 @@
-// Foot-bot distance scanner, rot_z_only sensor and default actuator (spec §3).
+// Foot-bot distance scanner, rot_z_only sensor and default actuator.
 //
 // A platform 0.123199866 m above the robot origin carries four range sensors: short range
 // at θ and θ + π, long range at θ + π/2 and θ − π/2 (θ = platform rotation, robot frame).

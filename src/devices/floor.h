@@ -1,5 +1,5 @@
 // The floor as a raster over the arena: from an image (stretched, bottom-left pixel at
-// the arena's min corner, spec §4.3) or sampled once from the loop functions'
+// the arena's min corner) or sampled once from the loop functions'
 // floor_color(x, y). Ground sensors read it.
 #pragma once
 #include <algorithm>

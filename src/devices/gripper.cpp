@@ -1,4 +1,4 @@
-// Foot-bot gripper actuator (spec §7.5, §11.2). The controller's lock_positive /
+// Foot-bot gripper actuator. The controller's lock_positive /
 // lock_negative / unlock set an aperture; here, in Act, a locked gripper holding nothing
 // grips whatever grippable shape touches its disc (the physics joint does the holding),
 // and an unlocked one lets go. ARGoS grips on contact during the physics step; essaim

@@ -1,4 +1,4 @@
-// Foot-bot ground sensors, rot_z_only (spec §4): the floor's grey level under points
+// Foot-bot ground sensors, rot_z_only: the floor's grey level under points
 // fixed in the robot frame. Base ground: 8 points, grey + noise, then binary (< 0.5 → 0,
 // else 1). Motor ground: 4 points, grey + noise, clamped to [0, 1]. The floor is the
 // World's raster (image or loop-function floor_color), read through FloorRaster::Grey.

@@ -1,4 +1,4 @@
-// LEDs actuator (spec §7.1): the 13 colours set by the controller become the robot's
+// LEDs actuator: the 13 colours set by the controller become the robot's
 // applied LEDs in Act, which the LED field (devices/led_field.cpp) indexes for cameras.
 #include <algorithm>
 

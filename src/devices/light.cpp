@@ -1,4 +1,4 @@
-// Foot-bot light sensor, rot_z_only (spec §7.3). For every <light> with intensity > 0
+// Foot-bot light sensor, rot_z_only. For every <light> with intensity > 0
 // that a ray from the robot origin (floor level) to the light does not meet: d = |light −
 // origin| / intensity, base = exp(−2d) (0 beyond d = 2.5); the 13 ring sensors around the
 // light's bearing get base·(1 − 2Δ/π), Δ = the sensor's angular distance to the bearing

@@ -1,8 +1,8 @@
-// Foot-bot proximity sensor (spec §2): 24 rays of 0.1 m from the body surface at
+// Foot-bot proximity sensor: 24 rays of 0.1 m from the body surface at
 // 7.5° + 15°·k, 6 cm above the floor; value 0.0100527 / (d + 0.000163144), 1 when closer
 // than 0.009889556 m, 0 without a hit; uniform noise added to every sensor (hit or not),
 // then clamped to [0, 1]. The shapes within reach are gathered once per tick, then each
-// ray is tested against that short list with Box2D's shape ray casts (issue 12).
+// ray is tested against that short list with Box2D's shape ray casts.
 #include <algorithm>
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// Range-and-bearing actuator and sensor (spec §5). The medium (devices/rab_routing.cpp) decides
+// Range-and-bearing actuator and sensor. The medium (devices/rab_routing.cpp) decides
 // who hears whom after physics; here the receiver turns each routed packet into range and
 // bearings in its own frame, with drop and noise from its own sensor_rng.
 #include <algorithm>
@@ -9,7 +9,7 @@
 namespace essaim {
 
 void ActRab(RobotState& robot) {
-  // One-tick latency (spec §5.5): the payload set in step() at t is broadcast from t+1.
+  // One-tick latency: the payload set in step() at t is broadcast from t+1.
   std::copy(robot.cmd.rab_data.begin(), robot.cmd.rab_data.end(), robot.rab_data.begin());
 }
 

@@ -1,4 +1,4 @@
-// Foot-bot turret actuator and encoder (spec §7.5, §11.2). The turret is kinematic robot
+// Foot-bot turret actuator and encoder. The turret is kinematic robot
 // state: an angle relative to the body, in [-pi, pi]. ARGoS moves a second physics body
 // whose angular velocity it sets once per tick; essaim applies the same per-tick laws to
 // the angle directly, so a turret is never back-driven by what it holds:

@@ -1,4 +1,4 @@
-// Differential steering actuator and sensor (spec §1.3).
+// Differential steering actuator and sensor.
 #include "devices/devices.h"
 
 namespace essaim {
@@ -6,7 +6,7 @@ namespace essaim {
 void InitWheelNoise(const DeviceConfig& cfg, RobotState& robot) {
   const DeviceParams& p = cfg.params;
   if (!p.wheel_noise) return;
-  // Bias drawn once per robot (ARGoS); absent bias attributes mean 0 (spec §1.3 quirk).
+  // Bias drawn once per robot (ARGoS); absent bias attributes mean 0 (an ARGoS quirk).
   robot.wheel_bias_left = robot.actuator_rng.Gaussian(p.bias_stddev[0], p.bias_avg[0]);
   robot.wheel_bias_right = robot.actuator_rng.Gaussian(p.bias_stddev[1], p.bias_avg[1]);
 }

@@ -39,8 +39,8 @@ class AttributeLedger {
   std::set<const Element*> read_all_;
 };
 
-/// Attributes ARGoS accepts that essaim ignores on purpose (docs/compatibility.md,
-/// argos-spec.md §10), by element tag: never reported as typos.
+/// Attributes ARGoS accepts that essaim ignores on purpose (docs/compatibility.md),
+/// by element tag: never reported as typos.
 const std::vector<std::string>& KnownIgnoredAttributes(const std::string& tag);
 
 }  // namespace essaim

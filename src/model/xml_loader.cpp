@@ -321,7 +321,7 @@ void Loader::LoadFramework(const XMLElement* e) {
   }
   x.ticks_per_second = static_cast<int>(tps);
   double length = Double(exp, "length", 0);
-  // ARGoS truncates length × ticks_per_second (spec §10.1, quirk 11). The bound keeps the
+  // ARGoS truncates length × ticks_per_second. The bound keeps the
   // product inside uint64_t: length="1e300" was undefined behaviour in the cast.
   double ticks = length * x.ticks_per_second;
   if (length < 0) {
@@ -479,7 +479,7 @@ void Loader::LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c)
     ParseDeviceParams(&cfg, errors_);
     out.push_back(std::move(cfg));
   }
-  // ARGoS applies devices in alphabetical tag order (spec §12).
+  // ARGoS applies devices in alphabetical tag order.
   std::stable_sort(out.begin(), out.end(), [](const DeviceConfig& a, const DeviceConfig& b) {
     return std::string(GetDeviceRow(a.type).xml_name) < GetDeviceRow(b.type).xml_name;
   });
@@ -759,7 +759,7 @@ void Loader::LoadArena(const XMLElement* e) {
   CheckArenaSize(e);
   placed_.Cover(model_->arena.Min(), model_->arena.Max());
   if (Has(e, "positional_index")) Warn(e, "positional_index ignored (ARGoS ignores it too)");
-  // Explicit entities in document order, then <distribute> blocks (spec §10.4).
+  // Explicit entities in document order, then <distribute> blocks.
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     std::string name = c->Name();
     if (name == "foot-bot") {

@@ -13,7 +13,7 @@
 // Only Box2D's own timer changes; the process's clocks (gettimeofday, std::chrono) are
 // untouched. The library's CMake target forces this object into every binary that links
 // essaim_physics (it is otherwise unreferenced). Not patching or vendoring Box2D keeps
-// Debian's libbox2d as it is; tests/unit/box2d_profile_timer_test.cpp checks the replacement
+// Debian's libbox2d as it is; tests/physics/box2d_profile_timer_test.cpp checks the replacement
 // is live.
 #include <box2d/b2_timer.h>
 

@@ -25,7 +25,7 @@
 #include "sim/run_end.h"
 #include "sim/step.h"
 #ifdef ESSAIM_HAVE_CAIRO
-#include "app/render_cairo.h"
+#include "render/render_cairo.h"
 #endif
 
 namespace py = pybind11;

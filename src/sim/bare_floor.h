@@ -1,4 +1,4 @@
-// The floor of a run's cost (issue 12): the controllers' own step() time in bare Lua, on
+// The floor of a run's cost: the controllers' own step() time in bare Lua, on
 // the very readings they get in a real run. A simulator can only add to it; `essaim bench
 // --floor` prints a run's wall time over this floor.
 #pragma once

@@ -1,4 +1,4 @@
-// Snapshots (app/render_cairo.cpp): a scene with known contents is recorded, drawn and read
+// Snapshots (render/render_cairo.cpp): a scene with known contents is recorded, drawn and read
 // back with libpng; pixels are checked where the robot, the box, the floor's corners and a
 // trail must be. The arena is off-centre and twice as wide as tall, so a flipped or
 // stretched image fails.
@@ -12,7 +12,7 @@
 #include "output/recording.h"
 #include "support/scene.h"
 #ifdef ESSAIM_HAVE_CAIRO
-#include "app/render_cairo.h"
+#include "render/render_cairo.h"
 #endif
 
 namespace essaim {

@@ -1,4 +1,4 @@
-"""Inputs that used to be accepted in silence (issue 15): --set paths nobody reads, unknown
+"""Inputs that used to be accepted in silence: --set paths nobody reads, unknown
 attributes in the file (warnings; errors under --strict), a controller without a script,
 robots placed on each other."""
 import json

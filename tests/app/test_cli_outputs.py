@@ -1,4 +1,4 @@
-"""Outputs never stale, never misplaced, never lost in silence (issue 15, docs/cli.md "The
+"""Outputs never stale, never misplaced, never lost in silence (docs/cli.md "The
 output folder"): a reused --out folder holds only the new run's outputs; a wrong --out is bad
 input before anything runs; a full disk ends with what could be written and exit 1;
 replay/snapshot -o refuse what is not a regular file; loop-function init() errors exit 1;

@@ -1,7 +1,7 @@
 -- A deliberately small stand-in for the simulator, to run the foraging controller and its loop
 -- functions end to end in plain Lua before (and independently of) the C++ core.
 --
--- It follows the spec where the controller depends on it (argos-spec.md §1-§9, §12): the step
+-- It follows the spec where the controller depends on it: the step
 -- order (act, physics, battery, media, loop pre_step, sense + control, loop post_step), one-step
 -- latency of wheels/LEDs/RAB payloads, the proximity ring's 24 rays and reading law, the rotating
 -- distance scanner (6 rays per sensor per tick, -1/-2 codes, cm from the body surface), the 8

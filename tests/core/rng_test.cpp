@@ -1,4 +1,4 @@
-// robot.random's distributions (spec §8.4): ranges and moments of every call.
+// robot.random's distributions: ranges and moments of every call.
 #include "core/rng.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Battery (spec §9): discharge per model against hand values — time: delta per tick;
+// Battery: discharge per model against hand values — time: delta per tick;
 // motion: pos_delta per metre moved and orient_delta per radian turned, on a robot driven
 // straight and one spinning; time_motion: both — available_charge and time_left, and no
 // <battery>, no discharge.

@@ -1,4 +1,4 @@
-// Colored-blob omnidirectional camera (spec §7.2) against hand-computed blobs: other
+// Colored-blob omnidirectional camera against hand-computed blobs: other
 // robots' LEDs, LEDs on boxes, <light>s; black LEDs, the square field of view,
 // occlusion, other media and a disabled camera see nothing.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Distance scanner (spec §3): −1 / −2 readings, ray height, position and rotating modes
+// Distance scanner: −1 / −2 readings, ray height, position and rotating modes
 // with their angles, sorted and de-duplicated arrays, starts OFF, one-tick latency,
 // exact argument counts, the Lua arrays.
 #include <gtest/gtest.h>

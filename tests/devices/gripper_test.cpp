@@ -1,4 +1,4 @@
-// Foot-bot gripper (spec §7.5, §11.2): what it grips, that it holds through turns and
+// Foot-bot gripper: what it grips, that it holds through turns and
 // tows, that the turret carries what it holds, that unlocking lets go. Commands are
 // written straight into RobotState (a controller without script), as Lua would.
 #include <gtest/gtest.h>

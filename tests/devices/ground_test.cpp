@@ -1,4 +1,4 @@
-// Ground sensors (spec §4): base ground binary, motor ground grey, on a 4×2 test image
+// Ground sensors: base ground binary, motor ground grey, on a 4×2 test image
 // with known, asymmetric pixels — bottom-left pixel at the arena's min corner, +X right,
 // +Y up — the offsets rotating with the robot, noise, the Lua layout, init sees 0.
 #include <gtest/gtest.h>

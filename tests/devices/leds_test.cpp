@@ -1,4 +1,4 @@
-// LEDs actuator (spec §7.1): colours by name, "r,g,b,a" and numbers, applied in the next
+// LEDs actuator: colours by name, "r,g,b,a" and numbers, applied in the next
 // Act stage; errors name the bad colour or index; the 13 LED positions.
 #include <gtest/gtest.h>
 

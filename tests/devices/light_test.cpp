@@ -1,4 +1,4 @@
-// Light sensor (spec §7.3): exp(−2d) falloff with the intensity-scaled 3D distance, the
+// Light sensor: exp(−2d) falloff with the intensity-scaled 3D distance, the
 // 13-sensor spread 1 − 2Δ/π, additive lights, clamp, 2.5 cut-off, occlusion by boxes and
 // robots along the rising 3D ray, the Lua layout.
 #include <gtest/gtest.h>

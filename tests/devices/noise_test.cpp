@@ -1,4 +1,4 @@
-// Actuator and sensor noise (spec §1.3, §6, §9): moments over many draws against the
+// Actuator and sensor noise: moments over many draws against the
 // configured distributions, and stream ownership — a robot's noise comes from its own
 // streams only, so other robots, threads and robot.random never shift it.
 #include <gtest/gtest.h>
@@ -98,7 +98,7 @@ TEST(Noise, WheelFactorIsDrawnPerCommandAndMultipliesSpeedPlusBias) {
   RobotState r;
   r.actuator_rng.Seed(11);
   InitWheelNoise(cfg, r);
-  EXPECT_EQ(r.wheel_bias_left, 0) << "absent bias attributes mean no bias (spec §1.3 quirk)";
+  EXPECT_EQ(r.wheel_bias_left, 0) << "absent bias attributes mean no bias (an ARGoS quirk)";
   std::vector<double> left, right;
   for (int i = 0; i < kDraws; ++i) {
     r.cmd.wheel_left = 0.10;  // set_velocity(10, 20)

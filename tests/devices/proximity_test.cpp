@@ -1,4 +1,4 @@
-// Proximity sensor (spec §2): readings at hand-computed distances and angles to a wall
+// Proximity sensor: readings at hand-computed distances and angles to a wall
 // and to another robot, the 0.06 m ray height, noise on every sensor, the Lua layout.
 #include <gtest/gtest.h>
 

@@ -182,7 +182,7 @@ void ExpectBruteForceInboxes(const World& w, const Model& model, int tick, size_
 }
 
 // The media stage's occlusion shortcuts (per-device offsets, nearest-first scan with a
-// distance cut-off, issue 12) must decide exactly what one CircleEntry per (pair, body)
+// distance cut-off) must decide exactly what one CircleEntry per (pair, body)
 // decides: compare every inbox of a dense, moving crowd with that brute force.
 TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
   TempDir d;
@@ -220,7 +220,7 @@ TEST(RabIntegration, CrowdInboxesMatchBruteForceOcclusion) {
 
 // Obstacles among a crowd: rotated boxes and cylinders tall enough to hide senders. The
 // stage skips the exact obstacle test when a pair's segment box misses the obstacle's
-// bounding box (issue 12): the inboxes must equal one CircleEntry/BoxEntry per (pair,
+// bounding box: the inboxes must equal one CircleEntry/BoxEntry per (pair,
 // body or obstacle).
 TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
   TempDir d;
@@ -264,7 +264,7 @@ TEST(RabIntegration, CrowdAmongObstaclesMatchesBruteForceOcclusion) {
 }
 
 // Long ranges across the whole arena, up to its border: each pair's segment visits the
-// cells of the obstacle grid it crosses, row by row (issue 12). Every cell it touches must
+// cells of the obstacle grid it crosses, row by row. Every cell it touches must
 // be visited, at any slope and at the grid's edge rows and columns, for the inboxes to
 // equal one CircleEntry/BoxEntry per (pair, body or obstacle).
 TEST(RabIntegration, LongRangesAcrossScatteredObstaclesMatchBruteForceOcclusion) {
@@ -302,7 +302,7 @@ TEST(RabIntegration, LongRangesAcrossScatteredObstaclesMatchBruteForceOcclusion)
   EXPECT_GT(hidden_by_obstacle, 1000u);
 }
 
-// The media stage routes devices on several threads (issue 12): a dense crowd that steers
+// The media stage routes devices on several threads: a dense crowd that steers
 // by what it hears must get the same inboxes, message by message and tick by tick, with
 // 1, 2 and 3 threads (and so the same poses).
 TEST(RabIntegration, CrowdInboxesDoNotDependOnThreads) {

@@ -1,4 +1,4 @@
-// Range and bearing (spec §5) against hand-computed values: geometry in the receiver's
+// Range and bearing against hand-computed values: geometry in the receiver's
 // frame, the sender's range (strict <), occlusion, one-tick latency, the Lua API, drops,
 // ordering, and the grid routing against a brute-force reference.
 #include <gtest/gtest.h>
@@ -494,7 +494,7 @@ TEST(RangeAndBearing, GridRoutingMatchesAllPairs) {
 
 TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
   // A dense scene with boxes, cylinders (one too low to matter) and robots without the
-  // sensor: the media's occlusion shortcut must agree with a Box2D ray per pair (spec §5.2).
+  // sensor: the media's occlusion shortcut must agree with a Box2D ray per pair.
   TempDir d;
   d.Write("s.lua", kSilent);
   Rng rng(11);

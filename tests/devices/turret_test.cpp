@@ -1,4 +1,4 @@
-// Foot-bot turret and encoder (spec §7.5, §11.2): ARGoS's PD in position mode against
+// Foot-bot turret and encoder: ARGoS's PD in position mode against
 // hand-computed ticks, speed and passive modes, the encoder as Lua reads it.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-"""`essaim bench --floor` (issue 12) runs and prints sane numbers (no timing threshold)."""
+"""`essaim bench --floor` runs and prints sane numbers (no timing threshold)."""
 import os
 import subprocess
 

@@ -7,7 +7,7 @@
 
 #include "output/recording.h"
 #ifdef ESSAIM_HAVE_CAIRO
-#include "app/render_cairo.h"
+#include "render/render_cairo.h"
 #endif
 
 using namespace essaim;

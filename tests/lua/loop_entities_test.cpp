@@ -1,4 +1,4 @@
-// Loop functions' reach (issue 11, docs/loop-functions.md): entities by kind, poses, LEDs,
+// Loop functions' reach (docs/loop-functions.md): entities by kind, poses, LEDs,
 // lights, entities added and removed at run time as every sensor sees them, a
 // controller's Lua globals, <loop_functions> children, the legacy <led position=...>.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The Lua host: the robot table, lifecycle, errors, latency, require, logs (spec §8, §12).
+// The Lua host: the robot table, lifecycle, errors, latency, require, logs.
 #include <gtest/gtest.h>
 
 #include <cmath>

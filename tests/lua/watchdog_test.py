@@ -1,4 +1,4 @@
-"""The Lua watchdog end to end (issue 10's "Done when", issue 15's signals).
+"""The Lua watchdog end to end, with SIGINT and SIGTERM.
 
 * Robots that loop forever, send NaN, send 1e300 and allocate without bound, next to good
   robots, in a 4 GiB address space: the run finishes promptly with exit 0, the looping, NaN

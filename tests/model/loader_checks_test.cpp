@@ -1,4 +1,4 @@
-// The loader refuses what would run wrong in silence (issue 15): attributes nobody reads
+// The loader refuses what would run wrong in silence: attributes nobody reads
 // (from the file or --set), a controller without a script, robots placed where they cannot be.
 #include <gtest/gtest.h>
 

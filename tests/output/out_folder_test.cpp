@@ -1,6 +1,6 @@
 // The run folder's bookkeeping (output/out_folder, output/atomic_file, TimeseriesCsv): which
 // names are essaim's, what is moved aside, what an output may replace. The CLI's behaviour
-// around them is tested in tests/python/test_cli_outputs.py.
+// around them is tested in tests/app/test_cli_outputs.py.
 #include "output/out_folder.h"
 
 #include <gtest/gtest.h>

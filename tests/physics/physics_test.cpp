@@ -1,4 +1,4 @@
-// Foot-bot motion against closed forms (spec §1, §11): v·t, (vr−vl)/axis, walls, pushing.
+// Foot-bot motion against closed forms: v·t, (vr−vl)/axis, walls, pushing.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Rays against a gathered candidate list (PhysicsWorld::GatherRayCandidates + CastRay of
-// candidates, issue 12) answer exactly what a ray through Box2D's tree answers: same hit or
+// candidates) answer exactly what a ray through Box2D's tree answers: same hit or
 // miss, same distance to the last bit, for the proximity and scanner rays of crowded robots
 // among rotated boxes, tiled walls, cylinders and pushed movable boxes.
 #include <gtest/gtest.h>

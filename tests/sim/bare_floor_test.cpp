@@ -1,4 +1,4 @@
-// The bare-Lua floor (issue 12): a controller replayed in a BareController on the readings of
+// The bare-Lua floor: a controller replayed in a BareController on the readings of
 // a real run must compute exactly what it computed in the run (same readings, same
 // robot.random stream), and MeasureBareFloor must time every robot-step.
 #include "sim/bare_floor.h"

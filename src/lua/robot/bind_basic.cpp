@@ -1,5 +1,4 @@
-// Lua tables of the differential-steering wheels, positioning and battery (spec §1.3,
-// §6, §9).
+// Lua tables of the differential-steering wheels, positioning and battery.
 #include <algorithm>
 #include <cmath>
 

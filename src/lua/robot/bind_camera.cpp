@@ -1,4 +1,4 @@
-// robot.colored_blob_omnidirectional_camera (spec §7.2): enable() / disable() (disabled
+// robot.colored_blob_omnidirectional_camera: enable() / disable() (disabled
 // at start) and the blobs [i] = {distance (cm), angle (rad), color = {red, green, blue}}.
 // Blob tables are fresh every step, as in ARGoS; colour components are Lua integers.
 #include "lua/robot/lua_devices.h"

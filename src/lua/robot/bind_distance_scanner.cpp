@@ -1,4 +1,4 @@
-// Lua table of the distance scanner (spec §3.2–3.4): robot.distance_scanner with the
+// Lua table of the distance scanner: robot.distance_scanner with the
 // actuator's enable(), disable(), set_angle(rad), set_rpm(rpm) (exact argument counts,
 // dot-call) and the sensor's short_range / long_range arrays of {angle, distance}.
 //
@@ -99,7 +99,7 @@ void CreateScannerActuator(lua_State* L, int t, RobotState* robot) {
 
 void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {
   t = lua_absindex(L, t);
-  // The scanner starts OFF: both arrays empty until it is switched on (spec §3.2).
+  // The scanner starts OFF: both arrays empty until it is switched on.
   refs->scanner_short = NewArray(L, t, "short_range");
   refs->scanner_long = NewArray(L, t, "long_range");
   refs->scanner_short_pool = NewPool(L);

@@ -1,4 +1,4 @@
-// robot.gripper (spec §7.5): lock_positive() / lock_negative() / unlock() set the
+// robot.gripper: lock_positive() / lock_negative() / unlock() set the
 // aperture (+pi/2, -pi/2, 0) applied in the next Act. Arguments are ignored, as ARGoS.
 #include "lua/robot/lua_devices.h"
 

@@ -1,4 +1,4 @@
-// Lua tables of the ground sensors (spec §4): robot.base_ground[1..8] and
+// Lua tables of the ground sensors: robot.base_ground[1..8] and
 // robot.motor_ground[1..4] = {value, offset}, offset a vector2 in cm set once, value
 // rewritten in place each tick (0 until the first sense, so init() sees 0).
 #include "devices/devices.h"

@@ -1,4 +1,4 @@
-// robot.leds (spec §7.1): set_all_colors(colour) and set_single_color(i, colour), where
+// robot.leds: set_all_colors(colour) and set_single_color(i, colour), where
 // colour is a name ("red"), a string "r,g,b,a" or three numbers r, g, b (alpha 255).
 // A bad colour or index is a Lua error naming it. Colours apply in the next Act stage.
 #include <cstdio>

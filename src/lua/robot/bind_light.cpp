@@ -1,4 +1,4 @@
-// Lua table of the light sensor (spec §7.3): robot.light[1..24] = {value, angle}, the
+// Lua table of the light sensor: robot.light[1..24] = {value, angle}, the
 // proximity ring's layout (lua/robot/bind_proximity.cpp).
 #include "lua/robot/lua_devices.h"
 

@@ -1,5 +1,5 @@
-// Lua tables of the proximity sensor (spec §2) and the ring layout it shares with the
-// light sensor (§7.3): robot.<key>[1..24] = {value, angle}. The 24 inner tables are made
+// Lua tables of the proximity sensor and the ring layout it shares with the
+// light sensor: robot.<key>[1..24] = {value, angle}. The 24 inner tables are made
 // once with their constant angle; each tick only `value` is rewritten in place, so
 // controllers may keep references to them (ARGoS does the same).
 #include "devices/devices.h"

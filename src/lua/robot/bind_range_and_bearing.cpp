@@ -1,4 +1,4 @@
-// robot.range_and_bearing (spec §5.4): set_data / clear_data, and the received messages
+// robot.range_and_bearing: set_data / clear_data, and the received messages
 // robot.range_and_bearing[i] = {range, horizontal_bearing, vertical_bearing, data}.
 // Each message and its data table are fresh every step, as in ARGoS: a controller may
 // keep last step's message and compare it with the new one. Bytes are Lua integers.

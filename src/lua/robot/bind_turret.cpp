@@ -1,4 +1,4 @@
-// robot.turret (spec §7.5): the actuator's set_rotation(rad), set_rotation_speed(x)
+// robot.turret: the actuator's set_rotation(rad), set_rotation_speed(x)
 // (x·pi/30 rad/s), set_position_control_mode(), set_speed_control_mode(),
 // set_passive_mode(); the encoder's rotation (rad, relative to the body). Both devices
 // share the table. Commands apply in the next Act (devices/turret.cpp).

@@ -1,4 +1,4 @@
-// vector2, vector3 and quaternion userdata with ARGoS's Lua semantics (spec §8.2).
+// vector2, vector3 and quaternion userdata with ARGoS's Lua semantics.
 #pragma once
 #include <lua.hpp>
 

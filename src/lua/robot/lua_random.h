@@ -1,4 +1,4 @@
-// robot.random (spec §8.4) bound to one Rng: the table is pushed on the stack.
+// robot.random bound to one Rng: the table is pushed on the stack.
 #pragma once
 #include <lua.hpp>
 

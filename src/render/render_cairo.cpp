@@ -1,4 +1,4 @@
-#include "app/render_cairo.h"
+#include "render/render_cairo.h"
 
 #include <cairo.h>
 
