@@ -86,6 +86,50 @@ TEST(RegionStepping, StaticObstacleAcrossTheBoundaryStopsRobots) {
   EXPECT_EQ(s.world->physics.RobotRegion(0), 1);
 }
 
+const char* kGripController =
+    "<lua_controller id=\"g\"><actuators><differential_steering implementation=\"default\"/>"
+    "<footbot_gripper implementation=\"default\"/></actuators><sensors/><params script=\"" ESSAIM_SOURCE_DIR
+    "/tests/support/idle.lua\"/></lua_controller>";
+
+void Wheels(RobotState& r, double left_cm, double right_cm) {
+  r.cmd.wheel_left = left_cm * 0.01;
+  r.cmd.wheel_right = right_cm * 0.01;
+  r.cmd.wheels_new = true;
+}
+
+// A robot grips a cylinder of the other region (it joins the robot's world at once), tows it
+// across the boundary and back: the group migrates whole and the grip holds.
+TEST(RegionStepping, GripAcrossTheBoundaryHoldsThroughMigrations) {
+  TempDir d;
+  const double held = footbot::kRadius + 0.05 + 0.002;  // centre to centre, cylinder r = 5 cm
+  const std::string arena =
+      FootBot("fb", -0.1, 0, 0, "g") +
+      "<cylinder id=\"c\" radius=\"0.05\" height=\"0.1\" movable=\"true\" mass=\"0.1\"><body position=\"" +
+      std::to_string(-0.1 + held) + ",0,0\"/></cylinder>";
+  Scene s = Load(d, WithEngines(Experiment(arena, kGripController, 1000), kTwoEngines));
+  ASSERT_TRUE(s.ok()) << s.error;
+  World& w = *s.world;
+  auto gap = [&] {
+    const Pose2 r = w.physics.RobotPose(0), c = w.physics.ObstaclePose(0);
+    return std::hypot(c.x - r.x, c.y - r.y);
+  };
+  w.robots[0].cmd.gripper_aperture = kPi / 2;  // lock_positive
+  Step(w);
+  ASSERT_EQ(w.physics.Gripped(0).kind, BodyKind::Obstacle);
+  EXPECT_EQ(w.physics.RobotRegion(0), 0);
+  Wheels(w.robots[0], 10, 10);  // east: the robot crosses x = 0 after ~1 s
+  RunTicks(w, 30);
+  EXPECT_EQ(w.physics.RobotRegion(0), 1);
+  EXPECT_NEAR(w.physics.RobotPose(0).x, 0.2, 0.01);
+  EXPECT_NEAR(gap(), held, 0.005);
+  Wheels(w.robots[0], -10, -10);  // back west, towing the cylinder behind the boundary
+  RunTicks(w, 50);
+  EXPECT_EQ(w.physics.RobotRegion(0), 0);
+  EXPECT_NEAR(w.physics.RobotPose(0).x, -0.3, 0.01);
+  EXPECT_NEAR(gap(), held, 0.005);
+  EXPECT_EQ(w.physics.Gripped(0).kind, BodyKind::Obstacle);
+}
+
 const char* kWander = R"(
 function step()
   if robot.random.uniform() < 0.1 then
