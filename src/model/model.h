@@ -170,8 +170,20 @@ struct ExperimentDef {
   double TickLength() const { return 1.0 / ticks_per_second; }
 };
 
+/// The part of the arena one physics engine owns (ARGoS's <boundaries>): a polygon in the
+/// floor plane, counter-clockwise, between two heights. No vertices: the whole arena.
+struct PhysicsRegionDef {
+  std::string id;
+  std::vector<Vec2> sides;     // m, counter-clockwise; empty: unbounded
+  double bottom = 0, top = 0;  // m; only read when `sides` is not empty
+  bool Bounded() const { return !sides.empty(); }
+};
+
 struct PhysicsDef {
   std::string id = "dyn2d";
+  /// One per engine when several are declared, or the strips of `regions="K"`; empty or
+  /// one: a single Box2D world for the whole arena.
+  std::vector<PhysicsRegionDef> regions;
   int iterations = 10;  // sub-steps per tick
   double box_linear_friction = 1.49, box_angular_friction = 1.49;
   double cylinder_linear_friction = 1.49, cylinder_angular_friction = 1.49;

@@ -16,6 +16,7 @@
 #include "model/distribute.h"
 #include "model/floor_image.h"
 #include "model/limits.h"
+#include "model/physics_regions.h"
 #include "model/placement.h"
 #include "model/xml_overrides.h"
 
@@ -96,6 +97,9 @@ class Loader {
   void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
   void LoadArena(const XMLElement* e);
   void LoadPhysics(const XMLElement* e);
+  void LoadEngine(const XMLElement* c, bool first);
+  void LoadBoundaries(const XMLElement* b, PhysicsRegionDef* region);
+  void FinishPhysicsRegions();
   void LoadMedia(const XMLElement* e);
   void LoadLoopFunctions(const XMLElement* e);
   bool LoadFootBot(const XMLElement* e, RobotDef* r);
@@ -152,6 +156,8 @@ class Loader {
   Rng sim_rng_;
   AttributeLedger ledger_;
   std::vector<std::pair<OverrideTarget, std::string>> set_targets_;  // where each --set landed
+  std::vector<const XMLElement*> engine_elements_;                   // each <dynamics2d>, for errors about its region
+  int strips_ = 1;                                                   // the first engine's regions="K"
   bool legacy_led_warned_ = false;                                   // one warning per file for <led position=...>
 };
 
@@ -159,6 +165,8 @@ class Loader {
 constexpr long long kMaxThreads = 1024;
 constexpr long long kMaxTicksPerSecond = 1000000;
 constexpr long long kMaxIterations = 100000;
+// Regions of one engine split by regions="K": each is a Box2D world of its own.
+constexpr long long kMaxPhysicsRegions = 256;
 constexpr double kMaxLengthTicks = 1e15;
 
 double Loader::Double(const XMLElement* e, const char* name, double def, bool required) {
@@ -287,6 +295,7 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
     if (vis->FirstChildElement()) Warn(vis, "ignored: essaim is headless (see `essaim replay`)");
   }
   if (arena) LoadArena(arena);
+  FinishPhysicsRegions();
   CheckReferences();
   ReportUnknownAttributes(root);
   if (!errors_->Empty()) return nullptr;
@@ -494,30 +503,106 @@ void Loader::LoadPhysics(const XMLElement* e) {
       Error(c, "unsupported physics engine: essaim simulates <dynamics2d> only");
       continue;
     }
-    if (++engines > 1) {
-      Warn(c, "several dynamics2d engines: essaim uses one engine for the whole arena");
-      continue;
-    }
-    PhysicsDef& p = model_->physics;
-    p.id = Str(c, "id", "dyn2d");
-    long long iterations = Int(c, "iterations", 10);
-    if (iterations < 1 || iterations > kMaxIterations)
-      Error(c, "iterations must be between 1 and " + std::to_string(kMaxIterations));
-    else
-      p.iterations = static_cast<int>(iterations);
-    p.gripping_rigidity = Double(c, "gripping_rigidity", p.gripping_rigidity);
-    if (p.gripping_rigidity <= 0) Error(c, "gripping_rigidity must be > 0");
-    CheckChildren(c, {"friction", "spatial_hash", "boundaries"}, "expected friction, spatial_hash, boundaries");
-    if (const XMLElement* f = c->FirstChildElement("friction")) {
-      p.box_linear_friction = Double(f, "box_linear_friction", p.box_linear_friction);
-      p.box_angular_friction = Double(f, "box_angular_friction", p.box_angular_friction);
-      p.cylinder_linear_friction = Double(f, "cylinder_linear_friction", p.cylinder_linear_friction);
-      p.cylinder_angular_friction = Double(f, "cylinder_angular_friction", p.cylinder_angular_friction);
-    }
-    if (const XMLElement* b = c->FirstChildElement("boundaries")) Warn(b, "ignored: one engine covers the whole arena");
-    if (Has(c, "elevation") && Double(c, "elevation", 0) != 0) Warn(c, "elevation ignored");
+    LoadEngine(c, engines++ == 0);
   }
   if (engines == 0) Error(e, "no physics engine: add <dynamics2d id=\"dyn2d\"/>");
+  PhysicsDef& p = model_->physics;
+  if (engines > 1) {
+    std::set<std::string> ids;
+    for (size_t r = 0; r < p.regions.size(); ++r)
+      if (!ids.insert(p.regions[r].id).second)
+        Error(engine_elements_[r], "duplicate engine id '" + p.regions[r].id + "'");
+    for (size_t r = 0; r + 1 < p.regions.size(); ++r)
+      if (!p.regions[r].Bounded())
+        Warn(engine_elements_[r + 1],
+             "never used: engine '" + p.regions[r].id + "' has no <boundaries> and takes every entity before it");
+  }
+}
+
+// One <dynamics2d>: the first sets the parameters every region shares (sub-steps must match
+// for the regions to step in lock step); the others only add their region.
+void Loader::LoadEngine(const XMLElement* c, bool first) {
+  PhysicsDef& p = model_->physics;
+  PhysicsDef own;
+  own.id = Str(c, "id", "dyn2d");
+  long long iterations = Int(c, "iterations", 10);
+  if (iterations < 1 || iterations > kMaxIterations)
+    Error(c, "iterations must be between 1 and " + std::to_string(kMaxIterations));
+  else
+    own.iterations = static_cast<int>(iterations);
+  own.gripping_rigidity = Double(c, "gripping_rigidity", own.gripping_rigidity);
+  if (own.gripping_rigidity <= 0) Error(c, "gripping_rigidity must be > 0");
+  CheckChildren(c, {"friction", "spatial_hash", "boundaries"}, "expected friction, spatial_hash, boundaries");
+  if (const XMLElement* f = c->FirstChildElement("friction")) {
+    own.box_linear_friction = Double(f, "box_linear_friction", own.box_linear_friction);
+    own.box_angular_friction = Double(f, "box_angular_friction", own.box_angular_friction);
+    own.cylinder_linear_friction = Double(f, "cylinder_linear_friction", own.cylinder_linear_friction);
+    own.cylinder_angular_friction = Double(f, "cylinder_angular_friction", own.cylinder_angular_friction);
+  }
+  if (Has(c, "elevation") && Double(c, "elevation", 0) != 0) Warn(c, "elevation ignored");
+  long long strips = Int(c, "regions", 1);
+  if (strips < 1 || strips > kMaxPhysicsRegions)
+    Error(c, "regions must be between 1 and " + std::to_string(kMaxPhysicsRegions));
+  PhysicsRegionDef region;
+  region.id = own.id;
+  if (const XMLElement* b = c->FirstChildElement("boundaries")) LoadBoundaries(b, &region);
+  if (first) {
+    own.regions = {region};
+    p = own;
+    strips_ = static_cast<int>(std::clamp(strips, 1LL, static_cast<long long>(kMaxPhysicsRegions)));
+  } else {
+    if (own.iterations != p.iterations || own.gripping_rigidity != p.gripping_rigidity)
+      Warn(c, "iterations and gripping_rigidity of the first engine apply to every engine");
+    if (strips != 1) Error(c, "regions=\"K\" splits a single engine: not with several engines");
+    p.regions.push_back(region);
+  }
+  engine_elements_.push_back(c);
+}
+
+// <boundaries><top height/><bottom height/><sides><vertex point="x,y"/>...</sides>.
+void Loader::LoadBoundaries(const XMLElement* b, PhysicsRegionDef* region) {
+  CheckChildren(b, {"top", "bottom", "sides"}, "expected top, bottom, sides");
+  const XMLElement* top = b->FirstChildElement("top");
+  const XMLElement* bottom = b->FirstChildElement("bottom");
+  const XMLElement* sides = b->FirstChildElement("sides");
+  if (!top || !bottom || !sides) {
+    Error(b, "<boundaries> needs <top height>, <bottom height> and <sides>");
+    return;
+  }
+  region->top = Double(top, "height", 0, true);
+  region->bottom = Double(bottom, "height", 0, true);
+  CheckChildren(sides, {"vertex"}, "expected vertex");
+  for (const XMLElement* v = sides->FirstChildElement("vertex"); v; v = v->NextSiblingElement("vertex")) {
+    const std::string text = Required(v, "point");
+    auto d = ParseVector(text, 2);
+    if (!d) {
+      if (!text.empty()) Error(v, "attribute 'point': '" + text + "' must be two comma-separated numbers");
+      return;
+    }
+    region->sides.emplace_back((*d)[0], (*d)[1]);
+  }
+  std::string problem = RegionProblem(*region);
+  if (!problem.empty()) Error(sides, problem);
+  if (!problem.empty()) region->sides.clear();
+}
+
+// After the arena: regions="K" becomes strips of it, and every entity must lie in some
+// engine's region (ARGoS refuses an entity no engine takes).
+void Loader::FinishPhysicsRegions() {
+  PhysicsDef& p = model_->physics;
+  if (strips_ > 1) p.regions = ArenaStrips(model_->arena, p.id, strips_);
+  if (p.regions.size() < 2 && !(p.regions.size() == 1 && p.regions[0].Bounded())) {
+    p.regions.clear();
+    return;
+  }
+  auto check = [&](const std::string& kind, const std::string& id, const Pose2& pose) {
+    if (RegionOf(p.regions, {pose.x, pose.y}, -1) >= 0) return;
+    Error(engine_elements_.empty() ? nullptr : engine_elements_.back(),
+          kind + " '" + id + "' at (" + FormatDouble(pose.x) + ", " + FormatDouble(pose.y) +
+              ") lies in no physics engine's <boundaries>");
+  };
+  for (const RobotDef& r : model_->robots) check("foot-bot", r.id, r.pose);
+  for (const ObstacleDef& o : model_->obstacles) check(o.kind == ShapeKind::Box ? "box" : "cylinder", o.id, o.pose);
 }
 
 void Loader::LoadMedia(const XMLElement* e) {

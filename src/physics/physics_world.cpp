@@ -8,32 +8,14 @@
 #include <cmath>
 #include <mutex>
 
-#include "spatial/uniform_grid.h"
+#include "model/physics_regions.h"
+#include "physics/physics_world_impl.h"
 
 namespace essaim {
 
 namespace {
-// Fixture user data: kind in the low 2 bits, index above. Heights live in a side table.
-uintptr_t PackTag(BodyKind kind, int index) {
-  return (static_cast<uintptr_t>(index) << 2) | static_cast<uintptr_t>(kind);
-}
-BodyKind TagKind(uintptr_t tag) { return static_cast<BodyKind>(tag & 3); }
-int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
-
-b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
-
 constexpr double kMaxStaticPiece = 1.0;    // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
-}  // namespace
-
-namespace {
-/// A shape as the ray grid files it: a circle containing it, its vertical extent.
-struct ShapeCircle {
-  double cx = 0, cy = 0, r = 0;  // m
-  double bottom = 0, top = 0;    // m
-  int robot = -1;                // robot index, -1 for obstacles
-  const b2Fixture* fixture = nullptr;
-};
 
 /// m: the ray grid's cells, a side of about three foot-bot diameters. A scanner's disc
 /// (1.51 m) spans 7 × 7 cells, the proximity ring's (0.19 m) one to four; smaller cells
@@ -41,53 +23,29 @@ struct ShapeCircle {
 constexpr double kRayCellSize = 0.5;
 }  // namespace
 
-struct PhysicsWorld::Impl {
-  b2World world{b2Vec2(0, 0)};
-  b2Body* ground = nullptr;
-  std::vector<b2Body*> controls;     // kinematic servo targets, one per robot
-  std::vector<double> obstacle_top;  // m, top of each obstacle
-  std::vector<double> obstacle_bottom;
-  /// One gripper per robot. The grip is a motor joint (robot = body A, held = body B):
-  /// Box2D's form of ARGoS's gripper pivot with capped force; its target offsets turn
-  /// with the turret, so a held object orbits the robot's centre.
-  struct Grip {
-    b2MotorJoint* joint = nullptr;
-    GripTarget target;
-    b2Vec2 offset0{0, 0};  // held body's origin in the robot frame at grip time (m)
-    float angle0 = 0;      // held angle minus robot angle at grip time (rad, unwrapped)
-    double turret = 0;     // turret angle last applied (rad)
-    double turned = 0;     // turret rotation since the grip, unwrapped (rad)
-  };
-  std::vector<Grip> grips;
-  float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
-  PhysicsDef phys;                  // friction of obstacles added later
-
-  /// Ray candidates come from a grid of these circles (EnsureRayGrid), rebuilt at the first
-  /// query after shapes moved: every change to a body's place or to the set of shapes counts
-  /// up `shapes_moved` (never during a parallel stage; queries only read it).
-  std::vector<ShapeCircle> ray_circles;
-  UniformGrid ray_grid;
-  uint64_t shapes_moved = 0;
-  std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
-  std::mutex grid_mutex;
-};
-
 PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
-  b2World& w = impl_->world;
-  // Continuous collision (time of impact) guards against tunnelling at speed; foot-bots move
-  // millimetres per sub-step, so it only costs time (~5% of a 1000-robot step).
-  w.SetContinuousPhysics(false);
-  b2BodyDef gd;
-  impl_->ground = w.CreateBody(&gd);
+  const size_t region_count = std::max<size_t>(1, model.physics.regions.size());
+  if (region_count > 1) impl_->region_defs = model.physics.regions;
+  impl_->regions.resize(region_count);
+  for (Impl::Region& region : impl_->regions) {
+    region.world = std::make_unique<b2World>(b2Vec2(0, 0));
+    // Continuous collision (time of impact) guards against tunnelling at speed; foot-bots
+    // move millimetres per sub-step, so it only costs time (~5% of a 1000-robot step).
+    region.world->SetContinuousPhysics(false);
+    b2BodyDef gd;
+    region.ground = region.world->CreateBody(&gd);
+  }
 
   impl_->phys = model.physics;
   const PhysicsDef& phys = model.physics;
   impl_->grips.resize(model.robots.size());
   impl_->gripping_rigidity = static_cast<float>(phys.gripping_rigidity);
+  if (region_count > 1) impl_->robot_ghosts.assign(model.robots.size(), std::vector<b2Body*>(region_count, nullptr));
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) {
     const RobotDef& r = model.robots[i];
+    b2World& w = *impl_->regions[RegionOf(impl_->region_defs, {r.pose.x, r.pose.y}, 0)].world;
     b2BodyDef bd;
     bd.type = b2_dynamicBody;
     bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
@@ -130,6 +88,10 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
     impl_->controls.push_back(control);
   }
 }
+
+int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }
+
+int PhysicsWorld::RobotRegion(int robot) const { return impl_->RegionOfBody(AsBody(robots_[robot])); }
 
 namespace {
 /// A long static wall's bounding box overlaps most of the tree and makes every ray cast
@@ -204,10 +166,12 @@ int PhysicsWorld::AddObstacle(const ObstacleDef& o) {
   bd.type = o.movable ? b2_dynamicBody : b2_staticBody;
   bd.position.Set(static_cast<float>(o.pose.x), static_cast<float>(o.pose.y));
   bd.angle = static_cast<float>(o.pose.yaw);
-  b2Body* body = impl_->world.CreateBody(&bd);
+  Impl::Region& region = impl_->regions[RegionOf(impl_->region_defs, {o.pose.x, o.pose.y}, 0)];
+  b2Body* body = region.world->CreateBody(&bd);
   AddObstacleFixtures(o, index, body);
-  if (o.movable) MakeMovable(o, impl_->phys, &impl_->world, impl_->ground, body);
+  if (o.movable) MakeMovable(o, impl_->phys, region.world.get(), region.ground, body);
   obstacles_.push_back(body);
+  if (impl_->RegionCount() > 1) impl_->obstacle_ghosts.emplace_back(impl_->RegionCount(), nullptr);
   impl_->obstacle_bottom.push_back(o.z);
   impl_->obstacle_top.push_back(o.z + o.height);
   return index;
@@ -224,7 +188,12 @@ void PhysicsWorld::RemoveObstacle(int index) {
     else if (t.index > index)
       --t.index;
   }
-  impl_->world.DestroyBody(body);  // its fixtures and friction joint too
+  if (impl_->RegionCount() > 1) {
+    for (b2Body* ghost : impl_->obstacle_ghosts[index])
+      if (ghost) ghost->GetWorld()->DestroyBody(ghost);
+    impl_->obstacle_ghosts.erase(impl_->obstacle_ghosts.begin() + index);
+  }
+  body->GetWorld()->DestroyBody(body);  // its fixtures and friction joint too
   obstacles_.erase(obstacles_.begin() + index);
   impl_->obstacle_top.erase(impl_->obstacle_top.begin() + index);
   impl_->obstacle_bottom.erase(impl_->obstacle_bottom.begin() + index);
@@ -260,11 +229,41 @@ void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
   control->SetAngularVelocity(static_cast<float>(w));
 }
 
-void PhysicsWorld::Step(double dt, int substeps) {
-  const float h = static_cast<float>(dt / substeps);
+namespace {
+struct RegionSteps {
+  std::vector<PhysicsWorld::Impl::Region>* regions;
+  float h;
+  int substeps;
+};
+void StepRegion(void* ctx, int region) {
+  const RegionSteps& s = *static_cast<const RegionSteps*>(ctx);
   // 4 velocity and 2 position iterations per sub-step: with ARGoS's 10 sub-steps that is 40
   // solver passes per tick; 8/3 cost 9% more instructions with no change in any test.
-  for (int i = 0; i < substeps; ++i) impl_->world.Step(h, 4, 2);
+  b2World& w = *(*s.regions)[region].world;
+  for (int i = 0; i < s.substeps; ++i) w.Step(s.h, 4, 2);
+}
+}  // namespace
+
+void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
+  const int regions = impl_->RegionCount();
+  if (regions == 1) {
+    RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), substeps};
+    StepRegion(&steps, 0);
+    ++impl_->shapes_moved;
+    return;
+  }
+  SyncRegions(dt);
+  // The regions step one sub-step at a time, the ghosts following their bodies in between:
+  // a ghost moves at its body's velocity of the sub-step's start, never a tick's.
+  // Each region's world is its own: stepping them at once writes nothing they share.
+  RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), 1};
+  for (int i = 0; i < substeps; ++i) {
+    if (i > 0) FollowGhosts();
+    if (runner.run)
+      runner.run(runner.pool, regions, &StepRegion, &steps);
+    else
+      for (int r = 0; r < regions; ++r) StepRegion(&steps, r);
+  }
   ++impl_->shapes_moved;
 }
 
@@ -337,6 +336,7 @@ class ClosestRay : public b2RayCastCallback {
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
     if (!ReachesHeight(kind, index, z_, exclude_, tops_, bottoms_)) return -1;
+    if (fraction > fraction_) return -1;  // a farther hit in a later region's world
     hit.kind = kind;
     hit.index = index;
     hit.point = {point.x, point.y};
@@ -420,7 +420,7 @@ RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exc
   b2Vec2 p1(static_cast<float>(from.x()), static_cast<float>(from.y()));
   b2Vec2 p2(static_cast<float>(to.x()), static_cast<float>(to.y()));
   if (b2DistanceSquared(p1, p2) <= 0) return {};
-  impl_->world.RayCast(&cb, p1, p2);
+  for (Impl::Region& region : impl_->regions) region.world->RayCast(&cb, p1, p2);
   if (cb.hit.Hit()) cb.hit.distance = (to - from).norm() * cb.fraction_;
   return cb.hit;
 }
@@ -466,22 +466,23 @@ template <class Impl>
 void FileRayCircles(Impl* im) {
   std::vector<ShapeCircle>& circles = im->ray_circles;
   circles.clear();
-  for (b2Body* b = im->world.GetBodyList(); b; b = b->GetNext()) {
-    for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
-      const uintptr_t tag = f->GetUserData().pointer;
-      const BodyKind kind = TagKind(tag);
-      if (kind == BodyKind::None) continue;
-      ShapeCircle c;
-      BoundingCircle(*f, &c.cx, &c.cy, &c.r);
-      c.r += kCircleSlack;
-      if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
-      const int index = TagIndex(tag);
-      if (kind == BodyKind::Robot) c.robot = index;
-      HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
-      c.fixture = f;
-      circles.push_back(c);
+  for (auto& region : im->regions)
+    for (b2Body* b = region.world->GetBodyList(); b; b = b->GetNext()) {
+      for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
+        const uintptr_t tag = f->GetUserData().pointer;
+        const BodyKind kind = TagKind(tag);
+        if (kind == BodyKind::None) continue;
+        ShapeCircle c;
+        BoundingCircle(*f, &c.cx, &c.cy, &c.r);
+        c.r += kCircleSlack;
+        if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
+        const int index = TagIndex(tag);
+        if (kind == BodyKind::Robot) c.robot = index;
+        HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
+        c.fixture = f;
+        circles.push_back(c);
+      }
     }
-  }
   const int n = static_cast<int>(circles.size());
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
   if (n > 0) lo = hi = Vec2(circles[0].cx, circles[0].cy);
@@ -685,7 +686,7 @@ void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int
   b2AABB box;
   box.lowerBound.Set(static_cast<float>(center.x() - radius), static_cast<float>(center.y() - radius));
   box.upperBound.Set(static_cast<float>(center.x() + radius), static_cast<float>(center.y() + radius));
-  impl_->world.QueryAABB(&q, box);
+  for (Impl::Region& region : impl_->regions) region.world->QueryAABB(&q, box);
   // The tree's order depends on insertion history, not on indices: sort for determinism.
   std::sort(out->begin(), out->end());
 }
@@ -706,16 +707,18 @@ bool PhysicsWorld::TryGrip(int robot, double turret) {
   b2AABB box;
   box.lowerBound.Set(static_cast<float>(c.x() - kGripperRadius), static_cast<float>(c.y() - kGripperRadius));
   box.upperBound.Set(static_cast<float>(c.x() + kGripperRadius), static_cast<float>(c.y() + kGripperRadius));
-  impl_->world.QueryAABB(&q, box);
+  for (Impl::Region& region : impl_->regions) region.world->QueryAABB(&q, box);
   if (!q.body) return false;
   b2Body* self = AsBody(robots_[robot]);
+  // A joint ties bodies of one world: what is gripped joins the gripper's region now.
+  if (q.body->GetWorld() != self->GetWorld()) q.body = AsBody(MoveGripGroupVoid(q.best, impl_->RegionOfBody(self)));
   b2MotorJointDef jd;
   jd.Initialize(self, q.body);  // target offsets = the current relative pose: hold it where it is
   jd.maxForce = impl_->gripping_rigidity;
   jd.maxTorque = impl_->gripping_rigidity;
   jd.correctionFactor = 0.3f;
   jd.collideConnected = false;  // robot and held object no longer push each other
-  g.joint = static_cast<b2MotorJoint*>(impl_->world.CreateJoint(&jd));
+  g.joint = static_cast<b2MotorJoint*>(self->GetWorld()->CreateJoint(&jd));
   g.target = q.best;
   g.offset0 = jd.linearOffset;
   g.angle0 = jd.angularOffset;
@@ -728,7 +731,7 @@ bool PhysicsWorld::TryGrip(int robot, double turret) {
 void PhysicsWorld::Release(int robot) {
   Impl::Grip& g = impl_->grips[robot];
   if (!g.joint) return;
-  impl_->world.DestroyJoint(g.joint);
+  g.joint->GetBodyA()->GetWorld()->DestroyJoint(g.joint);
   g = Impl::Grip();
 }
 

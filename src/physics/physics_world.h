@@ -51,8 +51,23 @@ struct RayCandidates {
   std::vector<int> bucket_ends;       // the gather's counting sort
 };
 
+/// Runs job(ctx, item) for items 0..n-1, maybe concurrently: how the sim layer lends its
+/// thread pool to the physics (which knows no threads). No `run`: one after another.
+struct PhysicsRunner {
+  using Job = void (*)(void* ctx, int item);
+  void* pool = nullptr;
+  void (*run)(void* pool, int n, Job job, void* ctx) = nullptr;
+};
+
+/// The bodies of an experiment, in one Box2D world, or in one world per region when the
+/// model declares several (each body lives in the region that holds its centre; between
+/// ticks bodies migrate, and each world holds static or kinematic "ghost" copies of the
+/// other regions' bodies near its own, so that contacts across a boundary happen:
+/// docs/physics-regions.md says what that guarantees).
 class PhysicsWorld {
  public:
+  struct Impl;  // defined in physics_world_impl.h, for physics/ only
+
   explicit PhysicsWorld(const Model& model);
   ~PhysicsWorld();
   PhysicsWorld(const PhysicsWorld&) = delete;
@@ -62,8 +77,14 @@ class PhysicsWorld {
   /// per tick). Both zero: the robot brakes, resisting pushes up to its force caps.
   /// Writes only this robot's servo body: calls for distinct robots may run concurrently.
   void SetWheelSpeeds(int robot, double left, double right);
-  /// One tick: `substeps` Box2D steps of dt/substeps.
-  void Step(double dt, int substeps);
+  /// One tick: `substeps` Box2D steps of dt/substeps. Several regions: first the bodies
+  /// migrate and the ghosts follow their owners (one thread, in index order), then the
+  /// regions step at once on `runner`. Results do not depend on the runner.
+  void Step(double dt, int substeps, const PhysicsRunner& runner = PhysicsRunner());
+  /// Box2D worlds: the model's regions, at least one.
+  int RegionCount() const;
+  /// The region whose world holds the robot's body now.
+  int RobotRegion(int robot) const;
 
   int RobotCount() const { return static_cast<int>(robots_.size()); }
   int ObstacleCount() const { return static_cast<int>(obstacles_.size()); }
@@ -125,7 +146,14 @@ class PhysicsWorld {
   /// Moves `out->scratch` (its `near` within [lo, hi]) into `out->items`, nearest first.
   static void SortNearestFirst(double lo, double hi, RayCandidates* out);
 
-  struct Impl;
+  /// Several regions, before a step: each body (with what it grips or is gripped by) moves
+  /// to the region holding its centre, then ghosts are made, moved or dropped.
+  void SyncRegions(double dt);
+  /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
+  void FollowGhosts();
+  /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
+  /// region `region`; returns the target's body there.
+  void* MoveGripGroupVoid(const GripTarget& t, int region);
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*
   std::vector<void*> obstacles_;  // b2Body*

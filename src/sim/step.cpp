@@ -73,11 +73,25 @@ void ActStage(World& w) {
   for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
 }
 
+// The physics regions' steps on the pool, one region at a time per thread (each region's
+// world is its own; results do not depend on who steps it).
+PhysicsRunner PhysicsRegionRunner(World& w) {
+  PhysicsRunner r;
+  r.pool = w.pool.get();
+  r.run = [](void* pool, int n, PhysicsRunner::Job job, void* ctx) {
+    auto each = [&](int begin, int end) {
+      for (int item = begin; item < end; ++item) job(ctx, item);
+    };
+    static_cast<ThreadPool*>(pool)->ParallelForBalanced(n, each);
+  };
+  return r;
+}
+
 // One Box2D step of `iterations` sub-steps, then what follows from the motion (battery
 // discharge, scanner rotation).
 void PhysicsStage(World& w) {
   const Model& m = w.model;
-  w.physics.Step(m.experiment.TickLength(), m.physics.iterations);
+  w.physics.Step(m.experiment.TickLength(), m.physics.iterations, PhysicsRegionRunner(w));
   for (size_t i = 0; i < w.robots.size(); ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
 }
 

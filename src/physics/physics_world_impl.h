@@ -1,0 +1,91 @@
+// PhysicsWorld's insides, shared by its two sources: physics_world.cpp (bodies, queries,
+// gripper) and physics_regions_sync.cpp (several regions: migration and ghosts). Not
+// included anywhere else: Box2D types stay inside physics/.
+#pragma once
+#include <box2d/box2d.h>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "physics/physics_world.h"
+#include "spatial/uniform_grid.h"
+
+namespace essaim {
+
+// Fixture user data: kind in the low 2 bits, index above. Heights live in a side table.
+// A ghost's fixtures carry kind None: queries, rays and grips never see them.
+inline uintptr_t PackTag(BodyKind kind, int index) {
+  return (static_cast<uintptr_t>(index) << 2) | static_cast<uintptr_t>(kind);
+}
+inline BodyKind TagKind(uintptr_t tag) { return static_cast<BodyKind>(tag & 3); }
+inline int TagIndex(uintptr_t tag) { return static_cast<int>(tag >> 2); }
+
+inline b2Body* AsBody(void* p) { return static_cast<b2Body*>(p); }
+
+/// A shape as the ray grid files it: a circle containing it, its vertical extent.
+struct ShapeCircle {
+  double cx = 0, cy = 0, r = 0;  // m
+  double bottom = 0, top = 0;    // m
+  int robot = -1;                // robot index, -1 for obstacles
+  const b2Fixture* fixture = nullptr;
+};
+
+struct PhysicsWorld::Impl {
+  /// One Box2D world per region of the arena (one for the whole arena unless the model
+  /// declares several), each with its own ground for floor friction.
+  struct Region {
+    std::unique_ptr<b2World> world;
+    b2Body* ground = nullptr;
+  };
+  std::vector<Region> regions;
+  std::vector<PhysicsRegionDef> region_defs;  // empty with one region
+  std::vector<b2Body*> controls;              // kinematic servo targets, one per robot
+  std::vector<double> obstacle_top;           // m, top of each obstacle
+  std::vector<double> obstacle_bottom;
+  /// One gripper per robot. The grip is a motor joint (robot = body A, held = body B):
+  /// Box2D's form of ARGoS's gripper pivot with capped force; its target offsets turn
+  /// with the turret, so a held object orbits the robot's centre.
+  struct Grip {
+    b2MotorJoint* joint = nullptr;
+    GripTarget target;
+    b2Vec2 offset0{0, 0};  // held body's origin in the robot frame at grip time (m)
+    float angle0 = 0;      // held angle minus robot angle at grip time (rad, unwrapped)
+    double turret = 0;     // turret angle last applied (rad)
+    double turned = 0;     // turret rotation since the grip, unwrapped (rad)
+  };
+  std::vector<Grip> grips;
+  float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
+  PhysicsDef phys;                  // friction of obstacles added later
+
+  /// Several regions: each body's copies in the other regions' worlds, [index][region]
+  /// (null where none). A ghost is a static (of a static body) or kinematic copy moving at
+  /// the owner's velocity, so that bodies near a boundary meet their neighbours.
+  std::vector<std::vector<b2Body*>> robot_ghosts, obstacle_ghosts;
+  /// This tick's (body, ghost) pairs: the ghosts follow their bodies before each sub-step.
+  std::vector<std::pair<b2Body*, b2Body*>> ghost_pairs;
+  /// The region sync's scratch, sized once (union-find over grips, owner regions, boxes).
+  std::vector<int> parent, owner, current;
+  std::vector<b2AABB> region_boxes;
+
+  /// Ray candidates come from a grid of these circles (EnsureRayGrid), rebuilt at the first
+  /// query after shapes moved: every change to a body's place or to the set of shapes counts
+  /// up `shapes_moved` (never during a parallel stage; queries only read it).
+  std::vector<ShapeCircle> ray_circles;
+  UniformGrid ray_grid;
+  uint64_t shapes_moved = 0;
+  std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
+  std::mutex grid_mutex;
+
+  int RegionCount() const { return static_cast<int>(regions.size()); }
+  /// Index of the region whose world holds `body`.
+  int RegionOfBody(const b2Body* body) const {
+    for (size_t r = 0; r < regions.size(); ++r)
+      if (regions[r].world.get() == body->GetWorld()) return static_cast<int>(r);
+    return 0;
+  }
+};
+
+}  // namespace essaim
