@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/bench_scale.h"
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/signals.h"
@@ -222,6 +223,33 @@ static int Bench(BenchArgs a) {
   return kExitOk;
 }
 
+namespace {
+CLI::App* AddScaleSubcommand(CLI::App& bench, BenchScaleArgs* s) {
+  s->dir = ESSAIM_SOURCE_DIR "/bench";
+  CLI::App* scale = bench.add_subcommand(
+      "scale",
+      "the avoidance scenario at constant density and growing robot counts: set-up seconds, us per "
+      "robot-step by stage, peak KB per robot, real-time factor on 1 and N threads");
+  scale->add_option("--sizes", s->sizes, "robot counts, comma-separated")
+      ->type_name("N,...")
+      ->delimiter(',')
+      ->check(IntegerIn(1, 1000000))
+      ->default_str("1000,10000,100000");
+  scale->add_option("--ticks", s->ticks, "ticks per run")
+      ->type_name("N")
+      ->check(IntegerIn(1, 1000000000))
+      ->capture_default_str();
+  scale->add_option("--threads", s->threads, "thread count of the second real-time factor (default: the hardware's)")
+      ->type_name("N")
+      ->check(IntegerIn(1, 1024));
+  scale->add_option("--dir", s->dir, "the folder holding avoidance_1000.argos")
+      ->type_name("DIR")
+      ->capture_default_str();
+  scale->footer("Example:\n  essaim bench scale --sizes 1000,4000 --ticks 10 --threads 2");
+  return scale;
+}
+}  // namespace
+
 CommandMain AddBenchCommand(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand("bench", "print robot-steps per second on fixed scenarios");
@@ -252,8 +280,15 @@ CommandMain AddBenchCommand(CLI::App& app) {
   sub->add_option("--dir", a->dir, "the folder holding the scenario files")->type_name("DIR")->capture_default_str();
   sub->footer(
       "Example:\n  essaim bench --only avoidance-100,foraging-30 --threads 1,2\n"
-      "  essaim bench --floor --only foraging-30 --ticks 100 --repeat 3");
-  return [a] { return Bench(*a); };
+      "  essaim bench --floor --only foraging-30 --ticks 100 --repeat 3\n"
+      "  essaim bench scale --sizes 1000,4000 --ticks 10 --threads 2");
+  auto s = std::make_shared<BenchScaleArgs>();
+  CLI::App* scale = AddScaleSubcommand(*sub, s.get());
+  return [a, s, scale] {
+    if (!scale->parsed()) return Bench(*a);
+    if (ReportLeftovers(*scale, "essaim bench scale")) return kExitBadInput;
+    return BenchScale(*s);
+  };
 }
 
 }  // namespace essaim

@@ -28,9 +28,18 @@ uint64_t DeriveSeed(uint64_t experiment_seed, StreamKind kind, uint64_t index) {
   return SplitMix64(s);
 }
 
-void Rng::Seed(uint64_t seed) {
-  std::seed_seq seq{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)};
-  mt_.seed(seq);
+void Rng::Start() {
+  mt_ = std::make_unique<std::mt19937>();
+  if (!seeded_) return;
+  std::seed_seq seq{static_cast<uint32_t>(seed_), static_cast<uint32_t>(seed_ >> 32)};
+  mt_->seed(seq);
+}
+
+Rng& Rng::operator=(const Rng& other) {
+  seed_ = other.seed_;
+  seeded_ = other.seeded_;
+  mt_ = other.mt_ ? std::make_unique<std::mt19937>(*other.mt_) : nullptr;
+  return *this;
 }
 
 int64_t Rng::UniformInt(double min, double max) {

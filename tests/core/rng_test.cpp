@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace essaim {
@@ -100,6 +101,27 @@ TEST(Rng, BernoulliFrequency) {
   EXPECT_NEAR(m.mean, 0.3, 0.005);
   Moments half = Sample([&] { return r.Bernoulli() ? 1.0 : 0.0; });
   EXPECT_NEAR(half.mean, 0.5, 0.005);
+}
+
+// The state is made at the first draw: the numbers are an eagerly seeded mt19937's, a
+// reseed restarts the stream, and a copy continues from where the original stood.
+TEST(Rng, LazyStateDrawsWhatAnEagerMt19937Draws) {
+  const uint64_t seed = 0x0123456789abcdefull;
+  std::seed_seq seq{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)};
+  std::mt19937 eager(seq);
+  Rng lazy(seed), unseeded;
+  std::mt19937 default_seeded;  // 5489
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(lazy.NextU32(), eager());
+    EXPECT_EQ(unseeded.NextU32(), default_seeded());
+  }
+  Rng copy = lazy;
+  const Rng fresh_copy = Rng(seed);
+  Rng from_fresh = fresh_copy;
+  EXPECT_EQ(from_fresh.NextU32(), Rng(seed).NextU32());  // a copy before any draw starts at the start
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(copy.NextU32(), lazy.NextU32());
+  lazy.Seed(seed);
+  EXPECT_EQ(lazy.NextU32(), Rng(seed).NextU32());
 }
 
 TEST(Rng, SameSeedSameStreamAndStreamsDiffer) {

@@ -1,0 +1,160 @@
+// `essaim bench scale`: the avoidance scenario grown at constant density (1 000 foot-bots per
+// 32 m × 32 m, 100 boxes and 100 cylinders per 1 000 robots), so that what grows faster than
+// the robot count shows: set-up seconds, µs per robot-step by stage, peak memory per robot,
+// real-time factor on 1 and N threads.
+#include "app/bench_scale.h"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "app/commands.h"
+#include "app/signals.h"
+#include "core/paths.h"
+#include "lua/host/watchdog.h"
+#include "model/xml_loader.h"
+#include "sim/step.h"
+
+namespace essaim {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string Num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+/// --set values that scale bench/avoidance_1000.argos (1 000 robots in 32 m × 32 m, walls
+/// at ±16 m, everything placed in ±15 m) to `robots` at the same density.
+std::vector<std::string> ScaleOverrides(long long robots) {
+  const double s = std::sqrt(robots / 1000.0);
+  const std::string side = Num(32 * s), wall = Num(16 * s), half = Num(15 * s);
+  const std::string obstacles = std::to_string(std::max(1LL, robots / 10));
+  std::vector<std::string> o = {
+      "framework.system.max_entities=" + std::to_string(robots + 2 * std::max(1LL, robots / 10) + 4),
+      "arena.size=" + side + "," + side + ",1",
+      "arena.wall_north.size=" + side + ",0.1,0.5",
+      "arena.wall_south.size=" + side + ",0.1,0.5",
+      "arena.wall_east.size=0.1," + side + ",0.5",
+      "arena.wall_west.size=0.1," + side + ",0.5",
+      "arena.wall_north.body.position=0," + wall + ",0",
+      "arena.wall_south.body.position=0,-" + wall + ",0",
+      "arena.wall_east.body.position=" + wall + ",0,0",
+      "arena.wall_west.body.position=-" + wall + ",0,0",
+  };
+  for (int d = 0; d < 3; ++d) {
+    const std::string at = "arena.distribute[" + std::to_string(d) + "].";
+    o.push_back(at + "position.min=-" + half + ",-" + half + ",0");
+    o.push_back(at + "position.max=" + half + "," + half + ",0");
+    o.push_back(at + "entity.quantity=" + (d == 2 ? std::to_string(robots) : obstacles));
+  }
+  return o;
+}
+
+/// Peak resident set: the kernel's high-water mark (VmHWM), which ResetPeakRss sets back to
+/// the current resident set. KB.
+long long PeakRssKb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atoll(line.c_str() + 6);
+  return -1;
+}
+
+/// Gives freed heap back to the system and restarts the peak there, so that one size's peak
+/// does not carry the last one's. False when the kernel refuses (then peaks only grow).
+bool ResetPeakRss() {
+  malloc_trim(0);
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  clear.flush();
+  return static_cast<bool>(clear);
+}
+
+struct ScaleRun {
+  double setup = 0, wall = 0, simulated = 0;  // s
+  StageTimes times;
+  long long peak_kb = 0;
+  size_t robots = 0;
+  uint64_t ticks = 0;
+};
+
+/// Loads and builds the scaled scenario on `threads` threads (the set-up), then steps it
+/// to its end. False (error printed) on failure.
+bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun* out) {
+  const auto t0 = Clock::now();
+  LoadOptions lo;
+  lo.ticks = a.ticks;
+  lo.threads = threads;
+  lo.overrides = ScaleOverrides(robots);
+  ErrorList errors;
+  auto model = LoadExperimentFile(JoinPath(a.dir, "avoidance_1000.argos"), lo, &errors);
+  if (!model) {
+    std::fputs(errors.Format().c_str(), stderr);
+    return false;
+  }
+  Watchdog watchdog(ExitStuck);  // outlives the world
+  SimOptions opt;
+  opt.lua.watchdog = &watchdog;
+  std::string error;
+  auto world = World::Create(*model, opt, &error);
+  if (!world || !world->failure.empty()) {
+    std::fprintf(stderr, "%s\n", world ? world->failure.c_str() : error.c_str());
+    return false;
+  }
+  out->setup = Since(t0);
+  const auto t1 = Clock::now();
+  while (Step(*world) == StepStatus::Running) {
+  }
+  out->wall = Since(t1);
+  out->times = world->times;
+  out->robots = model->robots.size();
+  out->ticks = world->tick;
+  out->simulated = world->tick * model->experiment.TickLength();
+  out->peak_kb = PeakRssKb();
+  return true;
+}
+
+void PrintHeader(int threads) {
+  std::printf("%8s %8s %9s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "us/r-step", "phys", "sense", "ctrl", "other",
+              "peakKB/r", "rtf-1");
+  if (threads > 1) std::printf(" %8s", ("rtf-" + std::to_string(threads)).c_str());
+  std::printf("\n");
+}
+
+void PrintRow(const ScaleRun& one, const ScaleRun* many) {
+  const double per = 1e6 / std::max(1.0, static_cast<double>(one.robots) * one.ticks);
+  const StageTimes& t = one.times;
+  const double other = one.wall - t.physics - t.sense - t.control;
+  std::printf("%8zu %8.2f %9.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.wall * per,
+              t.physics * per, t.sense * per, t.control * per, other * per,
+              static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots), one.simulated / one.wall);
+  if (many) std::printf(" %8.2f", many->simulated / many->wall);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+}  // namespace
+
+int BenchScale(const BenchScaleArgs& a) {
+  const int threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  PrintHeader(threads);
+  for (long long robots : a.sizes) {
+    if (!ResetPeakRss()) std::fputs("bench scale: cannot reset the peak resident set; peaks only grow\n", stderr);
+    ScaleRun one, many;
+    if (!RunScaled(a, robots, 1, &one)) return kExitBadInput;
+    if (threads > 1 && !RunScaled(a, robots, threads, &many)) return kExitBadInput;
+    PrintRow(one, threads > 1 ? &many : nullptr);
+  }
+  return kExitOk;
+}
+
+}  // namespace essaim
