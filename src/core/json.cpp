@@ -18,6 +18,8 @@ Json ToJson(const Value& value) {
       return Json(value.boolean);
     case Value::Kind::Integer:
       return Json(value.integer);
+    case Value::Kind::Unsigned:
+      return Json(value.big_unsigned);
     case Value::Kind::Number:
       return Json(value.number);
     case Value::Kind::String:
@@ -38,6 +40,35 @@ Json ToJson(const Value& value) {
 
 std::string ValueJsonText(const Value& value) { return DumpJson(ToJson(value)); }
 
+std::string ValueJsonLine(const Value& value) { return DumpJsonLine(ToJson(value)); }
+
+namespace {
+Value NumberValue(const Json& doc) {
+  if (doc.is_number_unsigned()) return Value::OfUnsigned(doc.get<uint64_t>());
+  if (doc.is_number_integer()) return Value::OfInteger(doc.get<int64_t>());
+  return Value::OfNumber(doc.get<double>());
+}
+
+Value FromJson(const Json& doc) {
+  if (doc.is_boolean()) return Value::OfBool(doc.get<bool>());
+  if (doc.is_number()) return NumberValue(doc);
+  if (doc.is_string()) return Value::OfString(doc.get<std::string>());
+  if (doc.is_array()) {
+    Value out = Value::EmptyList();
+    out.list.reserve(doc.size());
+    for (const Json& item : doc) out.list.push_back(FromJson(item));
+    return out;
+  }
+  if (doc.is_object()) {
+    Value out = Value::EmptyMap();
+    out.map.reserve(doc.size());
+    for (const auto& [key, item] : doc.items()) out.map.emplace_back(key, FromJson(item));  // keys already unique
+    return out;
+  }
+  return Value();
+}
+}  // namespace
+
 bool ParseJson(const std::string& text, Json* out, std::string* error) {
   try {
     *out = Json::parse(text);
@@ -49,6 +80,13 @@ bool ParseJson(const std::string& text, Json* out, std::string* error) {
     *error = "invalid JSON " + (at == std::string::npos ? what : what.substr(at));
     return false;
   }
+}
+
+bool ParseJsonValue(const std::string& text, Value* out, std::string* error) {
+  Json doc;
+  if (!ParseJson(text, &doc, error)) return false;
+  *out = FromJson(doc);
+  return true;
 }
 
 }  // namespace essaim
