@@ -26,12 +26,16 @@ Json ToJson(const Value& value) {
       return Json(value.text);
     case Value::Kind::List: {
       Json out = Json::array();
-      for (const Value& item : value.list) out.push_back(ToJson(item));
+      auto& items = out.get_ref<Json::array_t&>();
+      items.reserve(value.list.size());
+      for (const Value& item : value.list) items.push_back(ToJson(item));
       return out;
     }
     case Value::Kind::Map: {
       Json out = Json::object();
-      for (const auto& [key, item] : value.map) out[key] = ToJson(item);
+      auto& entries = out.get_ref<Json::object_t&>();  // a vector of pairs, in order
+      entries.reserve(value.map.size());
+      for (const auto& [key, item] : value.map) entries.emplace_back(key, ToJson(item));  // keys unique: no lookup
       return out;
     }
   }
