@@ -53,6 +53,7 @@ int Serve(ServeArgs& a) {
   Watchdog watchdog(ExitStuck);
   SignalCatcher signals(&watchdog);  // a controller stuck in a long step lets go
   a.serve.watchdog = &watchdog;
+  a.serve.report = [](const std::string& line) { std::fprintf(stderr, "essaim serve: %s\n", line.c_str()); };
   LiveServer server(a.serve);
   if (!server.Start(&error)) {
     std::fprintf(stderr, "essaim serve: %s\n", error.c_str());

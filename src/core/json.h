@@ -1,11 +1,12 @@
 // JSON through nlohmann/json: the one adapter for it. Documents are ordered_json (objects
 // keep insertion order); numbers are written shortest round-trip; NaN and infinities, which
-// JSON cannot hold, are written as null.
+// JSON cannot hold, are written as null. Included only in core: the layers above use
+// core/value_json.h, which never names the library.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/value.h"
+#include "core/value_json.h"
 
 namespace essaim {
 

@@ -2,71 +2,97 @@
 
 #include <cmath>
 
-#include "core/json.h"
 #include "core/paths.h"
 #include "core/strings.h"
+#include "core/value_json.h"
 #include "output/atomic_file.h"
 
 namespace essaim {
 
 namespace {
+Value Text(std::string s) { return Value::OfString(std::move(s)); }
+
 // The run's identity and the files it read (docs/cli.md: summary.json).
-void AddInputs(Json& s, const std::string& version, const Model& m, const InputFiles& inputs) {
-  s["run_identity"] = inputs.Identity(version, m.overrides, m.experiment.length_ticks, m.experiment.seed);
-  s["inputs"] = Json::array();
+void AddInputs(Value& s, const std::string& version, const Model& m, const InputFiles& inputs) {
+  s.Set("run_identity", Text(inputs.Identity(version, m.overrides, m.experiment.length_ticks, m.experiment.seed)));
+  Value list = Value::EmptyList();
   for (const InputFile& f : inputs.List())
-    s["inputs"].push_back(Json::object({{"path", f.path}, {"role", f.role}, {"hash", f.hash}}));
+    list.list.push_back(Value::MapOf({{"path", Text(f.path)}, {"role", Text(f.role)}, {"hash", Text(f.hash)}}));
+  s.Set("inputs", std::move(list));
 }
 
-Json BuildSummary(const World& w, const RunInfo& info) {
-  const Model& m = w.model;
-  Json s = Json::object();
-  s["essaim_version"] = info.version;
-  s["experiment"] = m.file;
-  s["experiment_hash"] = "fnv1a64:" + m.file_hash;
-  if (w.inputs) AddInputs(s, info.version, m, *w.inputs);
-  s["overrides"] = Json::array();
-  for (const std::string& o : m.overrides) s["overrides"].push_back(o);
-  s["seed"] = static_cast<uint64_t>(m.experiment.seed);
-  s["ticks"] = static_cast<uint64_t>(w.tick);
-  s["ticks_per_second"] = m.experiment.ticks_per_second;
-  s["robots"] = w.robots.size();
-  int alive = 0;
-  for (const RobotState& r : w.robots) alive += r.alive;
-  s["robots_alive"] = alive;
-  s["threads"] = w.threads;
-  std::string status = info.status;
-  if (!info.output_errors.empty() && (status == "ok" || status == "controller_error")) status = "failed";
-  s["status"] = status;
-  s["finished_by"] = info.finished_by;
+Value StageSeconds(const StageTimes& t) {
+  return Value::MapOf({{"act", Value::OfNumber(t.act)},
+                       {"physics", Value::OfNumber(t.physics)},
+                       {"media", Value::OfNumber(t.media)},
+                       {"loop_functions", Value::OfNumber(t.loop_functions)},
+                       {"sense", Value::OfNumber(t.sense)},
+                       {"control", Value::OfNumber(t.control)}});
+}
+
+Value ControllerErrors(const std::vector<ControllerError>& errors) {
+  Value list = Value::EmptyList();
+  for (const ControllerError& e : errors)
+    list.list.push_back(
+        Value::MapOf({{"robot", Text(e.robot)}, {"tick", Value::OfUnsigned(e.tick)}, {"message", Text(e.message)}}));
+  return list;
+}
+
+Value UnreadParams(const std::vector<UnreadParam>& unread) {
+  Value list = Value::EmptyList();
+  for (const UnreadParam& u : unread) {
+    Value one = Value::MapOf({{"path", Text(u.path)}});
+    if (!u.did_you_mean.empty()) one.Set("did_you_mean", Text(u.did_you_mean));
+    list.list.push_back(std::move(one));
+  }
+  return list;
+}
+
+// How long the run took: in all, per robot-step, per stage.
+void AddTimes(Value& s, const World& w, const RunInfo& info) {
   double steps = static_cast<double>(w.tick) * static_cast<double>(w.robots.size());
-  s["wall_seconds"] = info.wall_seconds;
-  s["robot_steps_per_second"] = info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0;
-  s["us_per_robot_step"] = steps > 0 ? info.wall_seconds * 1e6 / steps : 0.0;
-  s["stage_seconds"] = Json::object({{"act", w.times.act},
-                                     {"physics", w.times.physics},
-                                     {"media", w.times.media},
-                                     {"loop_functions", w.times.loop_functions},
-                                     {"sense", w.times.sense},
-                                     {"control", w.times.control}});
-  size_t peak = 0;
-  for (const auto& c : w.controllers) peak += c->Memory().peak;
-  s["lua_memory_bytes"] = peak;
-  s["controller_errors"] = Json::array();
-  for (const ControllerError& e : w.controller_errors)
-    s["controller_errors"].push_back(
-        Json::object({{"robot", e.robot}, {"tick", static_cast<uint64_t>(e.tick)}, {"message", e.message}}));
+  s.Set("wall_seconds", Value::OfNumber(info.wall_seconds));
+  s.Set("robot_steps_per_second", Value::OfNumber(info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0));
+  s.Set("us_per_robot_step", Value::OfNumber(steps > 0 ? info.wall_seconds * 1e6 / steps : 0.0));
+  s.Set("stage_seconds", StageSeconds(w.times));
+}
+
+std::string Failure(const World& w, const RunInfo& info) {
+  if (!info.failure.empty()) return info.failure;
   std::string failure = w.failure;
   for (const std::string& e : info.output_errors) failure += (failure.empty() ? "" : "; ") + e;
-  if (!info.failure.empty()) failure = info.failure;
-  if (!failure.empty()) s["failure"] = failure;
-  s["unread_params"] = Json::array();
-  for (const UnreadParam& u : w.unread_params) {
-    Json one = Json::object({{"path", u.path}});
-    if (!u.did_you_mean.empty()) one["did_you_mean"] = u.did_you_mean;
-    s["unread_params"].push_back(one);
-  }
-  s["outputs"] = info.outputs;
+  return failure;
+}
+
+Value BuildSummary(const World& w, const RunInfo& info) {
+  const Model& m = w.model;
+  Value s = Value::EmptyMap();
+  s.Set("essaim_version", Text(info.version));
+  s.Set("experiment", Text(m.file));
+  s.Set("experiment_hash", Text("fnv1a64:" + m.file_hash));
+  if (w.inputs) AddInputs(s, info.version, m, *w.inputs);
+  s.Set("overrides", Value::OfStrings(m.overrides));
+  s.Set("seed", Value::OfUnsigned(m.experiment.seed));
+  s.Set("ticks", Value::OfUnsigned(w.tick));
+  s.Set("ticks_per_second", Value::OfInteger(m.experiment.ticks_per_second));
+  s.Set("robots", Value::OfUnsigned(w.robots.size()));
+  int alive = 0;
+  for (const RobotState& r : w.robots) alive += r.alive;
+  s.Set("robots_alive", Value::OfInteger(alive));
+  s.Set("threads", Value::OfInteger(w.threads));
+  std::string status = info.status;
+  if (!info.output_errors.empty() && (status == "ok" || status == "controller_error")) status = "failed";
+  s.Set("status", Text(status));
+  s.Set("finished_by", Text(info.finished_by));
+  AddTimes(s, w, info);
+  size_t peak = 0;
+  for (const auto& c : w.controllers) peak += c->Memory().peak;
+  s.Set("lua_memory_bytes", Value::OfUnsigned(peak));
+  s.Set("controller_errors", ControllerErrors(w.controller_errors));
+  std::string failure = Failure(w, info);
+  if (!failure.empty()) s.Set("failure", Text(failure));
+  s.Set("unread_params", UnreadParams(w.unread_params));
+  s.Set("outputs", Value::OfStrings(info.outputs));
   return s;
 }
 
@@ -84,7 +110,9 @@ std::string CsvNumber(double v) {
 }
 }  // namespace
 
-std::string SummaryJsonText(const World& world, const RunInfo& info) { return DumpJson(BuildSummary(world, info)); }
+std::string SummaryJsonText(const World& world, const RunInfo& info) {
+  return ValueJsonText(BuildSummary(world, info));
+}
 
 std::string TimeseriesCsv(const Timeseries& series) {
   std::string out;
@@ -100,25 +128,25 @@ std::string TimeseriesCsv(const Timeseries& series) {
 bool WriteFailureSummary(const std::string& dir, const std::string& version, const std::string& experiment,
                          const std::vector<std::string>& overrides, const Model* model, const InputFiles* inputs,
                          const std::string& message, std::string* error) {
-  Json s = Json::object();
-  s["essaim_version"] = version;
-  s["experiment"] = model ? model->file : experiment;
-  if (model) s["experiment_hash"] = "fnv1a64:" + model->file_hash;
+  Value s = Value::EmptyMap();
+  s.Set("essaim_version", Text(version));
+  s.Set("experiment", Text(model ? model->file : experiment));
+  if (model) s.Set("experiment_hash", Text("fnv1a64:" + model->file_hash));
   if (model && inputs) AddInputs(s, version, *model, *inputs);
-  s["overrides"] = overrides;
+  s.Set("overrides", Value::OfStrings(overrides));
   if (model) {
-    s["seed"] = static_cast<uint64_t>(model->experiment.seed);
-    s["ticks_per_second"] = model->experiment.ticks_per_second;
-    s["robots"] = model->robots.size();
+    s.Set("seed", Value::OfUnsigned(model->experiment.seed));
+    s.Set("ticks_per_second", Value::OfInteger(model->experiment.ticks_per_second));
+    s.Set("robots", Value::OfUnsigned(model->robots.size()));
   }
-  s["ticks"] = 0;
-  s["status"] = "failed";
-  s["finished_by"] = "error";
-  s["controller_errors"] = Json::array();
-  s["failure"] = message;
-  s["outputs"] = Json::array({"summary.json"});
+  s.Set("ticks", Value::OfInteger(0));
+  s.Set("status", Text("failed"));
+  s.Set("finished_by", Text("error"));
+  s.Set("controller_errors", Value::EmptyList());
+  s.Set("failure", Text(message));
+  s.Set("outputs", Value::OfStrings({"summary.json"}));
   if (!MakeDirs(dir, error)) return false;
-  return WriteFileAtomic(JoinPath(dir, "summary.json"), DumpJson(s), error);
+  return WriteFileAtomic(JoinPath(dir, "summary.json"), ValueJsonText(s), error);
 }
 
 bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const Value* metrics, std::string* error) {
@@ -131,7 +159,7 @@ bool WriteRunOutputs(const std::string& dir, const World& w, RunInfo info, const
       failed.push_back(err);
   };
   if (!MakeDirs(dir, error)) return false;
-  if (metrics) write("metrics.json", DumpJson(ToJson(*metrics)));
+  if (metrics) write("metrics.json", ValueJsonText(*metrics));
   const Timeseries& ts = w.loop_functions.Series();
   if (!ts.columns.empty()) write("timeseries.csv", TimeseriesCsv(ts));
   info.output_errors.insert(info.output_errors.end(), failed.begin(), failed.end());

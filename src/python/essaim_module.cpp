@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/paths.h"
+#include "core/value_json.h"
 #include "lua/host/watchdog.h"
 #include "lua/loop/lua_copy.h"
 #include "model/xml_loader.h"

@@ -1,25 +1,31 @@
 #include "serve/control.h"
 
-#include "core/json.h"
 #include "core/strings.h"
+#include "core/value_json.h"
 
 namespace essaim {
 
 namespace {
-bool Ticks(const Json& doc, ControlCommand* out, std::string* error) {
-  if (!doc.contains("ticks")) return true;
-  const Json& t = doc["ticks"];
-  if (!t.is_number_integer() || t.get<long long>() < 1 || t.get<long long>() > 1000000000LL) {
+bool Ticks(const Value& doc, ControlCommand* out, std::string* error) {
+  const Value* t = doc.Find("ticks");
+  if (!t) return true;
+  if (t->kind != Value::Kind::Integer || t->integer < 1 || t->integer > 1000000000LL) {
     *error = "\"ticks\" must be an integer from 1 to 1000000000";
     return false;
   }
-  out->ticks = t.get<uint64_t>();
+  out->ticks = static_cast<uint64_t>(t->integer);
   return true;
 }
 
-bool Speed(const Json& doc, ControlCommand* out, std::string* error) {
-  const Json* v = doc.contains("value") ? &doc["value"] : nullptr;
-  double x = v && v->is_number() ? v->get<double>() : -1;
+double NumberOr(const Value* v, double otherwise) {
+  if (v && v->kind == Value::Kind::Integer) return static_cast<double>(v->integer);
+  if (v && v->kind == Value::Kind::Unsigned) return static_cast<double>(v->big_unsigned);
+  if (v && v->kind == Value::Kind::Number) return v->number;
+  return otherwise;
+}
+
+bool Speed(const Value& doc, ControlCommand* out, std::string* error) {
+  double x = NumberOr(doc.Find("value"), -1);
   if (!(x == 0 || (x >= 0.01 && x <= 10000))) {
     *error = "\"value\" must be a number: 0 (as fast as it goes) or 0.01 to 10000 (times real time)";
     return false;
@@ -28,34 +34,34 @@ bool Speed(const Json& doc, ControlCommand* out, std::string* error) {
   return true;
 }
 
-bool Reset(const Json& doc, ControlCommand* out, std::string* error) {
-  if (doc.contains("seed")) {
-    const Json& s = doc["seed"];
-    if (!s.is_number_integer() || s.get<long long>() < 0) {
+bool Reset(const Value& doc, ControlCommand* out, std::string* error) {
+  if (const Value* s = doc.Find("seed")) {
+    if (s->kind != Value::Kind::Integer || s->integer < 0) {
       *error = "\"seed\" must be an integer >= 0";
       return false;
     }
-    out->seed = s.get<uint64_t>();
+    out->seed = static_cast<uint64_t>(s->integer);
   }
-  if (doc.contains("new_seed")) {
-    if (!doc["new_seed"].is_boolean()) {
+  if (const Value* n = doc.Find("new_seed")) {
+    if (n->kind != Value::Kind::Bool) {
       *error = "\"new_seed\" must be true or false";
       return false;
     }
-    out->new_seed = doc["new_seed"].get<bool>();
+    out->new_seed = n->boolean;
   }
   return true;
 }
 }  // namespace
 
 bool ParseControl(const std::string& body, ControlCommand* out, std::string* error) {
-  Json doc;
-  if (!ParseJson(body, &doc, error)) return false;
-  if (!doc.is_object() || !doc.contains("cmd") || !doc["cmd"].is_string()) {
+  Value doc;
+  if (!ParseJsonValue(body, &doc, error)) return false;
+  const Value* cmd_value = doc.Find("cmd");
+  if (!cmd_value || cmd_value->kind != Value::Kind::String) {
     *error = "the body must be a JSON object with \"cmd\": play, pause, step, run, speed or reset";
     return false;
   }
-  const std::string cmd = doc["cmd"].get<std::string>();
+  const std::string cmd = cmd_value->text;
   *out = ControlCommand{};
   if (cmd == "play")
     out->kind = ControlKind::Play;

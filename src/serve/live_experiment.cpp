@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/error_list.h"
-#include "core/json.h"
 #include "core/strings.h"
+#include "core/value_json.h"
 #include "lua/loop/lua_inspect.h"
 #include "output/recording.h"
 #include "serve/experiment_inputs.h"
@@ -21,95 +21,120 @@ double Round(double v, int digits) {
 // Physics keeps the turns a body made; a page wants the heading, in (-pi, pi].
 double Heading(double yaw) { return std::isfinite(yaw) ? std::remainder(yaw, 2 * M_PI) : 0.0; }
 
-Json Rgb(const Color& c) { return Json::array({c.r, c.g, c.b}); }
+Value Integer(int64_t i) { return Value::OfInteger(i); }
+Value Number(double d) { return Value::OfNumber(d); }
+Value Text(std::string s) { return Value::OfString(std::move(s)); }
 
-Json LedOrNull(const Color& c) { return c.IsBlack() ? Json() : Rgb(c); }
+Value Rgb(const Color& c) {
+  Value v = Value::EmptyList();
+  v.list = {Integer(c.r), Integer(c.g), Integer(c.b)};
+  return v;
+}
 
-Json RobotJson(const World& w, size_t i) {
+Value LedOrNull(const Color& c) { return c.IsBlack() ? Value() : Rgb(c); }
+
+Value RobotValue(const World& w, size_t i) {
   const RobotState& r = w.robots[i];
   Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
-  Json j = Json::object();
-  j["id"] = w.model.robots[i].id;
-  j["x"] = Round(pose.x, 4);
-  j["y"] = Round(pose.y, 4);
-  j["yaw"] = Round(Heading(pose.yaw), 4);
-  j["led"] = LedOrNull(RepresentativeColor(r.leds, footbot::kLedCount));
-  j["alive"] = r.alive;
-  j["ok"] = r.controller_ok;
+  Value j = Value::EmptyMap();
+  j.Set("id", Text(w.model.robots[i].id));
+  j.Set("x", Number(Round(pose.x, 4)));
+  j.Set("y", Number(Round(pose.y, 4)));
+  j.Set("yaw", Number(Round(Heading(pose.yaw), 4)));
+  j.Set("led", LedOrNull(RepresentativeColor(r.leds, footbot::kLedCount)));
+  j.Set("alive", Value::OfBool(r.alive));
+  j.Set("ok", Value::OfBool(r.controller_ok));
   return j;
 }
-}  // namespace
 
-namespace {
-Json FrameJson(const World& w, const FrameInfo& info) {
-  Json f = Json::object();
-  f["tick"] = w.tick;
-  f["run"] = info.run;
-  f["paused"] = info.paused;
-  f["speed"] = info.speed;
-  f["error"] = info.error;
-  Json robots = Json::array();
-  for (size_t i = 0; i < w.robots.size(); ++i) robots.push_back(RobotJson(w, i));
-  f["robots"] = std::move(robots);
-  Json movable = Json::array();
+Value MovableValue(const World& w) {
+  Value movable = Value::EmptyList();
   for (size_t k = 0; k < w.model.obstacles.size(); ++k) {
     const ObstacleDef& o = w.model.obstacles[k];
     if (!o.movable) continue;
     Pose2 p = w.physics.ObstaclePose(static_cast<int>(k));
-    movable.push_back(
-        Json::array({k, Round(p.x, 4), Round(p.y, 4), Round(Heading(p.yaw), 4), LedOrNull(ObstacleLed(o))}));
+    Value one = Value::EmptyList();
+    one.list = {Value::OfUnsigned(k), Number(Round(p.x, 4)), Number(Round(p.y, 4)), Number(Round(Heading(p.yaw), 4)),
+                LedOrNull(ObstacleLed(o))};
+    movable.list.push_back(std::move(one));
   }
-  f["movable"] = std::move(movable);
-  f["obstacles"] = w.model.obstacles.size();
-  f["series_rows"] = info.series_rows;
-  f["log_lines"] = info.log_lines;
+  return movable;
+}
+
+Value FrameValue(const World& w, const FrameInfo& info) {
+  Value f = Value::EmptyMap();
+  f.Set("tick", Value::OfUnsigned(w.tick));
+  f.Set("run", Value::OfUnsigned(info.run));
+  f.Set("paused", Value::OfBool(info.paused));
+  f.Set("speed", Number(info.speed));
+  f.Set("error", Text(info.error));
+  Value robots = Value::EmptyList();
+  robots.list.reserve(w.robots.size());
+  for (size_t i = 0; i < w.robots.size(); ++i) robots.list.push_back(RobotValue(w, i));
+  f.Set("robots", std::move(robots));
+  f.Set("movable", MovableValue(w));
+  f.Set("obstacles", Value::OfUnsigned(w.model.obstacles.size()));
+  f.Set("series_rows", Value::OfUnsigned(info.series_rows));
+  f.Set("log_lines", Value::OfUnsigned(info.log_lines));
   return f;
 }
 
-Json SceneJson(const World& w) {
+Value ObstacleValue(const RecordedObstacle& o) {
+  Value v = Value::EmptyMap();
+  v.Set("id", Text(o.id));
+  v.Set("cylinder", Value::OfBool(o.cylinder));
+  v.Set("movable", Value::OfBool(o.movable));
+  v.Set("x", Number(o.pose.x));
+  v.Set("y", Number(o.pose.y));
+  v.Set("yaw", Number(o.pose.yaw));
+  v.Set("sx", Number(o.size_x));
+  v.Set("sy", Number(o.size_y));
+  v.Set("r", Number(o.radius));
+  v.Set("led", LedOrNull(o.led));
+  return v;
+}
+
+Value LightValue(const RecordedLight& l) {
+  Value v = Value::EmptyMap();
+  v.Set("id", Text(l.id));
+  v.Set("x", Number(l.position.x()));
+  v.Set("y", Number(l.position.y()));
+  v.Set("r", Integer(l.color.r));
+  v.Set("g", Integer(l.color.g));
+  v.Set("b", Integer(l.color.b));
+  v.Set("intensity", Number(l.intensity));
+  return v;
+}
+
+Value SceneValue(const World& w) {
   RecordingScene s = SceneOf(w, 1);
-  Json j = Json::object();
-  j["experiment"] = s.experiment;
-  j["seed"] = s.seed;
-  j["tps"] = s.ticks_per_second;
-  j["length"] = s.length_ticks;
-  j["minX"] = s.arena_min.x();
-  j["minY"] = s.arena_min.y();
-  j["sizeX"] = s.arena_size.x();
-  j["sizeY"] = s.arena_size.y();
-  j["radius"] = s.robot_radius;
-  j["ids"] = s.robot_ids;
-  Json obstacles = Json::array();
-  for (const RecordedObstacle& o : s.obstacles)
-    obstacles.push_back({{"id", o.id},
-                         {"cylinder", o.cylinder},
-                         {"movable", o.movable},
-                         {"x", o.pose.x},
-                         {"y", o.pose.y},
-                         {"yaw", o.pose.yaw},
-                         {"sx", o.size_x},
-                         {"sy", o.size_y},
-                         {"r", o.radius},
-                         {"led", LedOrNull(o.led)}});
-  j["obstacles"] = std::move(obstacles);
-  Json lights = Json::array();
-  for (const RecordedLight& l : s.lights)
-    lights.push_back({{"id", l.id},
-                      {"x", l.position.x()},
-                      {"y", l.position.y()},
-                      {"r", l.color.r},
-                      {"g", l.color.g},
-                      {"b", l.color.b},
-                      {"intensity", l.intensity}});
-  j["lights"] = std::move(lights);
-  j["floor"] = s.floor_png.empty() ? std::string() : Base64Encode(s.floor_png);
+  Value j = Value::EmptyMap();
+  j.Set("experiment", Text(s.experiment));
+  j.Set("seed", Value::OfUnsigned(s.seed));
+  j.Set("tps", Integer(s.ticks_per_second));
+  j.Set("length", Integer(s.length_ticks));
+  j.Set("minX", Number(s.arena_min.x()));
+  j.Set("minY", Number(s.arena_min.y()));
+  j.Set("sizeX", Number(s.arena_size.x()));
+  j.Set("sizeY", Number(s.arena_size.y()));
+  j.Set("radius", Number(s.robot_radius));
+  Value ids = Value::EmptyList();
+  for (const std::string& id : s.robot_ids) ids.list.push_back(Text(id));
+  j.Set("ids", std::move(ids));
+  Value obstacles = Value::EmptyList();
+  for (const RecordedObstacle& o : s.obstacles) obstacles.list.push_back(ObstacleValue(o));
+  j.Set("obstacles", std::move(obstacles));
+  Value lights = Value::EmptyList();
+  for (const RecordedLight& l : s.lights) lights.list.push_back(LightValue(l));
+  j.Set("lights", std::move(lights));
+  j.Set("floor", Text(s.floor_png.empty() ? std::string() : Base64Encode(s.floor_png)));
   return j;
 }
 }  // namespace
 
-std::string FrameText(const World& world, const FrameInfo& info) { return DumpJsonLine(FrameJson(world, info)); }
+std::string FrameText(const World& world, const FrameInfo& info) { return ValueJsonLine(FrameValue(world, info)); }
 
-std::string SceneText(const World& world) { return DumpJsonLine(SceneJson(world)); }
+std::string SceneText(const World& world) { return ValueJsonLine(SceneValue(world)); }
 
 LiveExperiment::LiveExperiment(std::string file, LoadOptions load, LogSink log_sink, Watchdog* watchdog)
     : file_(std::move(file)), load_(std::move(load)), log_sink_(std::move(log_sink)), watchdog_(watchdog) {}
@@ -168,12 +193,6 @@ std::vector<std::string> LiveExperiment::InputFiles() const {
 }
 
 namespace {
-Value RgbValue(const Color& c) {
-  Value v = Value::EmptyList();
-  for (unsigned char part : {c.r, c.g, c.b}) v.list.push_back(Value::OfInteger(part));
-  return v;
-}
-
 Value PairValue(const char* a, Value va, const char* b, Value vb) {
   Value v = Value::EmptyMap();
   v.Set(a, std::move(va));
@@ -185,7 +204,7 @@ Value ActuatorsValue(const RobotState& r) {
   Value wheels = Value::EmptyList();
   wheels.list = {Value::OfNumber(r.wheel_left), Value::OfNumber(r.wheel_right)};
   Value leds = Value::EmptyList();
-  for (const Color& c : r.leds) leds.list.push_back(RgbValue(c));
+  for (const Color& c : r.leds) leds.list.push_back(Rgb(c));
   return PairValue("wheels_m_per_s", std::move(wheels), "leds", std::move(leds));
 }
 }  // namespace

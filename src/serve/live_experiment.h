@@ -29,7 +29,7 @@ struct FrameInfo {
 };
 
 /// One frame: {tick, run, paused, speed, error, robots: [{id, x, y, yaw, led, alive, ok}],
-/// movable: [[x, y, yaw, led] or null when removed], series_rows, log_lines}. Positions are
+/// movable: [[obstacle index, x, y, yaw, led]] (movable obstacles only), series_rows, log_lines}. Positions are
 /// rounded to 0.1 mm and yaws to 1e-4 rad (a page needs no more; frames stay small). JSON
 /// text on one line.
 std::string FrameText(const World& world, const FrameInfo& info);

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <condition_variable>
-#include <cstdio>
 #include <deque>
 #include <future>
 #include <mutex>
@@ -11,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/json.h"
+#include "core/value_json.h"
 #include "serve/access.h"
 #include "serve/control.h"
 #include "serve/file_watcher.h"
@@ -39,8 +38,16 @@ struct Inspection {
   std::promise<std::string> answer;
 };
 
-HttpResponse JsonAnswer(int status, const Json& body) { return {status, "application/json", DumpJsonLine(body)}; }
-HttpResponse ErrorAnswer(int status, const std::string& message) { return JsonAnswer(status, {{"error", message}}); }
+Value Numbers(const std::vector<double>& numbers) {
+  Value v = Value::EmptyList();
+  for (double x : numbers) v.list.push_back(Value::OfNumber(x));
+  return v;
+}
+
+HttpResponse JsonAnswer(int status, const Value& body) { return {status, "application/json", ValueJsonLine(body)}; }
+HttpResponse ErrorAnswer(int status, const std::string& message) {
+  return JsonAnswer(status, Value::MapOf({{"error", Value::OfString(message)}}));
+}
 }  // namespace
 
 struct LiveServer::Impl {
@@ -62,7 +69,7 @@ struct LiveServer::Impl {
   uint64_t log_total = 0;
   std::string scene = "null";
   std::vector<std::string> robot_ids;  // of the experiment loaded, for log lines
-  Json series_columns = Json::array();
+  std::vector<std::string> series_columns;
   std::vector<std::vector<double>> series_rows;
   uint64_t series_run = 0;
 
@@ -87,6 +94,8 @@ struct LiveServer::Impl {
   bool ApplyCommands();
   void Apply(const ControlCommand& c);
   void AnswerInspections();
+  Value RobotLog(int robot);
+  void Report(const std::string& line) const;
   void AfterLoad(bool ok, const char* what);
   bool WatchFiles();
   void StepOnce();
@@ -119,7 +128,7 @@ HttpResponse LiveServer::Impl::Control(const HttpRequest& req) {
     commands.push_back(command);
   }
   wake.notify_all();
-  return JsonAnswer(200, {{"ok", true}});
+  return JsonAnswer(200, Value::MapOf({{"ok", Value::OfBool(true)}}));
 }
 
 HttpResponse LiveServer::Impl::Inspect(const HttpRequest& req) {
@@ -143,29 +152,35 @@ HttpResponse LiveServer::Impl::Inspect(const HttpRequest& req) {
 
 HttpResponse LiveServer::Impl::Log(const HttpRequest& req) {
   uint64_t from = static_cast<uint64_t>(ParseIndex(req.Param("from")).value_or(0));
-  Json lines = Json::array();
+  Value lines = Value::EmptyList();
   std::lock_guard<std::mutex> lock(mutex);
   for (const LogLine& l : log) {
     if (l.number <= from) continue;
     std::string who = l.robot >= 0 && static_cast<size_t>(l.robot) < robot_ids.size()
                           ? robot_ids[l.robot]
                           : (l.robot == kLogLoopFunctions ? "loop_functions" : "essaim");
-    lines.push_back({{"n", l.number},
-                     {"tick", l.tick},
-                     {"robot", l.robot},
-                     {"who", who},
-                     {"error", l.stream == 'E'},
-                     {"text", l.text}});
+    lines.list.push_back(Value::MapOf({{"n", Value::OfUnsigned(l.number)},
+                                       {"tick", Value::OfUnsigned(l.tick)},
+                                       {"robot", Value::OfInteger(l.robot)},
+                                       {"who", Value::OfString(who)},
+                                       {"error", Value::OfBool(l.stream == 'E')},
+                                       {"text", Value::OfString(l.text)}}));
   }
-  return JsonAnswer(200, {{"total", log_total}, {"lines", std::move(lines)}});
+  Value answer = Value::MapOf({{"total", Value::OfUnsigned(log_total)}});
+  answer.Set("lines", std::move(lines));  // moved, not copied as a MapOf entry would be
+  return JsonAnswer(200, answer);
 }
 
 HttpResponse LiveServer::Impl::Series(const HttpRequest& req) {
   size_t from = static_cast<size_t>(ParseIndex(req.Param("from")).value_or(0));
   std::lock_guard<std::mutex> lock(mutex);
-  Json rows = Json::array();
-  for (size_t i = from; i < series_rows.size(); ++i) rows.push_back(series_rows[i]);
-  return JsonAnswer(200, {{"run", series_run}, {"columns", series_columns}, {"from", from}, {"rows", std::move(rows)}});
+  Value rows = Value::EmptyList();
+  for (size_t i = from; i < series_rows.size(); ++i) rows.list.push_back(Numbers(series_rows[i]));
+  Value answer = Value::MapOf({{"run", Value::OfUnsigned(series_run)},
+                               {"columns", Value::OfStrings(series_columns)},
+                               {"from", Value::OfUnsigned(from)}});
+  answer.Set("rows", std::move(rows));
+  return JsonAnswer(200, answer);
 }
 
 HttpServer::NextChunk LiveServer::Impl::Events() {
@@ -258,25 +273,30 @@ void LiveServer::Impl::AnswerInspections() {
     todo.swap(inspections);
   }
   for (auto& in : todo) {
-    Json j = ToJson(experiment->Inspect(in->robot));
-    if (!j.is_null()) {
-      Json lines = Json::array();
-      std::lock_guard<std::mutex> lock(mutex);
-      for (const LogLine& l : log)
-        if (l.robot == in->robot) lines.push_back({{"tick", l.tick}, {"error", l.stream == 'E'}, {"text", l.text}});
-      while (lines.size() > 50) lines.erase(lines.begin());
-      j["log"] = std::move(lines);
-    }
-    in->answer.set_value(DumpJsonLine(j));
+    Value j = experiment->Inspect(in->robot);
+    if (!j.IsNull()) j.Set("log", RobotLog(in->robot));
+    in->answer.set_value(ValueJsonLine(j));
   }
 }
 
+/// The robot's last 50 log lines, oldest first.
+Value LiveServer::Impl::RobotLog(int robot) {
+  Value lines = Value::EmptyList();
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const LogLine& l : log)
+    if (l.robot == robot)
+      lines.list.push_back(Value::MapOf({{"tick", Value::OfUnsigned(l.tick)},
+                                         {"error", Value::OfBool(l.stream == 'E')},
+                                         {"text", Value::OfString(l.text)}}));
+  if (lines.list.size() > 50) lines.list.erase(lines.list.begin(), lines.list.end() - 50);
+  return lines;
+}
+
 /// After a load, reload or reset: the new scene and an empty series (ok), or the error,
-/// the last good experiment staying (not ok). Said on stderr too.
+/// the last good experiment staying (not ok). Reported too.
 void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
   if (!ok) {
-    std::fprintf(stderr, "essaim serve: %s failed, the last good experiment stays loaded:\n%s\n", what,
-                 experiment->Error().c_str());
+    Report(std::string(what) + " failed, the last good experiment stays loaded:\n" + experiment->Error());
     return;
   }
   std::string scene_json = experiment->world() ? SceneText(*experiment->world()) : "null";
@@ -286,16 +306,20 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
     robot_ids.clear();
     if (const World* w = experiment->world())
       for (const RobotDef& r : w->model.robots) robot_ids.push_back(r.id);
-    series_columns = Json::array();
+    series_columns.clear();
     series_rows.clear();
     series_run = experiment->run();
   }
   series_copied = 0;
   CopySeries();
   if (!experiment->Error().empty())
-    std::fprintf(stderr, "essaim serve: %s\n", experiment->Error().c_str());
+    Report(experiment->Error());
   else if (experiment->run() > 1)
-    std::fprintf(stderr, "essaim serve: %s, run %llu\n", what, static_cast<unsigned long long>(experiment->run()));
+    Report(std::string(what) + ", run " + std::to_string(experiment->run()));
+}
+
+void LiveServer::Impl::Report(const std::string& line) const {
+  if (options.report) options.report(line);
 }
 
 /// On a change to a watched file: reload, reset, pause.
@@ -303,7 +327,7 @@ bool LiveServer::Impl::WatchFiles() {
   last_watch = Clock::now();
   std::vector<std::string> changed;
   if (!watcher.WaitForChange(0, &changed)) return false;
-  std::fprintf(stderr, "essaim serve: %s changed, reloading\n", changed.front().c_str());
+  Report(changed.front() + " changed, reloading");
   playing = false;
   ticks_left = 0;
   AfterLoad(experiment->Load(), "reload");
@@ -364,12 +388,12 @@ void LiveServer::Impl::Publish() {
   }
   const World* w = experiment->world();
   frames.Publish(w ? FrameText(*w, info)
-                   : DumpJsonLine(Json{{"tick", 0},
-                                       {"run", info.run},
-                                       {"paused", true},
-                                       {"speed", speed},
-                                       {"error", info.error},
-                                       {"robots", Json::array()}}));
+                   : ValueJsonLine(Value::MapOf({{"tick", Value::OfUnsigned(0)},
+                                                 {"run", Value::OfUnsigned(info.run)},
+                                                 {"paused", Value::OfBool(true)},
+                                                 {"speed", Value::OfNumber(speed)},
+                                                 {"error", Value::OfString(info.error)},
+                                                 {"robots", Value::EmptyList()}})));
 }
 
 void LiveServer::Impl::Loop(const std::atomic<int>& stop) {

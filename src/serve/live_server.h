@@ -4,6 +4,7 @@
 // them between ticks, and never waits for them.
 #pragma once
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -23,6 +24,10 @@ struct ServeOptions {
   std::string page;
   /// The watchdog of every experiment's Lua states (the command's, which signals reach).
   Watchdog* watchdog = nullptr;
+  /// Told what a person watching the command should know (a load failed, a file changed, a
+  /// reload's run number), a message without a trailing newline (a failed load's has the
+  /// error's lines after the first); the command prints it. Unset: nothing is said.
+  std::function<void(const std::string&)> report;
 };
 
 class LiveServer {
