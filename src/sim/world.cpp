@@ -85,6 +85,7 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   w->inputs = options.inputs ? options.inputs : std::make_shared<InputFiles>();
   ListModelInputs(model, w->inputs.get());
   w->options.lua.inputs = w->inputs.get();
+  if (!w->options.lua.scripts) w->options.lua.scripts = &w->scripts;
   if (!w->options.lua.watchdog) {
     w->own_watchdog = std::make_unique<Watchdog>();
     w->options.lua.watchdog = w->own_watchdog.get();

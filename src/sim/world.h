@@ -11,6 +11,7 @@
 #include "devices/floor.h"
 #include "devices/media.h"
 #include "devices/robot_state.h"
+#include "lua/host/compiled_scripts.h"
 #include "lua/host/watchdog.h"
 #include "lua/loop/loop_functions.h"
 #include "lua/robot/lua_controller.h"
@@ -92,6 +93,8 @@ class World {
   /// Every file the run read, modules loaded by `require` included. Before the Lua states,
   /// whose `require` adds to it, so that it outlives them.
   std::shared_ptr<InputFiles> inputs;
+  /// The controllers' scripts, compiled once for all their robots.
+  CompiledScripts scripts;
   PhysicsWorld physics;
   EntityStore entities;
   std::vector<RobotState> robots;
