@@ -49,6 +49,13 @@ Json BuildSummary(const World& w, const RunInfo& info) {
                                      {"loop_functions", w.times.loop_functions},
                                      {"sense", w.times.sense},
                                      {"control", w.times.control}});
+  const SetupTimes& setup = w.setup;
+  s["setup_seconds"] = Json::object({{"load", setup.load},
+                                     {"placement", setup.placement},
+                                     {"world", setup.world},
+                                     {"lua_states", setup.lua_states},
+                                     {"init", setup.init},
+                                     {"total", setup.Total()}});
   size_t peak = 0;
   for (const auto& c : w.controllers) peak += c->Memory().peak;
   s["lua_memory_bytes"] = peak;

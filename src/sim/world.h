@@ -26,6 +26,16 @@ struct StageTimes {
   double Total() const { return act + physics + media + loop_functions + sense + control; }
 };
 
+/// Seconds the run took to set up (summary.json's setup_seconds): the model's load (less
+/// placement) and placement, then the World's parts in the order they are made.
+struct SetupTimes {
+  double load = 0, placement = 0;
+  double world = 0;       // physics bodies, robot states and devices, media, threads
+  double lua_states = 0;  // loop functions' and controllers' states made, scripts run (a loop-function floor drawn)
+  double init = 0;        // controllers' and loop functions' init()
+  double Total() const { return load + placement + world + lua_states + init; }
+};
+
 struct ControllerError {
   std::string robot;
   uint64_t tick = 0;
@@ -103,6 +113,7 @@ class World {
   Media media;
   FloorRaster floor;
   StageTimes times;
+  SetupTimes setup;
   std::vector<ControllerError> controller_errors;
   /// Filled when the run ends (EndRun), or by `essaim check`: see FindUnreadParams.
   std::vector<UnreadParam> unread_params;
