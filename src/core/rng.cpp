@@ -73,9 +73,10 @@ struct TwoWordSeedSeq {
 };
 }  // namespace
 
-void Rng::Seed(uint64_t seed) {
-  TwoWordSeedSeq seq{{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)}};
+void Rng::SeedNow() {
+  TwoWordSeedSeq seq{{static_cast<uint32_t>(seed_), static_cast<uint32_t>(seed_ >> 32)}};
   mt_.seed(seq);
+  unseeded_ = false;
 }
 
 int64_t Rng::UniformInt(double min, double max) {

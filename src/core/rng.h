@@ -26,9 +26,17 @@ class Rng {
  public:
   Rng() : mt_(5489u) {}
   explicit Rng(uint64_t seed) { Seed(seed); }
-  void Seed(uint64_t seed);
+  /// The stream of `seed`. Its 624-word state is made at the first draw: a robot has three
+  /// streams and most experiments draw from one or none (set-up at 100 000 robots).
+  void Seed(uint64_t seed) {
+    seed_ = seed;
+    unseeded_ = true;
+  }
 
-  uint32_t NextU32() { return static_cast<uint32_t>(mt_()); }
+  uint32_t NextU32() {
+    if (unseeded_) SeedNow();
+    return static_cast<uint32_t>(mt_());
+  }
   /// u / (2^32 - 1): both 0 and 1 reachable, as ARGoS.
   double Uniform01() { return NextU32() / 4294967295.0; }
   double Uniform(double min, double max) { return Uniform01() * (max - min) + min; }
@@ -41,7 +49,11 @@ class Rng {
   bool Bernoulli(double p = 0.5);
 
  private:
+  void SeedNow();
+
   std::mt19937 mt_;
+  uint64_t seed_ = 0;
+  bool unseeded_ = false;  // Seed() called, state not made yet
 };
 
 }  // namespace essaim

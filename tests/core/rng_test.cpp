@@ -137,5 +137,22 @@ TEST(Rng, SeedIsStdSeedSeqWordForWord) {
   }
 }
 
+// Seeding is deferred to the first draw: a stream seeded twice draws from the last seed,
+// and a copy made before any draw draws the same numbers as the original.
+TEST(Rng, TheLastSeedBeforeTheFirstDrawCounts) {
+  Rng a(1);
+  a.Seed(2);
+  Rng copy = a;
+  Rng b(2);
+  for (int i = 0; i < 10; ++i) {
+    const uint32_t x = b.NextU32();
+    EXPECT_EQ(a.NextU32(), x);
+    EXPECT_EQ(copy.NextU32(), x);
+  }
+  a.Seed(1);  // reseeding after draws starts the stream of 1 afresh
+  Rng c(1);
+  EXPECT_EQ(a.NextU32(), c.NextU32());
+}
+
 }  // namespace
 }  // namespace essaim
