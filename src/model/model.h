@@ -197,6 +197,12 @@ struct ArenaDef {
   Vec2 Max() const { return {center.x() + size.x() / 2, center.y() + size.y() / 2}; }
 };
 
+/// Seconds the loader spent (summary.json's setup_seconds): the whole load, the file read
+/// included, and of it the placing of entities (overlap checks, <distribute>).
+struct LoadSeconds {
+  double total = 0, placement = 0;
+};
+
 struct Model {
   std::string file;                    // the .argos path as given
   std::string dir;                     // its folder
@@ -213,6 +219,7 @@ struct Model {
   std::vector<RabMediumDef> rab_media;
   std::vector<LedMediumDef> led_media;
   LoopFunctionsDef loop_functions;
+  LoadSeconds load_seconds;  // how long this load took, not part of the experiment
 };
 
 }  // namespace essaim

@@ -11,6 +11,7 @@
 #include "core/hash.h"
 #include "core/paths.h"
 #include "core/rng.h"
+#include "core/stopwatch.h"
 #include "core/strings.h"
 #include "model/attribute_ledger.h"
 #include "model/distribute.h"
@@ -874,6 +875,7 @@ void Loader::LoadArena(const XMLElement* e) {
     }
   }
   RoomFor(e, 0);
+  const auto placement_start = std::chrono::steady_clock::now();
   PlacedFootprints obstacles, robots_before;
   obstacles.Cover(model_->arena.Min(), model_->arena.Max());
   robots_before.Cover(model_->arena.Min(), model_->arena.Max());
@@ -886,6 +888,7 @@ void Loader::LoadArena(const XMLElement* e) {
     if (!problem.empty()) errors_->Add(r.loc.file, r.loc.line, r.loc.element, "foot-bot '" + r.id + "' " + problem);
   }
   for (auto* c = e->FirstChildElement("distribute"); c; c = c->NextSiblingElement("distribute")) LoadDistribute(c);
+  model_->load_seconds.placement = SecondsSince(placement_start);
 }
 
 // A robot outside the arena breaks ARGoS's media grids: "" when `r` stands inside.
@@ -1182,18 +1185,24 @@ const DeviceConfig* ControllerDef::Find(DeviceType t) const {
 
 std::unique_ptr<Model> LoadExperimentText(const std::string& xml, const std::string& path, const LoadOptions& options,
                                           ErrorList* errors, ErrorList* warnings) {
+  const auto start = std::chrono::steady_clock::now();
   Loader loader(path, options, errors, warnings);
-  return loader.Load(xml);
+  std::unique_ptr<Model> model = loader.Load(xml);
+  if (model) model->load_seconds.total = SecondsSince(start);
+  return model;
 }
 
 std::unique_ptr<Model> LoadExperimentFile(const std::string& path, const LoadOptions& options, ErrorList* errors,
                                           ErrorList* warnings) {
+  const auto start = std::chrono::steady_clock::now();
   std::string text;
   if (!ReadFile(path, &text)) {
     errors->Add(path, 0, "", "cannot read the experiment file");
     return nullptr;
   }
-  return LoadExperimentText(text, path, options, errors, warnings);
+  std::unique_ptr<Model> model = LoadExperimentText(text, path, options, errors, warnings);
+  if (model) model->load_seconds.total = SecondsSince(start);
+  return model;
 }
 
 }  // namespace essaim

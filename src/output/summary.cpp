@@ -30,6 +30,15 @@ Value StageSeconds(const StageTimes& t) {
                        {"control", Value::OfNumber(t.control)}});
 }
 
+Value SetupSeconds(const SetupTimes& t) {
+  return Value::MapOf({{"load", Value::OfNumber(t.load)},
+                       {"placement", Value::OfNumber(t.placement)},
+                       {"world", Value::OfNumber(t.world)},
+                       {"lua_states", Value::OfNumber(t.lua_states)},
+                       {"init", Value::OfNumber(t.init)},
+                       {"total", Value::OfNumber(t.Total())}});
+}
+
 Value ControllerErrors(const std::vector<ControllerError>& errors) {
   Value list = Value::EmptyList();
   for (const ControllerError& e : errors)
@@ -55,6 +64,7 @@ void AddTimes(Value& s, const World& w, const RunInfo& info) {
   s.Set("robot_steps_per_second", Value::OfNumber(info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0));
   s.Set("us_per_robot_step", Value::OfNumber(steps > 0 ? info.wall_seconds * 1e6 / steps : 0.0));
   s.Set("stage_seconds", StageSeconds(w.times));
+  s.Set("setup_seconds", SetupSeconds(w.setup));
 }
 
 std::string Failure(const World& w, const RunInfo& info) {

@@ -1,6 +1,7 @@
 #include "sim/world.h"
 
 #include "core/rng.h"
+#include "core/stopwatch.h"
 #include "devices/devices.h"
 #include "sim/error_groups.h"
 #include "sim/thread_pool.h"
@@ -61,67 +62,96 @@ std::string MissingStep(World& w) {
 }
 }  // namespace
 
-std::unique_ptr<World> World::Create(const Model& source, const SimOptions& options, std::string* error) {
-  std::unique_ptr<World> w(new World(source, options));
-  const Model& model = w->model;  // the World's own copy, which loop functions may edit
+namespace {
+// Robot states, sized once and filled in place: each robot's random streams, its devices
+// (bodies in the physics world), then the media's buffers and the thread pool.
+void MakeRobots(World& w, const SimOptions& options) {
+  const Model& model = w.model;
   const uint64_t seed = model.experiment.seed;
   const size_t n = model.robots.size();
-  w->robots.resize(n);
-  w->pending_errors.resize(n);
-  w->chunk_times.resize(n + 1);
+  w.robots.resize(n);
+  w.pending_errors.resize(n);
+  w.chunk_times.resize(n + 1);
   for (size_t i = 0; i < n; ++i) {
-    RobotState& r = w->robots[i];
+    RobotState& r = w.robots[i];
     r.index = static_cast<int>(i);
     r.controller_rng.Seed(DeriveSeed(seed, StreamKind::Controller, i));
     r.sensor_rng.Seed(DeriveSeed(seed, StreamKind::SensorNoise, i));
     r.actuator_rng.Seed(DeriveSeed(seed, StreamKind::ActuatorNoise, i));
-    InitRobotDevices(model, model.robots[i], r, w->physics);
+    InitRobotDevices(model, model.robots[i], r, w.physics);
   }
-  InitMedia(model, &w->media);  // buffers sized once, by who is in which medium
-  w->threads = options.threads >= 0 ? options.threads : model.experiment.threads;
-  if (w->threads < 1) w->threads = 1;
-  w->pool = std::make_unique<ThreadPool>(w->threads);
+  InitMedia(model, &w.media);  // buffers sized once, by who is in which medium
+  w.threads = options.threads >= 0 ? options.threads : model.experiment.threads;
+  if (w.threads < 1) w.threads = 1;
+  w.pool = std::make_unique<ThreadPool>(w.threads);
+}
 
-  w->inputs = options.inputs ? options.inputs : std::make_shared<InputFiles>();
-  ListModelInputs(model, w->inputs.get());
-  w->options.lua.inputs = w->inputs.get();
-  if (!w->options.lua.watchdog) {
-    w->own_watchdog = std::make_unique<Watchdog>();
-    w->options.lua.watchdog = w->own_watchdog.get();
-  }
-  // Loop functions load first so the floor exists before anything senses it.
-  w->loop_functions.SetLimits(w->options.lua);
-  if (!w->loop_functions.Load(w->model, &w->entities, &w->controllers, options.output_dir, error)) return nullptr;
-  if (!BuildFloor(*w, error)) return nullptr;
-
-  w->controllers.reserve(n);
+// The loop functions' state (first, so the floor exists before anything senses it), then
+// one state per robot, their top-level chunks run; false with `error` when a script fails.
+bool MakeLuaStates(World& w, std::string* error) {
+  w.loop_functions.SetLimits(w.options.lua);
+  if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
+  if (!BuildFloor(w, error)) return false;
+  const size_t n = w.model.robots.size();
+  w.controllers.reserve(n);
   for (size_t i = 0; i < n; ++i) {
     auto c = std::make_unique<LuaController>();
-    if (!c->Load(model, model.robots[i], &w->robots[i], seed, w->options.lua, error)) return nullptr;
-    w->controllers.push_back(std::move(c));
+    if (!c->Load(w.model, w.model.robots[i], &w.robots[i], w.model.experiment.seed, w.options.lua, error)) return false;
+    w.controllers.push_back(std::move(c));
   }
-  for (size_t i = 0; i < n; ++i) {
+  return true;
+}
+
+// Every controller's init(), then the loop functions'; errors as World::Create says.
+void RunInits(World& w) {
+  const SimOptions& options = w.options;
+  for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
-    if (!w->controllers[i]->CallInit(&err)) {
-      w->robots[i].controller_ok = false;
-      w->controller_errors.push_back({model.robots[i].id, 0, err});
-      if (options.strict || w->controllers[i]->ExitCalled()) {
-        w->failure = err;
+    if (!w.controllers[i]->CallInit(&err)) {
+      w.robots[i].controller_ok = false;
+      w.controller_errors.push_back({w.model.robots[i].id, 0, err});
+      if (options.strict || w.controllers[i]->ExitCalled()) {
+        w.failure = err;
         break;
       }
     }
   }
-  for (size_t i = 0; i < n; ++i) FlushLog(*w, w->controllers[i]->LogBuffer(), static_cast<int>(i));
-  if (w->failure.empty()) w->failure = MissingStep(*w);
+  for (size_t i = 0; i < w.controllers.size(); ++i) FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
+  if (w.failure.empty()) w.failure = MissingStep(w);
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)
-    for (const std::string& text : GroupControllerErrors(w->controller_errors, 0))
+    for (const std::string& text : GroupControllerErrors(w.controller_errors, 0))
       options.log_sink('E', text, {0, kLogHost});
   // A runtime error in init() is the run failing, not bad input: the World is returned
   // with `failure` set, so the caller can still write a summary (exit 1, docs/cli.md).
   std::string err;
-  if (w->failure.empty() && !w->loop_functions.Call("init", &err)) w->failure = err;
-  FlushLog(*w, w->loop_functions.LogBuffer(), kLogLoopFunctions);
+  if (w.failure.empty() && !w.loop_functions.Call("init", &err)) w.failure = err;
+  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
+}
+}  // namespace
+
+std::unique_ptr<World> World::Create(const Model& source, const SimOptions& options, std::string* error) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  std::unique_ptr<World> w(new World(source, options));
+  w->setup.load = source.load_seconds.total - source.load_seconds.placement;
+  w->setup.placement = source.load_seconds.placement;
+  MakeRobots(*w, options);
+  w->inputs = options.inputs ? options.inputs : std::make_shared<InputFiles>();
+  ListModelInputs(w->model, w->inputs.get());
+  w->options.lua.inputs = w->inputs.get();
+  if (!w->options.lua.scripts) w->options.lua.scripts = &w->scripts;
+  if (!w->options.lua.watchdog) {
+    w->own_watchdog = std::make_unique<Watchdog>();
+    w->options.lua.watchdog = w->own_watchdog.get();
+  }
+  w->setup.world = SecondsSince(start);
+  const Clock::time_point lua_start = Clock::now();
+  if (!MakeLuaStates(*w, error)) return nullptr;
+  w->setup.lua_states = SecondsSince(lua_start);
+  const Clock::time_point init_start = Clock::now();
+  RunInits(*w);
+  w->setup.init = SecondsSince(init_start);
   return w;
 }
 

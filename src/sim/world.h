@@ -11,6 +11,7 @@
 #include "devices/floor.h"
 #include "devices/media.h"
 #include "devices/robot_state.h"
+#include "lua/host/compiled_scripts.h"
 #include "lua/host/watchdog.h"
 #include "lua/loop/loop_functions.h"
 #include "lua/robot/lua_controller.h"
@@ -23,6 +24,16 @@ namespace essaim {
 struct StageTimes {
   double act = 0, physics = 0, media = 0, loop_functions = 0, sense = 0, control = 0;
   double Total() const { return act + physics + media + loop_functions + sense + control; }
+};
+
+/// Seconds the run took to set up (summary.json's setup_seconds): the model's load (less
+/// placement) and placement, then the World's parts in the order they are made.
+struct SetupTimes {
+  double load = 0, placement = 0;
+  double world = 0;       // physics bodies, robot states and devices, media, threads
+  double lua_states = 0;  // loop functions' and controllers' states made, scripts run (a loop-function floor drawn)
+  double init = 0;        // controllers' and loop functions' init()
+  double Total() const { return load + placement + world + lua_states + init; }
 };
 
 struct ControllerError {
@@ -92,6 +103,8 @@ class World {
   /// Every file the run read, modules loaded by `require` included. Before the Lua states,
   /// whose `require` adds to it, so that it outlives them.
   std::shared_ptr<InputFiles> inputs;
+  /// The controllers' scripts, compiled once for all their robots.
+  CompiledScripts scripts;
   PhysicsWorld physics;
   EntityStore entities;
   std::vector<RobotState> robots;
@@ -100,6 +113,7 @@ class World {
   Media media;
   FloorRaster floor;
   StageTimes times;
+  SetupTimes setup;
   std::vector<ControllerError> controller_errors;
   /// Filled when the run ends (EndRun), or by `essaim check`: see FindUnreadParams.
   std::vector<UnreadParam> unread_params;

@@ -211,6 +211,33 @@ def test_an_output_in_a_missing_folder_is_bad_input(recorded, tmp_path):
     assert r.returncode == 2 and "no folder" in r.stderr
 
 
+# ---- summary.json: where the set-up time went -----------------------------------------
+
+def test_summary_reports_setup_seconds_in_the_stage_that_spent_them(tmp_path):
+    # Each of the 4 robots' states spends 0.1 s CPU in its script's top level and 0.2 s in
+    # init(): at least 0.4 s and 0.8 s of wall clock, in `lua_states` and `init`.
+    (tmp_path / "slow.lua").write_text(
+        "local function spin(s) local t = os.clock() while os.clock() - t < s do end end\n"
+        "spin(0.1)\n"
+        "function init() spin(0.2) end\n"
+        "function step() robot.wheels.set_velocity(1, 1) end\n")
+    (tmp_path / "x.argos").write_text((DATA / "tiny.argos").read_text().replace('script="tiny.lua"',
+                                                                                'script="slow.lua"'))
+    r = run("run", tmp_path / "x.argos", "--ticks", 2, "--threads", 1, "--quiet", "--out", tmp_path / "o",
+            cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    s = summary(tmp_path / "o")
+    setup = s["setup_seconds"]
+    assert list(setup) == ["load", "placement", "world", "lua_states", "init", "total"]
+    assert all(v >= 0 for v in setup.values())
+    assert setup["lua_states"] >= 0.4 and setup["init"] >= 0.8
+    parts = sum(v for k, v in setup.items() if k != "total")
+    assert abs(setup["total"] - parts) < 1e-9
+    # wall_seconds counts from the world's set-up on (the load and placement come before).
+    assert s["wall_seconds"] >= setup["world"] + setup["lua_states"] + setup["init"]
+    assert list(s)[list(s).index("stage_seconds") + 1] == "setup_seconds"
+
+
 # ---- loop functions: init() errors, timeseries.csv ----------------------------------
 
 def test_an_error_in_loop_function_init_is_a_failed_run_exit_1_with_a_summary(tmp_path):

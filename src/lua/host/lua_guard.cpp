@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "lua/host/guard_hook.h"
+#include "lua/host/watchdog.h"
 
 namespace essaim {
 
@@ -133,10 +134,20 @@ void BeginGuardedCall(LuaGuard* g) {
     g->armed.store(false, std::memory_order_relaxed);
   }
   g->call_started_ns.store(SteadyNowNs(), std::memory_order_relaxed);
+  if (g->watchdog) {
+    g->slot = g->watchdog->ThisThreadSlot();
+    g->outer = g->slot->guard.load(std::memory_order_relaxed);
+    g->slot->guard.store(g, std::memory_order_release);
+  }
 }
 
 std::string EndGuardedCall(LuaGuard* g, int status) {
   g->call_started_ns.store(0, std::memory_order_relaxed);
+  if (g->slot) {
+    g->slot->guard.store(g->outer, std::memory_order_release);
+    g->slot = nullptr;
+    g->outer = nullptr;
+  }
   if (!g->exit_called.empty()) return g->exit_called;
   if (g->memory_exceeded) {
     char what[96];

@@ -22,8 +22,10 @@ typedef int (*lua_CFunction)(lua_State* L);
 
 namespace essaim {
 
+class CompiledScripts;
 class InputFiles;
 class Watchdog;
+struct WatchSlot;
 
 /// The watchdog's limits, on by default (--lua-budget, --lua-memory, <system lua_budget>).
 /// A call running this long gets the count hook (and, after a signal, is interrupted).
@@ -38,6 +40,8 @@ struct LuaOptions {
   /// The run's monitor thread (arms long calls, wall clock, interrupts, stuck calls). Null:
   /// the World makes its own; a state made with none is never watched.
   Watchdog* watchdog = nullptr;
+  /// Where controller scripts are compiled once and shared; null: each state parses its file.
+  CompiledScripts* scripts = nullptr;
 };
 
 /// One state's accounting. Its address is the allocator's user data: never moved.
@@ -66,7 +70,11 @@ struct LuaGuard {
   lua_CFunction original_setmetatable = nullptr, original_debug_setmetatable = nullptr, original_xpcall = nullptr;
   // Wall clock: the watchdog thread reads these while the owner's thread runs Lua.
   lua_State* state = nullptr;
-  Watchdog* watchdog = nullptr;  // the one this state is registered with, or null
+  Watchdog* watchdog = nullptr;  // the one that watches this state's calls, or null
+  // During a call: the calling thread's slot in the watchdog, and what it held before
+  // (a guarded call made from inside another one).
+  WatchSlot* slot = nullptr;
+  LuaGuard* outer = nullptr;
   double wall_seconds = 0;
   std::atomic<long long> call_started_ns{0};  // 0: not inside a call
   std::atomic<bool> wall_exceeded{false};
@@ -83,7 +91,7 @@ struct LuaGuard {
 };
 
 /// A new state whose allocator is `guard`'s, with the hook installed (budget, interrupts).
-/// Registers the state with options.watchdog (if any); close it with CloseGuardedState.
+/// Its calls are watched by options.watchdog (if any); close it with CloseGuardedState.
 lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options);
 void CloseGuardedState(LuaGuard* guard);
 
@@ -98,7 +106,8 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox);
 /// arena's folder and the script's own. Symlinks and ".." are resolved before the check.
 void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders);
 
-/// Brackets one call into Lua: resets the budget and arms the wall clock.
+/// Brackets one call into Lua: resets the budget, arms the wall clock and puts the state in
+/// this thread's watchdog slot.
 void BeginGuardedCall(LuaGuard* guard);
 /// Ends the call. When the guard stopped it (or a limit was hit and caught inside the
 /// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),

@@ -22,13 +22,12 @@ lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
     lua_sethook(L, GuardHook, LUA_MASKCOUNT, kHookEvery);
   }
   guard->watchdog = options.watchdog;
-  if (guard->watchdog) guard->watchdog->Register(guard);
   return L;
 }
 
 void CloseGuardedState(LuaGuard* guard) {
   if (!guard->state) return;
-  if (guard->watchdog) guard->watchdog->Unregister(guard);
+  if (guard->watchdog) guard->watchdog->Forget(guard);
   guard->watchdog = nullptr;
   lua_close(guard->state);
   guard->state = nullptr;

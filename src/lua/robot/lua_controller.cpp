@@ -7,6 +7,7 @@
 #include "core/paths.h"
 #include "core/rng.h"
 #include "core/strings.h"
+#include "lua/host/compiled_scripts.h"
 #include "lua/host/lua_host.h"
 #include "lua/host/lua_require.h"
 #include "lua/robot/lua_devices.h"
@@ -136,7 +137,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
   SetRequireRoots(&guard_, {DirName(model.file), DirName(script)});
   PrependScriptFolder(L, script);
-  return RunChunk(error);
+  return RunChunk(options, error);
 }
 
 void LuaController::OpenGlobals(lua_State* L) {
@@ -166,13 +167,16 @@ void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotSta
   lua_setglobal(L, "robot");
 }
 
-bool LuaController::RunChunk(std::string* error) {
+bool LuaController::RunChunk(const LuaOptions& options, std::string* error) {
   lua_State* L = L_;
   const std::string& script = controller_->script;
   const RobotDef& def = *def_;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
-  if (luaL_loadfile(L, script.c_str()) != LUA_OK) {
+  // The sandbox takes no bytecode from files: the script is read as text.
+  const int loaded = options.scripts ? options.scripts->Load(L, script, options.sandbox)
+                                     : luaL_loadfilex(L, script.c_str(), options.sandbox ? "t" : nullptr);
+  if (loaded != LUA_OK) {
     *error = "robot " + def.id + ": " + lua_tostring(L, -1);
     lua_settop(L, 0);
     return false;

@@ -58,7 +58,7 @@ class LuaController {
   /// The robot table, in ARGoS's order: id, random, actuators, sensors, params.
   void CreateRobotTable(::lua_State* L, const RobotDef& def, RobotState* robot);
   /// Runs the script's top-level chunk, guarded; false with `error`.
-  bool RunChunk(std::string* error);
+  bool RunChunk(const LuaOptions& options, std::string* error);
   /// After a guarded pcall: the error (robot id, what stopped it, `where`) and the state
   /// closed if it ran out of memory; true if the call went through. The error ends with
   /// " (" where name ")", e.g. " (in step)".
