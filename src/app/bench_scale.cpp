@@ -17,6 +17,7 @@
 #include "app/commands.h"
 #include "app/signals.h"
 #include "core/paths.h"
+#include "core/stopwatch.h"
 #include "lua/host/watchdog.h"
 #include "model/xml_loader.h"
 #include "sim/step.h"
@@ -25,7 +26,6 @@ namespace essaim {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string Num(double v) {
   char b[32];
@@ -111,11 +111,11 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
     std::fprintf(stderr, "%s\n", world ? world->failure.c_str() : error.c_str());
     return false;
   }
-  out->setup = Since(t0);
+  out->setup = SecondsSince(t0);
   const auto t1 = Clock::now();
   while (Step(*world) == StepStatus::Running) {
   }
-  out->wall = Since(t1);
+  out->wall = SecondsSince(t1);
   out->times = world->times;
   out->robots = model->robots.size();
   out->ticks = world->tick;

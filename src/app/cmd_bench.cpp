@@ -14,6 +14,7 @@
 #include "app/commands.h"
 #include "app/signals.h"
 #include "core/paths.h"
+#include "core/stopwatch.h"
 #include "core/strings.h"
 #include "lua/host/watchdog.h"
 #include "model/xml_loader.h"
@@ -102,7 +103,7 @@ bool TimeRun(const Model& model, double* wall, double* cpu, StageTimes* times) {
   auto t0 = std::chrono::steady_clock::now();
   while (Step(*world) == StepStatus::Running) {
   }
-  *wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  *wall = SecondsSince(t0);
   *cpu = ProcessCpuSeconds() - c0;
   *times = world->times;
   return true;
@@ -206,7 +207,7 @@ static int Bench(BenchArgs a) {
       auto t0 = std::chrono::steady_clock::now();
       while (Step(*world) == StepStatus::Running) {
       }
-      double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      double wall = SecondsSince(t0);
       double steps = static_cast<double>(world->tick) * model->robots.size();
       const StageTimes& t = world->times;
       double total = std::max(1e-12, t.Total());

@@ -20,6 +20,7 @@
 #include "app/run_report.h"
 #include "app/run_session.h"
 #include "core/paths.h"
+#include "core/stopwatch.h"
 #include "core/strings.h"
 #include "output/memory_log.h"
 #include "output/out_folder.h"
@@ -292,7 +293,7 @@ int FinishAndReport(ActiveRun& run, StepStatus status) {
   EndRun(*run.world, status, &run.info, &metrics, &has_metrics);
   std::string error;
   if (!run.logs.Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
-  run.info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+  run.info.wall_seconds = SecondsSince(run.start);
   CloseStreams(run);
   std::vector<std::string> unwritten = run.info.output_errors;
   if (!WriteRunOutputs(run.out, *run.world, run.info, has_metrics ? &metrics : nullptr, &error))

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/paths.h"
+#include "core/stopwatch.h"
 #include "core/value_json.h"
 #include "lua/host/watchdog.h"
 #include "lua/loop/lua_copy.h"
@@ -297,7 +298,7 @@ class Simulation {
     }
     bool ok = !(info.status == "failed" && status_ != StepStatus::Failed);
     std::string error;
-    info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    info.wall_seconds = SecondsSince(t0_);
     finished_ = true;
     Report();
     summary_ = FromJsonText(SummaryJsonText(w, info));
@@ -314,7 +315,7 @@ class Simulation {
     info.version = ESSAIM_VERSION;
     info.status = status_ == StepStatus::Running ? "running" : status_ == StepStatus::Failed ? "failed" : "ok";
     info.finished_by = status_ == StepStatus::Running ? "" : "not finished: call finish()";
-    info.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    info.wall_seconds = SecondsSince(t0_);
     return FromJsonText(SummaryJsonText(Live(), info));
   }
 
