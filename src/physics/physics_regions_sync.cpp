@@ -201,7 +201,8 @@ class RegionSync {
       reach = std::max(reach, (speed + spin) * dt);
     }
     const float margin = static_cast<float>(2 * reach + kGhostSlack);
-    im_.ghost_pairs.clear();
+    im_.ghost_pairs.resize(regions);
+    for (auto& pairs : im_.ghost_pairs) pairs.clear();
     for (int k = 0; k < Nodes(); ++k) {
       b2Body* b = Body(k);
       const b2AABB box = BodyBox(b);
@@ -217,7 +218,7 @@ class RegionSync {
           ghost = CloneBody(b, im_.regions[r].world.get(), true);
         else
           FollowBody(b, ghost);
-        im_.ghost_pairs.emplace_back(b, ghost);
+        im_.ghost_pairs[r].emplace_back(b, ghost);
       }
     }
   }
@@ -283,8 +284,21 @@ void PhysicsWorld::SyncRegions(double dt) {
   ++impl_->shapes_moved;
 }
 
-void PhysicsWorld::FollowGhosts() {
-  for (const auto& [body, ghost] : impl_->ghost_pairs) FollowBody(body, ghost);
+namespace {
+void FollowRegionGhosts(void* ctx, int region) {
+  const auto& pairs = (*static_cast<std::vector<std::vector<std::pair<b2Body*, b2Body*>>>*>(ctx))[region];
+  for (const auto& [body, ghost] : pairs) FollowBody(body, ghost);
+}
+}  // namespace
+
+// A ghost moves only its own region's world, and reads a body no one moves between sub-steps:
+// the regions' ghosts follow at once.
+void PhysicsWorld::FollowGhosts(const PhysicsRunner& runner) {
+  const int regions = static_cast<int>(impl_->ghost_pairs.size());
+  if (runner.run)
+    runner.run(runner.pool, regions, &FollowRegionGhosts, &impl_->ghost_pairs);
+  else
+    for (int r = 0; r < regions; ++r) FollowRegionGhosts(&impl_->ghost_pairs, r);
 }
 
 void* PhysicsWorld::MoveGripGroupVoid(const GripTarget& t, int region) {

@@ -258,7 +258,7 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
   // Each region's world is its own: stepping them at once writes nothing they share.
   RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), 1};
   for (int i = 0; i < substeps; ++i) {
-    if (i > 0) FollowGhosts();
+    if (i > 0) FollowGhosts(runner);
     if (runner.run)
       runner.run(runner.pool, regions, &StepRegion, &steps);
     else

@@ -150,7 +150,7 @@ class PhysicsWorld {
   /// to the region holding its centre, then ghosts are made, moved or dropped.
   void SyncRegions(double dt);
   /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
-  void FollowGhosts();
+  void FollowGhosts(const PhysicsRunner& runner);
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
   /// region `region`; returns the target's body there.
   void* MoveGripGroupVoid(const GripTarget& t, int region);

@@ -65,7 +65,8 @@ struct PhysicsWorld::Impl {
   /// the owner's velocity, so that bodies near a boundary meet their neighbours.
   std::vector<std::vector<b2Body*>> robot_ghosts, obstacle_ghosts;
   /// This tick's (body, ghost) pairs: the ghosts follow their bodies before each sub-step.
-  std::vector<std::pair<b2Body*, b2Body*>> ghost_pairs;
+  // Each region's (body, its ghost there) pairs: a region's ghosts follow on its own task.
+  std::vector<std::vector<std::pair<b2Body*, b2Body*>>> ghost_pairs;
   /// The region sync's scratch, sized once (union-find over grips, owner regions, boxes).
   std::vector<int> parent, owner, current;
   std::vector<b2AABB> region_boxes;

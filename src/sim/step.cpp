@@ -54,6 +54,11 @@ void BeginTick(World& w) {
   w.loop_functions.SetTick(w.tick);
 }
 
+// ~0.1 µs a robot against ~5-10 µs to wake the pool: per-robot passes this cheap pay off on
+// threads from a few hundred robots. Balanced: the tick does not wait for a worker slow to
+// wake (it finds nothing left).
+constexpr int kParallelActMin = 256;
+
 // Commands the controllers set last tick. First each robot's wheels, scanner, LEDs and RAB
 // payload (its own state and servo only: any thread), then gripper and turret, which make
 // joints in the one physics world (one thread, robot order).
@@ -63,9 +68,6 @@ void ActStage(World& w) {
   auto act = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) ActRobotOwnState(m, m.robots[i], w.robots[i], w.physics);
   };
-  // ~0.1 µs a robot against ~5-10 µs to wake the pool: threads pay off from a few hundred.
-  // Balanced: the tick does not wait for a worker slow to wake (it finds nothing left).
-  constexpr int kParallelActMin = 256;
   if (n >= kParallelActMin)
     w.pool->ParallelForBalanced(n, act);
   else
@@ -92,7 +94,15 @@ PhysicsRunner PhysicsRegionRunner(World& w) {
 void PhysicsStage(World& w) {
   const Model& m = w.model;
   w.physics.Step(m.experiment.TickLength(), m.physics.iterations, PhysicsRegionRunner(w));
-  for (size_t i = 0; i < w.robots.size(); ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
+  // Each robot's own battery and scanner, from its body's pose: any thread.
+  const int n = static_cast<int>(w.robots.size());
+  auto update = [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
+  };
+  if (n >= kParallelActMin)
+    w.pool->ParallelForBalanced(n, update);
+  else
+    update(0, n);
 }
 
 // Who hears whom, where the LEDs are, after the robots moved.
