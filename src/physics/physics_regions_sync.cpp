@@ -182,7 +182,8 @@ class RegionSync {
   /// Ghosts: a body gets one in each other region whose moving bodies' box comes within
   /// reach of its own — how far two bodies can close in over a tick at the fastest speed
   /// now (commanded speeds included), twice, plus a slack — and loses it beyond.
-  void UpdateGhosts(double dt) {
+  void UpdateGhosts(double dt, const PhysicsRunner& runner) {
+    FileBodyBoxes(runner);
     const int regions = im_.RegionCount();
     im_.region_boxes.resize(regions);
     for (b2AABB& box : im_.region_boxes) {
@@ -193,7 +194,7 @@ class RegionSync {
     for (int k = 0; k < Nodes(); ++k) {
       const b2Body* b = Body(k);
       if (b->GetType() != b2_dynamicBody) continue;
-      const b2AABB box = BodyBox(b);
+      const b2AABB& box = im_.body_boxes[k];
       im_.region_boxes[im_.current[k]].Combine(box);
       double speed = b->GetLinearVelocity().Length();
       if (k < n_) speed = std::max<double>(speed, im_.controls[k]->GetLinearVelocity().Length());
@@ -205,7 +206,7 @@ class RegionSync {
     for (auto& pairs : im_.ghost_pairs) pairs.clear();
     for (int k = 0; k < Nodes(); ++k) {
       b2Body* b = Body(k);
-      const b2AABB box = BodyBox(b);
+      const b2AABB& box = im_.body_boxes[k];
       for (int r = 0; r < regions; ++r) {
         b2Body*& ghost = Ghost(k, r);
         const bool want = r != im_.current[k] && Overlap(box, im_.region_boxes[r], margin);
@@ -257,6 +258,20 @@ class RegionSync {
     im_.current[k] = r;
   }
 
+  /// Every node's box, on the pool (reading bodies only; a wall tiled into many pieces
+  /// costs one box per piece).
+  void FileBodyBoxes(const PhysicsRunner& runner) {
+    im_.body_boxes.resize(Nodes());
+    auto job = [](void* ctx, int k) {
+      RegionSync& sync = *static_cast<RegionSync*>(ctx);
+      sync.im_.body_boxes[k] = BodyBox(sync.Body(k));
+    };
+    if (runner.run)
+      runner.run(runner.pool, Nodes(), job, this);
+    else
+      for (int k = 0; k < Nodes(); ++k) job(this, k);
+  }
+
   int Find(int k) {
     std::vector<int>& p = im_.parent;
     while (p[k] != k) k = p[k] = p[p[k]];
@@ -275,12 +290,12 @@ class RegionSync {
 };
 }  // namespace
 
-void PhysicsWorld::SyncRegions(double dt) {
+void PhysicsWorld::SyncRegions(double dt, const PhysicsRunner& runner) {
   RegionSync sync(*impl_, robots_, obstacles_);
   sync.Prepare();
   sync.ChooseOwners();
   sync.ApplyMoves();
-  sync.UpdateGhosts(dt);
+  sync.UpdateGhosts(dt, runner);
   ++impl_->shapes_moved;
 }
 

@@ -252,7 +252,7 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
     ++impl_->shapes_moved;
     return;
   }
-  SyncRegions(dt);
+  SyncRegions(dt, runner);
   // The regions step one sub-step at a time, the ghosts following their bodies in between:
   // a ghost moves at its body's velocity of the sub-step's start, never a tick's.
   // Each region's world is its own: stepping them at once writes nothing they share.

@@ -148,7 +148,7 @@ class PhysicsWorld {
 
   /// Several regions, before a step: each body (with what it grips or is gripped by) moves
   /// to the region holding its centre, then ghosts are made, moved or dropped.
-  void SyncRegions(double dt);
+  void SyncRegions(double dt, const PhysicsRunner& runner);
   /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
   void FollowGhosts(const PhysicsRunner& runner);
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into

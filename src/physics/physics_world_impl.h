@@ -70,6 +70,7 @@ struct PhysicsWorld::Impl {
   /// The region sync's scratch, sized once (union-find over grips, owner regions, boxes).
   std::vector<int> parent, owner, current;
   std::vector<b2AABB> region_boxes;
+  std::vector<b2AABB> body_boxes;  // each node's, this tick
 
   /// Ray candidates come from a grid of these circles (EnsureRayGrid), rebuilt at the first
   /// query after shapes moved: every change to a body's place or to the set of shapes counts
