@@ -61,7 +61,7 @@ void PlacedFootprints::Add(const Footprint& f) {
   lo_.push_back(lo);
   hi_.push_back(hi);
   if (placed_.size() > capacity_)
-    Regrid(2 * capacity_);  // files the new one too
+    Regrid(std::max(2 * capacity_, kFirstCapacity));  // files the new one too
   else
     File(static_cast<int>(placed_.size() - 1));
 }
