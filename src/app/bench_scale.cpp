@@ -1,7 +1,7 @@
 // `essaim bench scale`: the avoidance scenario grown at constant density (1 000 foot-bots per
 // 32 m × 32 m, 100 boxes and 100 cylinders per 1 000 robots), so that what grows faster than
-// the robot count shows: set-up seconds, µs per robot-step by stage, peak memory per robot,
-// real-time factor on 1 and N threads.
+// the robot count shows: set-up and teardown seconds, µs per robot-step by stage, peak memory
+// per robot, real-time factor on 1 and N threads.
 #include "app/bench_scale.h"
 
 #include <malloc.h>
@@ -82,6 +82,7 @@ bool ResetPeakRss() {
 
 struct ScaleRun {
   double setup = 0, wall = 0, simulated = 0;  // s
+  double teardown = 0;                        // s: the World (Lua states included) and the Model freed
   StageTimes times;
   long long peak_kb = 0;
   size_t robots = 0;
@@ -121,12 +122,16 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
   out->ticks = world->tick;
   out->simulated = world->tick * model->experiment.TickLength();
   out->peak_kb = PeakRssKb();
+  const auto t2 = Clock::now();
+  world.reset();
+  model.reset();
+  out->teardown = SecondsSince(t2);
   return true;
 }
 
 void PrintHeader(int threads) {
-  std::printf("%8s %8s %9s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "us/r-step", "phys", "sense", "ctrl", "other",
-              "peakKB/r", "rtf-1");
+  std::printf("%8s %8s %7s %9s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "down-s", "us/r-step", "phys", "sense",
+              "ctrl", "other", "peakKB/r", "rtf-1");
   if (threads > 1) std::printf(" %8s", ("rtf-" + std::to_string(threads)).c_str());
   std::printf("\n");
 }
@@ -135,8 +140,8 @@ void PrintRow(const ScaleRun& one, const ScaleRun* many) {
   const double per = 1e6 / std::max(1.0, static_cast<double>(one.robots) * one.ticks);
   const StageTimes& t = one.times;
   const double other = one.wall - t.physics - t.sense - t.control;
-  std::printf("%8zu %8.2f %9.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.wall * per,
-              t.physics * per, t.sense * per, t.control * per, other * per,
+  std::printf("%8zu %8.2f %7.2f %9.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.teardown,
+              one.wall * per, t.physics * per, t.sense * per, t.control * per, other * per,
               static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots), one.simulated / one.wall);
   if (many) std::printf(" %8.2f", many->simulated / many->wall);
   std::printf("\n");

@@ -229,8 +229,8 @@ CLI::App* AddScaleSubcommand(CLI::App& bench, BenchScaleArgs* s) {
   s->dir = ESSAIM_SOURCE_DIR "/bench";
   CLI::App* scale = bench.add_subcommand(
       "scale",
-      "the avoidance scenario at constant density and growing robot counts: set-up seconds, us per "
-      "robot-step by stage, peak KB per robot, real-time factor on 1 and N threads");
+      "the avoidance scenario at constant density and growing robot counts: set-up and teardown seconds, "
+      "us per robot-step by stage, peak KB per robot, real-time factor on 1 and N threads");
   scale->add_option("--sizes", s->sizes, "robot counts, comma-separated")
       ->type_name("N,...")
       ->delimiter(',')

@@ -1,6 +1,8 @@
 #include "model/distribute.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -31,8 +33,16 @@ bool Generator::Next(Rng& rng, int k, Vec3* out) const {
 
 double RoundSignificant6(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return std::strtod(buf, nullptr);
+  if (!std::isfinite(v)) {  // "nan" or "inf" and back, as ARGoS's text goes
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return std::strtod(buf, nullptr);
+  }
+  // The same digits as "%g" and the same double as strtod (all four round correctly), at a
+  // third of the cost: every placement attempt rounds six values.
+  const std::to_chars_result text = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 6);
+  double out = v;
+  std::from_chars(buf, text.ptr, out);
+  return out;
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "model/placement.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace essaim {
@@ -7,6 +8,8 @@ namespace essaim {
 namespace {
 /// m: cells of about two foot-bot diameters, so a foot-bot's box covers one to four.
 constexpr double kPlacementCell = 0.5;
+/// Footprints the first cells are sized for; the cells are made finer as the count doubles.
+constexpr size_t kFirstCapacity = 1024;
 
 /// The footprint's bounding box, widened by far more than the overlap tests' rounding, so
 /// that footprints that overlap always have boxes that meet.
@@ -20,12 +23,35 @@ void BoundingBox(const Footprint& f, Vec2* lo, Vec2* hi) {
   *lo = f.center - half - margin;
   *hi = f.center + half + margin;
 }
+
+bool BoxesMeet(const Vec2& lo, const Vec2& hi, const Vec2& other_lo, const Vec2& other_hi) {
+  return !(hi.x() < other_lo.x() || lo.x() > other_hi.x() || hi.y() < other_lo.y() || lo.y() > other_hi.y());
+}
 }  // namespace
 
 void PlacedFootprints::Cover(const Vec2& min, const Vec2& max) {
   min_ = min;
   max_ = max;
-  Refile();
+  Regrid(std::max(capacity_, kFirstCapacity));
+}
+
+void PlacedFootprints::Regrid(size_t capacity) {
+  capacity_ = capacity;
+  // About four cells per footprint at most: a sparse arena gets coarser cells, not a huge grid.
+  cells_.CoverBox(min_, max_, kPlacementCell, 4 * capacity + 4096);
+  head_.assign(static_cast<size_t>(cells_.Columns()) * cells_.Rows(), -1);
+  entries_.clear();
+  for (size_t i = 0; i < placed_.size(); ++i) File(static_cast<int>(i));
+}
+
+void PlacedFootprints::File(int i) {
+  const int col0 = cells_.Column(lo_[i].x()), col1 = cells_.Column(hi_[i].x());
+  for (int row = cells_.Row(lo_[i].y()), row1 = cells_.Row(hi_[i].y()); row <= row1; ++row)
+    for (int col = col0; col <= col1; ++col) {
+      int& head = head_[static_cast<size_t>(row) * cells_.Columns() + col];
+      entries_.push_back({i, head});
+      head = static_cast<int>(entries_.size() - 1);
+    }
 }
 
 void PlacedFootprints::Add(const Footprint& f) {
@@ -34,42 +60,38 @@ void PlacedFootprints::Add(const Footprint& f) {
   placed_.push_back(f);
   lo_.push_back(lo);
   hi_.push_back(hi);
-  const size_t pending = placed_.size() - filed_;
-  if (pending * pending > 256 + filed_) Refile();
+  if (placed_.size() > capacity_)
+    Regrid(std::max(2 * capacity_, kFirstCapacity));  // files the new one too
+  else
+    File(static_cast<int>(placed_.size() - 1));
 }
 
-void PlacedFootprints::Refile() {
-  filed_ = placed_.size();
-  grid_.CoverBox(min_, max_, kPlacementCell, 4 * filed_ + 4096);
-  grid_.FileBoxes(
-      static_cast<int>(filed_), [&](int i) { return lo_[i]; }, [&](int i) { return hi_[i]; });
+template <class F>
+bool PlacedFootprints::AnyFiledNear(const Vec2& lo, const Vec2& hi, F&& f) const {
+  const int col0 = cells_.Column(lo.x()), col1 = cells_.Column(hi.x());
+  for (int row = cells_.Row(lo.y()), row1 = cells_.Row(hi.y()); row <= row1; ++row)
+    for (int col = col0; col <= col1; ++col)
+      for (int e = head_[static_cast<size_t>(row) * cells_.Columns() + col]; e >= 0; e = entries_[e].next)
+        if (f(entries_[e].item)) return true;
+  return false;
 }
 
 int PlacedFootprints::FirstOverlap(const Footprint& f) const {
   Vec2 lo, hi;
   BoundingBox(f, &lo, &hi);
   int first = -1;
-  auto consider = [&](int i) {
-    if (first >= 0 && i >= first) return;
-    if (hi.x() < lo_[i].x() || lo.x() > hi_[i].x() || hi.y() < lo_[i].y() || lo.y() > hi_[i].y()) return;
-    if (FootprintsOverlap(f, placed_[i])) first = i;
-  };
-  grid_.ForEachInBox(lo.x(), lo.y(), hi.x(), hi.y(), consider);
-  for (size_t i = filed_; i < placed_.size(); ++i) consider(static_cast<int>(i));
+  AnyFiledNear(lo, hi, [&](int i) {
+    if ((first < 0 || i < first) && BoxesMeet(lo, hi, lo_[i], hi_[i]) && FootprintsOverlap(f, placed_[i])) first = i;
+    return false;  // all of them: the lowest index wins
+  });
   return first;
 }
 
 bool PlacedFootprints::Collides(const Footprint& f) const {
   Vec2 lo, hi;
   BoundingBox(f, &lo, &hi);
-  auto overlaps = [&](int i) {
-    if (hi.x() < lo_[i].x() || lo.x() > hi_[i].x() || hi.y() < lo_[i].y() || lo.y() > hi_[i].y()) return false;
-    return FootprintsOverlap(f, placed_[i]);
-  };
-  if (grid_.AnyInBox(lo.x(), lo.y(), hi.x(), hi.y(), overlaps)) return true;
-  for (size_t i = filed_; i < placed_.size(); ++i)
-    if (overlaps(static_cast<int>(i))) return true;
-  return false;
+  return AnyFiledNear(lo, hi,
+                      [&](int i) { return BoxesMeet(lo, hi, lo_[i], hi_[i]) && FootprintsOverlap(f, placed_[i]); });
 }
 
 }  // namespace essaim

@@ -1,6 +1,8 @@
 // The footprints placed so far in the arena, for the overlap test that explicit and
-// generated (<distribute>) entities must pass. A uniform grid answers which footprints
-// are near a new one, so placing n entities costs about n·sqrt(n), not n².
+// generated (<distribute>) entities must pass. A uniform grid over the arena answers which
+// footprints are near a new one; each footprint is filed in its cells as it is added, and
+// the cells are made finer (all footprints filed anew) each time the count doubles, so
+// placing n entities costs about n times the footprints near each, never n² or n·sqrt(n).
 #pragma once
 #include <vector>
 
@@ -22,16 +24,29 @@ class PlacedFootprints {
   size_t Size() const { return placed_.size(); }
 
  private:
-  /// Files every footprint in the grid anew.
-  void Refile();
+  /// Cells sized for up to `capacity` footprints, every footprint filed in them anew.
+  void Regrid(size_t capacity);
+  /// Files footprint i in the cells its box covers.
+  void File(int i);
+  /// Calls f(i) for each footprint filed in a cell the box [lo, hi] covers (a footprint in
+  /// several of them once per cell); stops and returns true when f returns true.
+  template <class F>
+  bool AnyFiledNear(const Vec2& lo, const Vec2& hi, F&& f) const;
 
   std::vector<Footprint> placed_;
   std::vector<Vec2> lo_, hi_;  // m, each footprint's bounding box, widened far beyond rounding
   Vec2 min_ = Vec2::Zero(), max_ = Vec2::Zero();
-  UniformGrid grid_;
-  /// placed_[0, filed_) are in the grid; the few after them are tested one by one until
-  /// there are more than about sqrt(filed_), when the grid is filed anew.
-  size_t filed_ = 0;
+  /// The cells' geometry only (Column, Row): footprints arrive one at a time, and a
+  /// counting-sorted grid would have to be filed whole for each.
+  UniformGrid cells_;
+  /// Per cell the newest entry filed there (-1: none); each entry names a footprint and the
+  /// entry filed in that cell before it.
+  struct Entry {
+    int item, next;
+  };
+  std::vector<int> head_;
+  std::vector<Entry> entries_;
+  size_t capacity_ = 0;  // footprints the cells are sized for
 };
 
 }  // namespace essaim

@@ -1077,9 +1077,27 @@ bool Loader::PlaceDistributed(DistributeBlock* b, const std::string& id) {
   return false;
 }
 
+namespace {
+/// Room for `more` elements, at least doubling: one move of what is there per block, and no
+/// quadratic cost over many small blocks.
+template <class Container>
+void ReserveMore(Container* c, size_t more) {
+  const size_t need = c->size() + more;
+  if (need > c->capacity()) c->reserve(std::max(need, 2 * c->capacity()));
+}
+}  // namespace
+
 void Loader::LoadDistribute(const XMLElement* e) {
   DistributeBlock b;
   if (!ReadDistribute(e, &b) || !ReadPrototype(&b)) return;
+  // The block's quantity passed RoomFor: bounded by <system max_entities>.
+  const size_t more = static_cast<size_t>(b.quantity);
+  if (b.kind == "foot-bot")
+    ReserveMore(&model_->robots, more);
+  else if (b.kind == "light")
+    ReserveMore(&model_->lights, more);
+  else
+    ReserveMore(&model_->obstacles, more);
   for (long long i = 0; i < b.quantity; ++i) {
     std::string id = b.base_id + std::to_string(i + b.base_num);
     if (!ids_.insert(id).second) {

@@ -23,11 +23,11 @@ constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pi
 constexpr double kRayCellSize = 0.5;
 }  // namespace
 
-PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
-  const size_t region_count = std::max<size_t>(1, model.physics.regions.size());
-  if (region_count > 1) impl_->region_defs = model.physics.regions;
-  impl_->regions.resize(region_count);
-  for (Impl::Region& region : impl_->regions) {
+namespace {
+/// One Box2D world per region, each with its ground body first.
+void MakeRegionWorlds(size_t count, std::vector<PhysicsWorld::Impl::Region>* regions) {
+  regions->resize(count);
+  for (PhysicsWorld::Impl::Region& region : *regions) {
     region.world = std::make_unique<b2World>(b2Vec2(0, 0));
     // Continuous collision (time of impact) guards against tunnelling at speed; foot-bots
     // move millimetres per sub-step, so it only costs time (~5% of a 1000-robot step).
@@ -35,12 +35,25 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
     b2BodyDef gd;
     region.ground = region.world->CreateBody(&gd);
   }
+}
+}  // namespace
+
+PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
+  const size_t region_count = std::max<size_t>(1, model.physics.regions.size());
+  if (region_count > 1) impl_->region_defs = model.physics.regions;
+  MakeRegionWorlds(region_count, &impl_->regions);
 
   impl_->phys = model.physics;
   const PhysicsDef& phys = model.physics;
   impl_->grips.resize(model.robots.size());
   impl_->gripping_rigidity = static_cast<float>(phys.gripping_rigidity);
   if (region_count > 1) impl_->robot_ghosts.assign(model.robots.size(), std::vector<b2Body*>(region_count, nullptr));
+  // Sized once for what the model holds (loop functions may add obstacles later).
+  obstacles_.reserve(model.obstacles.size());
+  impl_->obstacle_top.reserve(model.obstacles.size());
+  impl_->obstacle_bottom.reserve(model.obstacles.size());
+  robots_.reserve(model.robots.size());
+  impl_->controls.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) {

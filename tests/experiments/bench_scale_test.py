@@ -15,7 +15,9 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
     assert r.returncode == 0, r.stderr
     lines = r.stdout.strip().splitlines()
     header = lines[0].split()
-    assert header == ["robots", "setup-s", "us/r-step", "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1", "rtf-2"]
+    assert header == [
+        "robots", "setup-s", "down-s", "us/r-step", "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1", "rtf-2"
+    ]
     assert len(lines) == 3
     for line, robots in zip(lines[1:], (100, 400)):
         row = dict(zip(header, line.split()))
@@ -23,6 +25,8 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         cost = float(row["us/r-step"])
         parts = [float(row[k]) for k in ("phys", "sense", "ctrl")]
         assert float(row["setup-s"]) > 0 and cost > 0 and all(p > 0 for p in parts)
+        # Freeing a few hundred robots takes far less than making them (printed to 0.01 s).
+        assert 0 <= float(row["down-s"]) <= float(row["setup-s"]) + 0.01
         # The stages and the rest add up to the whole (rounded to 0.01 each).
         assert abs(sum(parts) + float(row["other"]) - cost) <= 0.05
         # A Lua state per robot alone is tens of KB; the process is far from a GB a robot.
