@@ -48,7 +48,7 @@ TEST(CompiledScripts, LaterStatesRunTheFirstParseAndTheFileIsReadOnce) {
   EXPECT_EQ(scripts.Parsed(), 1u);
 }
 
-TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndIsNotKept) {
+TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndEveryLaterStateGetsTheSame) {
   TempDir d;
   const std::string path = d.Write("bad.lua", "local x = 1\nfunction step(\n");
   CompiledScripts scripts;
@@ -57,6 +57,11 @@ TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndIsNotKept) {
   const std::string message = lua_tostring(a.L, -1);
   EXPECT_NE(message.find("bad.lua:3:"), std::string::npos) << message;
   EXPECT_EQ(scripts.Parsed(), 0u);
+  // The run's other states get the first parse's error, the file not read again.
+  d.Write("bad.lua", "return 1");
+  StockState b;
+  ASSERT_EQ(scripts.Load(b.L, path, false), LUA_ERRSYNTAX);
+  EXPECT_EQ(lua_tostring(b.L, -1), message);
 }
 
 TEST(CompiledScripts, TextOnlyRefusesABinaryFile) {
