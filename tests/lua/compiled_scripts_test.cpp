@@ -64,6 +64,21 @@ TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndEveryLaterStateGetsTheSame)
   EXPECT_EQ(lua_tostring(b.L, -1), message);
 }
 
+TEST(CompiledScripts, HostTextIsCompiledOnceAndRunsTheSameInEveryState) {
+  CompiledScripts scripts;
+  const char text[] = "local a, b = ...\nreturn a * 10 + b";
+  StockState a, b;
+  ASSERT_EQ(scripts.LoadText(a.L, "=host", text, sizeof text - 1), LUA_OK);
+  ASSERT_EQ(scripts.LoadText(b.L, "=host", "not Lua at all", 14), LUA_OK);  // the first text's bytecode
+  for (lua_State* L : {a.L, b.L}) {
+    lua_pushinteger(L, 4);
+    lua_pushinteger(L, 2);
+    ASSERT_EQ(lua_pcall(L, 2, 1, 0), LUA_OK) << lua_tostring(L, -1);
+    EXPECT_EQ(lua_tointeger(L, -1), 42);
+  }
+  EXPECT_EQ(scripts.Parsed(), 0u);  // host text is not a script file
+}
+
 TEST(CompiledScripts, TextOnlyRefusesABinaryFile) {
   TempDir d;
   StockState a;

@@ -47,6 +47,26 @@ int CompiledScripts::Load(lua_State* L, const std::string& path, bool text_only)
   return status;
 }
 
+int CompiledScripts::LoadText(lua_State* L, const char* chunkname, const char* text, size_t size) {
+  // Called inside Lua calls, where an error unwinds with longjmp: every Lua call here is
+  // protected, and no C++ object is alive across one that could raise.
+  const std::string* bytecode = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto found = texts_.find(chunkname);
+    if (found != texts_.end()) bytecode = &found->second;
+  }
+  if (bytecode) return luaL_loadbufferx(L, bytecode->data(), bytecode->size(), chunkname, "b");
+  const int status = luaL_loadbufferx(L, text, size, chunkname, "t");
+  if (status != LUA_OK) return status;
+  std::string dumped;
+  if (lua_dump(L, AppendBytes, &dumped, /*strip=*/0) == 0) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    texts_.emplace(chunkname, std::move(dumped));
+  }
+  return status;
+}
+
 size_t CompiledScripts::Parsed() const {
   std::lock_guard<std::mutex> lock(mutex_);
   size_t parsed = 0;

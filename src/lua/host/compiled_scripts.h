@@ -23,6 +23,10 @@ class CompiledScripts {
   /// the others wait for its bytecode; a file that fails fails each state with the first
   /// parse's status and message, without being read again.
   int Load(lua_State* L, const std::string& path, bool text_only);
+  /// Pushes the chunk of Lua text `text` (the host's own, e.g. coroutine.wrap's), named
+  /// `chunkname`, compiled at the first call and loaded from its bytecode after that.
+  /// LUA_OK, or an error status with the message pushed. Any thread; never raises.
+  int LoadText(lua_State* L, const char* chunkname, const char* text, size_t size);
   /// How many files were parsed into a chunk (each once), for the tests.
   size_t Parsed() const;
 
@@ -35,6 +39,7 @@ class CompiledScripts {
   // Keyed by path and mode: a text-only load never reuses a chunk another mode read. A
   // node never moves once made, so a chunk is read outside the lock.
   std::unordered_map<std::string, Chunk> chunks_;
+  std::unordered_map<std::string, std::string> texts_;  // LoadText's, by chunk name
 };
 
 }  // namespace essaim
