@@ -127,7 +127,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   // instructions per robot-step. 100% saved a little more, but a state then outgrew
   // alloc_test's 60 KiB. The bare floor keeps Lua's defaults. A state's peak is its live
   // bytes times 1 + multiplier (the pool keeps it): at 1 000 avoidance robots 25 / 35 kept
-  // it at 33.6 / 36.3 KB instead of 40.3, for 11 % / 7.5 % more CPU per robot-step.
+  // it at 33.6 / 36.3 KB instead of 40.3, for 11 % / 4 % more CPU per robot-step.
   constexpr int kMinorMultiplier = 50, kMajorMultiplier = 300;
   // A state entering generational mode this empty takes its first majors for "bad" ones and
   // runs incremental cycles for a while, each started once the heap reached `pause` % of the
