@@ -81,5 +81,29 @@ function step() end
   }
 }
 
+TEST(ParallelStates, TheWatchdogStopsARunawayOnAnyThread) {
+  // Not sandboxed: the count hook is armed only by the watchdog's thread, through the slot
+  // of whichever of the pool's threads runs the call.
+  TempDir d;
+  d.Write("ok.lua", "function init() end\nfunction step() end\n");
+  d.Write("loops.lua", "while true do end\n");
+  d.Write("loops_in_init.lua", "function init() while true do end end\nfunction step() end\n");
+  const std::string controllers = WheelsController("c0", "ok.lua") + WheelsController("c1", "loops.lua") +
+                                  WheelsController("c2", "loops_in_init.lua");
+  SimOptions so;
+  so.threads = 2;
+  so.lua.instruction_limit = 1000000;
+  Scene chunk = Load(d, Experiment(EightRobots("00000010"), controllers), {}, so);
+  ASSERT_FALSE(chunk.ok());
+  EXPECT_EQ(chunk.error.rfind("robot fb6: ", 0), 0u) << chunk.error;
+  EXPECT_NE(chunk.error.find("instruction budget exceeded"), std::string::npos) << chunk.error;
+  Scene init = Load(d, Experiment(EightRobots("00000002"), controllers), {}, so);
+  ASSERT_TRUE(init.ok()) << init.error;
+  ASSERT_EQ(init.world->controller_errors.size(), 1u);
+  EXPECT_EQ(init.world->controller_errors[0].robot, "fb7");
+  EXPECT_NE(init.world->controller_errors[0].message.find("instruction budget exceeded"), std::string::npos)
+      << init.world->controller_errors[0].message;
+}
+
 }  // namespace
 }  // namespace essaim
