@@ -99,5 +99,21 @@ end
   EXPECT_EQ(r.error, "");
 }
 
+TEST(LazyLibraries, VectorTypesAreMadeWithTheirFirstValue) {
+  // No positioning sensor: the script makes the first vector2, vector3 and quaternion.
+  Outcome r = StepOnce(R"(
+function step()
+  local v = vector2(3, 4)
+  assert(v:length() == 5 and tostring(v) ~= nil and v == vector2(3, 4))
+  local ok, err = pcall(function() return v:dot(5) end)
+  assert(not ok and err:find("vector2 expected, got number"), err)
+  local w = vector3(1, 0, 0)
+  w:rotate(quaternion(math.pi / 2, vector3(0, 0, 1)))
+  assert(math.abs(w.y - 1) < 1e-9 and getmetatable(w) ~= getmetatable(v))
+end
+)");
+  EXPECT_EQ(r.error, "");
+}
+
 }  // namespace
 }  // namespace essaim
