@@ -83,9 +83,9 @@ int TextOnlyLoad(lua_State* L) {
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
 }
-// package.searchers[2] under the sandbox: Lua files on package.path, as text only, and
-// only inside the guard's require roots: a script cannot set package.path to read
-// /etc/passwd through require's error messages.
+
+// require's roots, made canonical at the first require: two realpath calls per state were
+// ~4 µs of its ~90 µs set-up.
 void MakeRootsCanonical(LuaGuard* g) {
   std::vector<std::string> real;
   for (const std::string& folder : g->require_roots) {
@@ -96,6 +96,9 @@ void MakeRootsCanonical(LuaGuard* g) {
   g->require_roots_canonical = true;
 }
 
+// package.searchers[2] under the sandbox: Lua files on package.path, as text only, and
+// only inside the guard's require roots: a script cannot set package.path to read
+// /etc/passwd through require's error messages.
 std::string FindAllowedModule(lua_State* L, LuaGuard* g, const std::string& name, std::string* tried) {
   if (!g->require_roots_canonical) MakeRootsCanonical(g);
   std::string file_name = name;
