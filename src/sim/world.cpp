@@ -1,5 +1,7 @@
 #include "sim/world.h"
 
+#include <algorithm>
+
 #include "core/rng.h"
 #include "core/stopwatch.h"
 #include "devices/devices.h"
@@ -11,7 +13,16 @@ namespace essaim {
 World::World(const Model& m, const SimOptions& o) : scene(m), model(scene), options(o), physics(scene) {
   entities.Init(&scene, &physics, &robots);
 }
-World::~World() = default;
+World::~World() {
+  // Closing a state frees every block it holds (lua_close: ~16 µs a robot, 1.6 s at 100 000
+  // robots): on the pool, each thread closing its own range. Nothing else reads a
+  // controller by then, and the loop functions' state keeps no reference into theirs.
+  if (!pool) return;
+  auto close = [this](int begin, int end) {
+    for (int i = begin; i < end; ++i) controllers[i].reset();
+  };
+  pool->ParallelForBalanced(static_cast<int>(controllers.size()), close);
+}
 
 namespace {
 bool BuildFloor(World& w, std::string* error) {
@@ -86,36 +97,68 @@ void MakeRobots(World& w, const SimOptions& options) {
   w.pool = std::make_unique<ThreadPool>(w.threads);
 }
 
+// One state per robot, its top-level chunk run, on the pool: the states share nothing
+// (the compiled scripts and the input list lock), and each thread writes only its own
+// robots' slots. A failure reports the lowest robot index's error, as a serial loop would.
+bool MakeControllerStates(World& w, std::string* error) {
+  const size_t n = w.model.robots.size();
+  w.controllers.resize(n);
+  std::vector<char> failed(n, 0);
+  auto make = [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      w.controllers[i] = std::make_unique<LuaController>();
+      failed[i] = !w.controllers[i]->Load(w.model, w.model.robots[i], &w.robots[i], w.model.experiment.seed,
+                                          w.options.lua, &w.pending_errors[i]);
+    }
+  };
+  w.pool->ParallelForBalanced(static_cast<int>(n), make);
+  const auto first = std::find(failed.begin(), failed.end(), 1);
+  if (first != failed.end()) *error = w.pending_errors[static_cast<size_t>(first - failed.begin())];
+  for (std::string& e : w.pending_errors) e.clear();
+  return first == failed.end();
+}
+
 // The loop functions' state (first, so the floor exists before anything senses it), then
-// one state per robot, their top-level chunks run; false with `error` when a script fails.
+// the controllers'; false with `error` when a script fails.
 bool MakeLuaStates(World& w, std::string* error) {
   w.loop_functions.SetLimits(w.options.lua);
   if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
   if (!BuildFloor(w, error)) return false;
-  const size_t n = w.model.robots.size();
-  w.controllers.reserve(n);
-  for (size_t i = 0; i < n; ++i) {
-    auto c = std::make_unique<LuaController>();
-    if (!c->Load(w.model, w.model.robots[i], &w.robots[i], w.model.experiment.seed, w.options.lua, error)) return false;
-    w.controllers.push_back(std::move(c));
+  return MakeControllerStates(w, error);
+}
+
+// Every controller's init() on the pool, then their errors in robot order. A serial loop
+// stops at the first error that ends the run (strict, os.exit): the robots after it keep
+// only what their top-level chunk logged, and their errors are not reported, as then.
+void RunControllerInits(World& w) {
+  const size_t n = w.controllers.size();
+  std::vector<char> failed(n, 0);
+  std::vector<size_t> logged_before_init(n, 0);
+  auto init = [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      logged_before_init[i] = w.controllers[i]->LogBuffer().size();
+      failed[i] = !w.controllers[i]->CallInit(&w.pending_errors[i]);
+    }
+  };
+  w.pool->ParallelForBalanced(static_cast<int>(n), init);
+  size_t last = n;  // the robot whose error ends the run, or n
+  for (size_t i = 0; i < n && last == n; ++i) {
+    if (!failed[i]) continue;
+    w.robots[i].controller_ok = false;
+    w.controller_errors.push_back({w.model.robots[i].id, 0, w.pending_errors[i]});
+    if (w.options.strict || w.controllers[i]->ExitCalled()) {
+      w.failure = w.pending_errors[i];
+      last = i;
+    }
   }
-  return true;
+  for (size_t i = last + 1; i < n; ++i) w.controllers[i]->LogBuffer().resize(logged_before_init[i]);
+  for (std::string& e : w.pending_errors) e.clear();
 }
 
 // Every controller's init(), then the loop functions'; errors as World::Create says.
 void RunInits(World& w) {
   const SimOptions& options = w.options;
-  for (size_t i = 0; i < w.controllers.size(); ++i) {
-    std::string err;
-    if (!w.controllers[i]->CallInit(&err)) {
-      w.robots[i].controller_ok = false;
-      w.controller_errors.push_back({w.model.robots[i].id, 0, err});
-      if (options.strict || w.controllers[i]->ExitCalled()) {
-        w.failure = err;
-        break;
-      }
-    }
-  }
+  RunControllerInits(w);
   for (size_t i = 0; i < w.controllers.size(); ++i) FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
   if (w.failure.empty()) w.failure = MissingStep(w);
   // Printed like step() errors, identical ones grouped.

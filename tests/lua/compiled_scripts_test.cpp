@@ -48,7 +48,7 @@ TEST(CompiledScripts, LaterStatesRunTheFirstParseAndTheFileIsReadOnce) {
   EXPECT_EQ(scripts.Parsed(), 1u);
 }
 
-TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndIsNotKept) {
+TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndEveryLaterStateGetsTheSame) {
   TempDir d;
   const std::string path = d.Write("bad.lua", "local x = 1\nfunction step(\n");
   CompiledScripts scripts;
@@ -57,6 +57,26 @@ TEST(CompiledScripts, ASyntaxErrorNamesFileAndLineAndIsNotKept) {
   const std::string message = lua_tostring(a.L, -1);
   EXPECT_NE(message.find("bad.lua:3:"), std::string::npos) << message;
   EXPECT_EQ(scripts.Parsed(), 0u);
+  // The run's other states get the first parse's error, the file not read again.
+  d.Write("bad.lua", "return 1");
+  StockState b;
+  ASSERT_EQ(scripts.Load(b.L, path, false), LUA_ERRSYNTAX);
+  EXPECT_EQ(lua_tostring(b.L, -1), message);
+}
+
+TEST(CompiledScripts, HostTextIsCompiledOnceAndRunsTheSameInEveryState) {
+  CompiledScripts scripts;
+  const char text[] = "local a, b = ...\nreturn a * 10 + b";
+  StockState a, b;
+  ASSERT_EQ(scripts.LoadText(a.L, "=host", text, sizeof text - 1), LUA_OK);
+  ASSERT_EQ(scripts.LoadText(b.L, "=host", "not Lua at all", 14), LUA_OK);  // the first text's bytecode
+  for (lua_State* L : {a.L, b.L}) {
+    lua_pushinteger(L, 4);
+    lua_pushinteger(L, 2);
+    ASSERT_EQ(lua_pcall(L, 2, 1, 0), LUA_OK) << lua_tostring(L, -1);
+    EXPECT_EQ(lua_tointeger(L, -1), 42);
+  }
+  EXPECT_EQ(scripts.Parsed(), 0u);  // host text is not a script file
 }
 
 TEST(CompiledScripts, TextOnlyRefusesABinaryFile) {

@@ -7,6 +7,7 @@
 // luaL_loadfile does. Users' bytecode never goes through here: under the sandbox the file
 // is read as text only.
 #pragma once
+#include <mutex>
 #include <string>
 #include <unordered_map>
 
@@ -18,14 +19,27 @@ class CompiledScripts {
  public:
   /// Pushes the main chunk of `path` onto L's stack, as luaL_loadfilex would (text only
   /// when `text_only`): LUA_OK, or an error status with the message pushed ("file:line:
-  /// ..." for a syntax error). One thread at a time.
+  /// ..." for a syntax error). Any thread: the first to ask for a file parses it while
+  /// the others wait for its bytecode; a file that fails fails each state with the first
+  /// parse's status and message, without being read again.
   int Load(lua_State* L, const std::string& path, bool text_only);
-  /// How many files were parsed (each once), for the tests.
-  size_t Parsed() const { return bytecode_.size(); }
+  /// Pushes the chunk of Lua text `text` (the host's own, e.g. coroutine.wrap's), named
+  /// `chunkname`, compiled at the first call and loaded from its bytecode after that.
+  /// LUA_OK, or an error status with the message pushed. Any thread; never raises.
+  int LoadText(lua_State* L, const char* chunkname, const char* text, size_t size);
+  /// How many files were parsed into a chunk (each once), for the tests.
+  size_t Parsed() const;
 
  private:
-  // Keyed by path and mode: a text-only load never reuses a chunk another mode read.
-  std::unordered_map<std::string, std::string> bytecode_;
+  struct Chunk {
+    int status = 0;     // LUA_OK, or the failed parse's status
+    std::string bytes;  // the bytecode, or the failed parse's message
+  };
+  mutable std::mutex mutex_;
+  // Keyed by path and mode: a text-only load never reuses a chunk another mode read. A
+  // node never moves once made, so a chunk is read outside the lock.
+  std::unordered_map<std::string, Chunk> chunks_;
+  std::unordered_map<std::string, std::string> texts_;  // LoadText's, by chunk name
 };
 
 }  // namespace essaim

@@ -37,4 +37,14 @@ std::string WatchGuard(LuaGuard* g, long long now, bool interrupt);
 
 long long SteadyNowNs();
 
+/// With a library's fresh table on top of the stack (named `name`, as luaopen_* made it),
+/// closes its escapes from the watchdog (coroutine, os, debug) and lets the owner route io.
+/// `base_error`: the stack index of the base library's own error().
+void GuardLibrary(lua_State* L, const char* name, int base_error);
+
+/// Under globals (and package.loaded) coroutine, io, os, utf8, debug (io, os and debug not
+/// under the sandbox): empty tables that open their library into themselves, guarded, at
+/// the first read, write or pairs().
+void DeclareLazyLibraries(lua_State* L, bool sandbox);
+
 }  // namespace essaim

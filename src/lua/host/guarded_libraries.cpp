@@ -3,12 +3,14 @@
 // or bytecode.
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <lua.hpp>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/paths.h"
+#include "lua/host/compiled_scripts.h"
 #include "lua/host/guard_hook.h"
 
 namespace essaim {
@@ -41,7 +43,7 @@ int GuardedResume(lua_State* L) {
 // coroutine.wrap over the guarded resume; errors are re-raised with the caller's position,
 // as the original's.
 const char kGuardedWrap[] = R"(
-local create, resume, error = coroutine.create, coroutine.resume, error
+local create, resume, error = ...
 return function(f)
   local co = create(f)
   local function finish(ok, ...)
@@ -52,17 +54,23 @@ return function(f)
 end
 )";
 
-void GuardCoroutines(lua_State* L) {
-  lua_getglobal(L, "coroutine");
+// With coroutine's table on top: resume and wrap guarded. The wrap's text is compiled
+// once per run (when the state has the run's compiled scripts).
+void GuardCoroutines(lua_State* L, int base_error) {
   lua_getfield(L, -1, "resume");
   lua_pushcclosure(L, GuardedResume, 1);
   lua_setfield(L, -2, "resume");
-  if (luaL_loadbufferx(L, kGuardedWrap, sizeof kGuardedWrap - 1, "=coroutine.wrap", "t") == LUA_OK &&
-      lua_pcall(L, 0, 1, 0) == LUA_OK)
+  lua_getfield(L, -1, "create");  // the wrap's upvalues: create, resume, error
+  lua_getfield(L, -2, "resume");
+  lua_pushvalue(L, base_error);
+  CompiledScripts* scripts = GuardOf(L)->scripts;
+  const int loaded = scripts ? scripts->LoadText(L, "=coroutine.wrap", kGuardedWrap, sizeof kGuardedWrap - 1)
+                             : luaL_loadbufferx(L, kGuardedWrap, sizeof kGuardedWrap - 1, "=coroutine.wrap", "t");
+  lua_insert(L, -4);  // the chunk (or the error) under create, resume, error
+  if (loaded == LUA_OK && lua_pcall(L, 3, 1, 0) == LUA_OK)
     lua_setfield(L, -2, "wrap");
   else
-    lua_pop(L, 1);
-  lua_pop(L, 1);
+    lua_settop(L, lua_gettop(L) - (loaded == LUA_OK ? 1 : 4));
 }
 
 int TextOnlyLoad(lua_State* L) {
@@ -75,10 +83,24 @@ int TextOnlyLoad(lua_State* L) {
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
   return lua_gettop(L);
 }
+
+// require's roots, made canonical at the first require: two realpath calls per state were
+// ~4 µs of its ~90 µs set-up.
+void MakeRootsCanonical(LuaGuard* g) {
+  std::vector<std::string> real;
+  for (const std::string& folder : g->require_roots) {
+    std::string canonical = CanonicalPath(folder);
+    if (!canonical.empty()) real.push_back(std::move(canonical));
+  }
+  g->require_roots = std::move(real);
+  g->require_roots_canonical = true;
+}
+
 // package.searchers[2] under the sandbox: Lua files on package.path, as text only, and
 // only inside the guard's require roots: a script cannot set package.path to read
 // /etc/passwd through require's error messages.
 std::string FindAllowedModule(lua_State* L, LuaGuard* g, const std::string& name, std::string* tried) {
+  if (!g->require_roots_canonical) MakeRootsCanonical(g);
   std::string file_name = name;
   std::replace(file_name.begin(), file_name.end(), '.', '/');
   lua_getglobal(L, "package");
@@ -132,11 +154,8 @@ int TextOnlyLuaSearcher(lua_State* L) {
 }  // namespace
 
 void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders) {
-  guard->require_roots.clear();
-  for (const std::string& folder : folders) {
-    std::string real = CanonicalPath(folder);
-    if (!real.empty()) guard->require_roots.push_back(real);
-  }
+  guard->require_roots = folders;
+  guard->require_roots_canonical = false;
 }
 
 namespace {
@@ -203,40 +222,19 @@ void Wrap(lua_State* L, const char* field, lua_CFunction fn, lua_CFunction* orig
   lua_setfield(L, -2, field);
 }
 
-// Closes what escapes the watchdog, in every mode (the sandbox removes os and debug whole).
-void CloseEscapes(lua_State* L) {
+// Closes what escapes the watchdog in the base library, in every mode.
+void CloseBaseEscapes(lua_State* L) {
   LuaGuard* g = GuardOf(L);
   lua_pushglobaltable(L);
   Wrap(L, "setmetatable", GuardedSetmetatable, &g->original_setmetatable);
   Wrap(L, "xpcall", GuardedXpcall, &g->original_xpcall);
   lua_pop(L, 1);
-  if (lua_getglobal(L, "debug") == LUA_TTABLE) {
-    Wrap(L, "setmetatable", GuardedDebugSetmetatable, &g->original_debug_setmetatable);
-    Wrap(L, "sethook", RefusedSethook, nullptr);
-  }
-  lua_pop(L, 1);
-  if (lua_getglobal(L, "os") == LUA_TTABLE) Wrap(L, "exit", GuardedExit, nullptr);
-  lua_pop(L, 1);
 }
-}  // namespace
 
-void OpenGuardedLibraries(lua_State* L, bool sandbox) {
-  luaL_openlibs(L);
-  GuardCoroutines(L);
-  CloseEscapes(L);
-  if (!sandbox) return;
-  for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
-    lua_pushnil(L);
-    lua_setglobal(L, name);
-  }
+// The sandbox's package: no C libraries, Lua files as text from the allowed folders only.
+void SandboxPackage(lua_State* L) {
   lua_getglobal(L, "package");
   const int package = lua_gettop(L);
-  lua_getfield(L, package, "loaded");
-  for (const char* name : {"io", "os", "debug"}) {
-    lua_pushnil(L);
-    lua_setfield(L, -2, name);
-  }
-  lua_pop(L, 1);
   lua_pushnil(L);
   lua_setfield(L, package, "loadlib");
   lua_pushliteral(L, "");
@@ -249,8 +247,41 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox) {
   lua_rawseti(L, -2, 4);
   lua_pushnil(L);
   lua_rawseti(L, -2, 3);
-  lua_pop(L, 1);
-  lua_pop(L, 1);
+  lua_pop(L, 2);
+}
+}  // namespace
+
+void GuardLibrary(lua_State* L, const char* name, int base_error) {
+  LuaGuard* g = GuardOf(L);
+  if (std::strcmp(name, LUA_COLIBNAME) == 0) {
+    GuardCoroutines(L, base_error);
+  } else if (std::strcmp(name, LUA_DBLIBNAME) == 0) {
+    Wrap(L, "setmetatable", GuardedDebugSetmetatable, &g->original_debug_setmetatable);
+    Wrap(L, "sethook", RefusedSethook, nullptr);
+  } else if (std::strcmp(name, LUA_OSLIBNAME) == 0) {
+    Wrap(L, "exit", GuardedExit, nullptr);
+  } else if (std::strcmp(name, LUA_IOLIBNAME) == 0 && g->io_opened) {
+    g->io_opened(L, g->io_owner);
+  }
+}
+
+void OpenGuardedLibraries(lua_State* L, bool sandbox) {
+  for (const luaL_Reg& lib : {luaL_Reg{LUA_GNAME, luaopen_base},
+                              {LUA_LOADLIBNAME, luaopen_package},
+                              {LUA_TABLIBNAME, luaopen_table},
+                              {LUA_STRLIBNAME, luaopen_string},
+                              {LUA_MATHLIBNAME, luaopen_math}}) {
+    luaL_requiref(L, lib.name, lib.func, 1);
+    lua_pop(L, 1);
+  }
+  CloseBaseEscapes(L);
+  DeclareLazyLibraries(L, sandbox);
+  if (!sandbox) return;
+  for (const char* name : {"dofile", "loadfile"}) {
+    lua_pushnil(L);
+    lua_setglobal(L, name);
+  }
+  SandboxPackage(L);
   lua_getglobal(L, "load");
   lua_pushcclosure(L, TextOnlyLoad, 1);
   lua_setglobal(L, "load");

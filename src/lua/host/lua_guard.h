@@ -63,8 +63,16 @@ struct LuaGuard {
   bool always_armed = false;       // --sandbox: hooked from the first instruction
   std::atomic<bool> armed{false};  // the count hook is installed
   std::string name;                // "robot fb3" or "loop functions", for the stuck-in-C message
-  // --sandbox: the folders (canonical) `require` may load from, whatever package.path says.
+  // --sandbox: the folders `require` may load from, whatever package.path says; made
+  // canonical at the first `require` (two realpath calls were ~4 µs of a state's set-up).
   std::vector<std::string> require_roots;
+  bool require_roots_canonical = false;
+  // Called with the io library's table on top when a script first uses io (the controller
+  // routes io.write to its log), with `io_owner`.
+  void (*io_opened)(lua_State* L, void* owner) = nullptr;
+  void* io_owner = nullptr;
+  // Where the libraries' own Lua text is compiled once for the run; null: per state.
+  CompiledScripts* scripts = nullptr;
   // The library functions the guarded ones wrap, called directly: kept out of the Lua
   // state, so that debug.getupvalue cannot hand a script the original.
   lua_CFunction original_setmetatable = nullptr, original_debug_setmetatable = nullptr, original_xpcall = nullptr;
@@ -99,11 +107,13 @@ void CloseGuardedState(LuaGuard* guard);
 /// debug.sethook refused, __gc finalizers refused (Lua runs them with hooks off), xpcall
 /// message handlers skipped once the guard stopped the call, os.exit ending the run as an
 /// error. Under the sandbox, also without anything that reaches files, processes, native
-/// code or bytecode.
+/// code or bytecode. base, package, table, string and math are opened; coroutine, io, os,
+/// utf8 and debug are opened at their first use (docs/sandbox.md says what differs).
 void OpenGuardedLibraries(lua_State* L, bool sandbox);
 
 /// Under the sandbox, `require` loads only files inside these folders (and below): the
-/// arena's folder and the script's own. Symlinks and ".." are resolved before the check.
+/// arena's folder and the script's own. Symlinks and ".." are resolved (at the first
+/// `require`) before the check.
 void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders);
 
 /// Brackets one call into Lua: resets the budget, arms the wall clock and puts the state in

@@ -12,6 +12,7 @@ lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
   guard->limit = options.memory_limit;
   guard->budget = options.instruction_limit;
   guard->wall_seconds = options.wall_seconds;
+  guard->scripts = options.scripts;
   lua_State* L = lua_newstate(GuardedAlloc, guard);
   guard->state = L;
   if (!L) return nullptr;

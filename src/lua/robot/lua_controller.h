@@ -63,7 +63,6 @@ class LuaController {
   /// closed if it ran out of memory; true if the call went through. The error ends with
   /// " (" where name ")", e.g. " (in step)".
   bool Finish(int status, const char* where, const char* name, std::string* error);
-  void RouteIoWrite(::lua_State* L);
   void EndWrittenLine();
 
   ::lua_State* L_ = nullptr;

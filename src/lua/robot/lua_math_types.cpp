@@ -29,10 +29,18 @@ Q* CheckQ(lua_State* L, int i) { return static_cast<Q*>(luaL_checkudata(L, i, kQ
 // Metatables are also kept under light-userdata keys: fetching them by address avoids
 // interning the type name for every value pushed (positioning pushes two per robot-step).
 const char kV2Key = 0, kV3Key = 0, kQKey = 0;
+void MakeMetaOf(lua_State* L, const char* key);
+// A type's metatable is made with its first value (2 KB a state for the three, which many
+// controllers never use): no value of the type exists before it, so luaL_checkudata and
+// luaL_testudata answer the same either way.
 template <class T>
 T* NewUd(lua_State* L, const char* key) {
   auto* p = static_cast<T*>(lua_newuserdatauv(L, sizeof(T), 0));
-  lua_rawgetp(L, LUA_REGISTRYINDEX, key);
+  if (lua_rawgetp(L, LUA_REGISTRYINDEX, key) == LUA_TNIL) {
+    lua_pop(L, 1);
+    MakeMetaOf(L, key);
+    lua_rawgetp(L, LUA_REGISTRYINDEX, key);
+  }
   lua_setmetatable(L, -2);
   return p;
 }
@@ -418,32 +426,36 @@ void MakeMeta(lua_State* L, const char* name, const char* key, const luaL_Reg* m
   luaL_setfuncs(L, methods, 0);  // methods live in the metatable, found by __index
   lua_rawsetp(L, LUA_REGISTRYINDEX, key);
 }
+const luaL_Reg v2_meta[] = {{"__index", V2Index},       {"__newindex", V2NewIndex}, {"__add", V2Add}, {"__sub", V2Sub},
+                            {"__unm", V2Unm},           {"__mul", V2Mul},           {"__div", V2Div}, {"__eq", V2Eq},
+                            {"__tostring", V2ToString}, {nullptr, nullptr}};
+const luaL_Reg v2_methods[] = {{"length", V2Length}, {"dot", V2Dot},     {"normalize", V2Normalize},
+                               {"rotate", V2Rotate}, {"cross", V2Cross}, {"angle", V2Angle},
+                               {nullptr, nullptr}};
+const luaL_Reg v3_meta[] = {{"__index", V3Index},       {"__newindex", V3NewIndex}, {"__add", V3Add}, {"__sub", V3Sub},
+                            {"__unm", V3Unm},           {"__mul", V3Mul},           {"__div", V3Div}, {"__eq", V3Eq},
+                            {"__tostring", V3ToString}, {nullptr, nullptr}};
+const luaL_Reg v3_methods[] = {{"length", V3Length}, {"dot", V3Dot},     {"normalize", V3Normalize},
+                               {"rotate", V3Rotate}, {"cross", V3Cross}, {nullptr, nullptr}};
+const luaL_Reg q_meta[] = {{"__index", QIndex}, {"__newindex", QNewIndex}, {"__mul", QMul},
+                           {"__eq", QEq},       {"__tostring", QToString}, {nullptr, nullptr}};
+const luaL_Reg q_methods[] = {{"normalize", QNormalize},
+                              {"inverse", QInverse},
+                              {"toangleaxis", QToAngleAxis},
+                              {"toeulerangles", QToEuler},
+                              {nullptr, nullptr}};
+
+void MakeMetaOf(lua_State* L, const char* key) {
+  if (key == &kV2Key)
+    MakeMeta(L, kV2, key, v2_meta, v2_methods);
+  else if (key == &kV3Key)
+    MakeMeta(L, kV3, key, v3_meta, v3_methods);
+  else
+    MakeMeta(L, kQ, key, q_meta, q_methods);
+}
 }  // namespace
 
 void OpenMathTypes(lua_State* L) {
-  static const luaL_Reg v2_meta[] = {
-      {"__index", V2Index},       {"__newindex", V2NewIndex}, {"__add", V2Add}, {"__sub", V2Sub},
-      {"__unm", V2Unm},           {"__mul", V2Mul},           {"__div", V2Div}, {"__eq", V2Eq},
-      {"__tostring", V2ToString}, {nullptr, nullptr}};
-  static const luaL_Reg v2_methods[] = {{"length", V2Length}, {"dot", V2Dot},     {"normalize", V2Normalize},
-                                        {"rotate", V2Rotate}, {"cross", V2Cross}, {"angle", V2Angle},
-                                        {nullptr, nullptr}};
-  static const luaL_Reg v3_meta[] = {
-      {"__index", V3Index},       {"__newindex", V3NewIndex}, {"__add", V3Add}, {"__sub", V3Sub},
-      {"__unm", V3Unm},           {"__mul", V3Mul},           {"__div", V3Div}, {"__eq", V3Eq},
-      {"__tostring", V3ToString}, {nullptr, nullptr}};
-  static const luaL_Reg v3_methods[] = {{"length", V3Length}, {"dot", V3Dot},     {"normalize", V3Normalize},
-                                        {"rotate", V3Rotate}, {"cross", V3Cross}, {nullptr, nullptr}};
-  static const luaL_Reg q_meta[] = {{"__index", QIndex}, {"__newindex", QNewIndex}, {"__mul", QMul},
-                                    {"__eq", QEq},       {"__tostring", QToString}, {nullptr, nullptr}};
-  static const luaL_Reg q_methods[] = {{"normalize", QNormalize},
-                                       {"inverse", QInverse},
-                                       {"toangleaxis", QToAngleAxis},
-                                       {"toeulerangles", QToEuler},
-                                       {nullptr, nullptr}};
-  MakeMeta(L, kV2, &kV2Key, v2_meta, v2_methods);
-  MakeMeta(L, kV3, &kV3Key, v3_meta, v3_methods);
-  MakeMeta(L, kQ, &kQKey, q_meta, q_methods);
   lua_register(L, "vector2", V2New);
   lua_register(L, "vector3", V3New);
   lua_register(L, "quaternion", QNew);
