@@ -102,8 +102,9 @@ def project(rows, cores):
         if not k1:
             continue
         kk = k["regions"]
-        p = (k1[0]["phys_ms"] - k["phys_ms"]) * kk / (kk - 1)
-        m = max(0.0, k1[0]["phys_ms"] - p)
+        # Clamped: on a busy machine the split run can come out slower than the serial one.
+        p = min(k1[0]["phys_ms"], max(0.0, (k1[0]["phys_ms"] - k["phys_ms"]) * kk / (kk - 1)))
+        m = k1[0]["phys_ms"] - p
         work = b["sense_cpu_ms"] + b["ctrl_cpu_ms"]
         extra = max(0.0, b["wall_ms"] - b["phys_ms"] - work)
         for c in cores:
