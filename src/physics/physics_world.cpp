@@ -465,10 +465,11 @@ constexpr double kCircleSlack = 1e-3;
 
 namespace {
 /// The bounding circle of every shape (non-finite ones dropped: no ray can hit them
-/// either), in the order of the world's body list.
+/// either), filed in the ray grid by their boxes.
 template <class Impl>
-void BoundingCircles(Impl* im, std::vector<ShapeCircle>* circles) {
-  circles->clear();
+void FileRayCircles(Impl* im) {
+  std::vector<ShapeCircle>& circles = im->ray_circles;
+  circles.clear();
   for (auto& region : im->regions)
     for (b2Body* b = region.world->GetBodyList(); b; b = b->GetNext()) {
       for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
@@ -483,43 +484,22 @@ void BoundingCircles(Impl* im, std::vector<ShapeCircle>* circles) {
         if (kind == BodyKind::Robot) c.robot = index;
         HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
         c.fixture = f;
-        circles->push_back(c);
+        circles.push_back(c);
       }
     }
-}
-
-/// Every shape's bounding circle, filed in the ray grid by their boxes. The circles are
-/// stored in the order of the grid cell holding their lower-left corner, so that a gather,
-/// which reads the circles of a few neighbouring cells, reads neighbouring memory (in the
-/// body list's order they lie anywhere in the arena). A ray's closest distance does not
-/// depend on the order its candidates come in.
-template <class Impl>
-void FileRayCircles(Impl* im) {
-  std::vector<ShapeCircle>& found = im->ray_circles_found;
-  BoundingCircles(im, &found);
-  const int n = static_cast<int>(found.size());
+  const int n = static_cast<int>(circles.size());
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
-  if (n > 0) lo = hi = Vec2(found[0].cx, found[0].cy);
-  for (const ShapeCircle& c : found) {
+  if (n > 0) lo = hi = Vec2(circles[0].cx, circles[0].cy);
+  for (const ShapeCircle& c : circles) {
     lo = lo.cwiseMin(Vec2(c.cx - c.r, c.cy - c.r));
     hi = hi.cwiseMax(Vec2(c.cx + c.r, c.cy + c.r));
   }
   // A robot flung far away must not make the grid huge: past a few cells per shape, the
   // cells grow instead (queries get slower, never wrong). Room for a foot-bot-sized circle
   // in four cells each.
-  UniformGrid& grid = im->ray_grid;
-  grid.CoverSpan(lo, hi, kRayCellSize, std::max(4096.0, 4.0 * n));
-  grid.Reserve(4 * found.size(), found.size());
-  std::vector<ShapeCircle>& circles = im->ray_circles;
-  circles.resize(found.size());
-  im->ray_circle_cells.resize(static_cast<size_t>(grid.Columns()) * grid.Rows() + 1);
-  BucketSort(
-      n, &im->ray_circle_cells,
-      [&](int i, auto&& file) {
-        file(grid.Row(found[i].cy - found[i].r) * grid.Columns() + grid.Column(found[i].cx - found[i].r));
-      },
-      [&](int slot, int i) { circles[slot] = found[i]; });
-  grid.FileBoxes(
+  im->ray_grid.CoverSpan(lo, hi, kRayCellSize, std::max(4096.0, 4.0 * n));
+  im->ray_grid.Reserve(4 * circles.size(), circles.size());
+  im->ray_grid.FileBoxes(
       n, [&](int i) { return Vec2(circles[i].cx - circles[i].r, circles[i].cy - circles[i].r); },
       [&](int i) { return Vec2(circles[i].cx + circles[i].r, circles[i].cy + circles[i].r); });
 }

@@ -73,9 +73,7 @@ struct PhysicsWorld::Impl {
   /// Ray candidates come from a grid of these circles (EnsureRayGrid), rebuilt at the first
   /// query after shapes moved: every change to a body's place or to the set of shapes counts
   /// up `shapes_moved` (never during a parallel stage; queries only read it).
-  std::vector<ShapeCircle> ray_circles;        // in grid cell order (FileRayCircles)
-  std::vector<ShapeCircle> ray_circles_found;  // in body list order: scratch
-  std::vector<int> ray_circle_cells;           // the cell order's counting sort
+  std::vector<ShapeCircle> ray_circles;
   UniformGrid ray_grid;
   uint64_t shapes_moved = 0;
   std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
