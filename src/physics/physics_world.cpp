@@ -33,8 +33,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
     // move millimetres per sub-step, so it only costs time (~5% of a 1000-robot step).
     region.world->SetContinuousPhysics(false);
     // essaim applies no forces (the servo is a joint), so the forces Box2D clears after
-    // each step are always zero: its walk over every body to clear them (a tenth of the
-    // physics at 100 000 robots, where the bodies no longer fit in cache) changes nothing.
+    // each step are always zero: its walk over every body to clear them is skipped.
     region.world->SetAutoClearForces(false);
     b2BodyDef gd;
     region.ground = region.world->CreateBody(&gd);
