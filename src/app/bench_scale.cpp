@@ -1,7 +1,8 @@
 // `essaim bench scale`: the avoidance scenario grown at constant density (1 000 foot-bots per
 // 32 m × 32 m, 100 boxes and 100 cylinders per 1 000 robots), so that what grows faster than
-// the robot count shows: set-up and teardown seconds, µs per robot-step by stage, peak memory
-// per robot, real-time factor on 1 and N threads.
+// the robot count shows: set-up and teardown seconds, µs per robot-step by stage (after warm-up
+// ticks, so that the Lua states' first collections do not weigh on the small sizes), peak
+// memory per robot, real-time factor on 1 and N threads.
 #include "app/bench_scale.h"
 
 #include <malloc.h>
@@ -80,6 +81,17 @@ bool ResetPeakRss() {
   return static_cast<bool>(clear);
 }
 
+StageTimes Minus(const StageTimes& a, const StageTimes& b) {
+  StageTimes d;
+  d.act = a.act - b.act;
+  d.physics = a.physics - b.physics;
+  d.media = a.media - b.media;
+  d.loop_functions = a.loop_functions - b.loop_functions;
+  d.sense = a.sense - b.sense;
+  d.control = a.control - b.control;
+  return d;
+}
+
 struct ScaleRun {
   double setup = 0, wall = 0, simulated = 0;  // s
   double teardown = 0;                        // s: the World (Lua states included) and the Model freed
@@ -89,12 +101,12 @@ struct ScaleRun {
   uint64_t ticks = 0;
 };
 
-/// Loads and builds the scaled scenario on `threads` threads (the set-up), then steps it
-/// to its end. False (error printed) on failure.
+/// Loads and builds the scaled scenario on `threads` threads (the set-up), runs the warm-up
+/// ticks untimed, then times the rest to the end. False (error printed) on failure.
 bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun* out) {
   const auto t0 = Clock::now();
   LoadOptions lo;
-  lo.ticks = a.ticks;
+  lo.ticks = a.warmup + a.ticks;
   lo.threads = threads;
   lo.overrides = ScaleOverrides(robots);
   ErrorList errors;
@@ -113,14 +125,17 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
     return false;
   }
   out->setup = SecondsSince(t0);
+  StepStatus status = StepStatus::Running;
+  while (world->tick < static_cast<uint64_t>(a.warmup) && status == StepStatus::Running) status = Step(*world);
+  const StageTimes warm = world->times;
+  const uint64_t warm_ticks = world->tick;
   const auto t1 = Clock::now();
-  while (Step(*world) == StepStatus::Running) {
-  }
+  while (status == StepStatus::Running) status = Step(*world);
   out->wall = SecondsSince(t1);
-  out->times = world->times;
+  out->times = Minus(world->times, warm);
   out->robots = model->robots.size();
-  out->ticks = world->tick;
-  out->simulated = world->tick * model->experiment.TickLength();
+  out->ticks = world->tick - warm_ticks;
+  out->simulated = out->ticks * model->experiment.TickLength();
   out->peak_kb = PeakRssKb();
   const auto t2 = Clock::now();
   world.reset();
@@ -130,19 +145,26 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
 }
 
 void PrintHeader(int threads) {
-  std::printf("%8s %8s %7s %9s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "down-s", "us/r-step", "phys", "sense",
-              "ctrl", "other", "peakKB/r", "rtf-1");
+  std::printf("%8s %8s %7s %9s %8s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "down-s", "us/r-step", "vs-first",
+              "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1");
   if (threads > 1) std::printf(" %8s", ("rtf-" + std::to_string(threads)).c_str());
   std::printf("\n");
 }
 
-void PrintRow(const ScaleRun& one, const ScaleRun* many) {
+/// µs per robot-step on one thread.
+double PerRobotStep(const ScaleRun& run) {
+  return run.wall * 1e6 / std::max(1.0, static_cast<double>(run.robots) * run.ticks);
+}
+
+/// `first_cost`: the first size's µs per robot-step, for the vs-first column.
+void PrintRow(const ScaleRun& one, const ScaleRun* many, double first_cost) {
   const double per = 1e6 / std::max(1.0, static_cast<double>(one.robots) * one.ticks);
   const StageTimes& t = one.times;
   const double other = one.wall - t.physics - t.sense - t.control;
-  std::printf("%8zu %8.2f %7.2f %9.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.teardown,
-              one.wall * per, t.physics * per, t.sense * per, t.control * per, other * per,
-              static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots), one.simulated / one.wall);
+  std::printf("%8zu %8.2f %7.2f %9.2f %8.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.teardown,
+              one.wall * per, PerRobotStep(one) / first_cost, t.physics * per, t.sense * per, t.control * per,
+              other * per, static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots),
+              one.simulated / one.wall);
   if (many) std::printf(" %8.2f", many->simulated / many->wall);
   std::printf("\n");
   std::fflush(stdout);
@@ -152,12 +174,14 @@ void PrintRow(const ScaleRun& one, const ScaleRun* many) {
 int BenchScale(const BenchScaleArgs& a) {
   const int threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
   PrintHeader(threads);
+  double first_cost = 0;
   for (long long robots : a.sizes) {
     if (!ResetPeakRss()) std::fputs("bench scale: cannot reset the peak resident set; peaks only grow\n", stderr);
     ScaleRun one, many;
     if (!RunScaled(a, robots, 1, &one)) return kExitBadInput;
     if (threads > 1 && !RunScaled(a, robots, threads, &many)) return kExitBadInput;
-    PrintRow(one, threads > 1 ? &many : nullptr);
+    if (first_cost == 0) first_cost = PerRobotStep(one);
+    PrintRow(one, threads > 1 ? &many : nullptr, first_cost);
   }
   return kExitOk;
 }

@@ -9,8 +9,9 @@ namespace essaim {
 struct BenchScaleArgs {
   std::string dir;  // holds avoidance_1000.argos
   std::vector<long long> sizes = {1000, 10000, 100000};
-  long long ticks = 50;
-  int threads = 0;  // the second real-time factor's thread count; 0: the hardware's
+  long long ticks = 50;   // timed ticks per run
+  long long warmup = 20;  // ticks run before the timed ones, untimed (the Lua states' first collections)
+  int threads = 0;        // the second real-time factor's thread count; 0: the hardware's
 };
 
 /// Prints one row per size; returns the exit code.

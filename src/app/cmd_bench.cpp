@@ -240,6 +240,10 @@ CLI::App* AddScaleSubcommand(CLI::App& bench, BenchScaleArgs* s) {
       ->type_name("N")
       ->check(IntegerIn(1, 1000000000))
       ->capture_default_str();
+  scale->add_option("--warmup", s->warmup, "ticks run before the timed ones, untimed")
+      ->type_name("N")
+      ->check(IntegerIn(0, 1000000000))
+      ->capture_default_str();
   scale->add_option("--threads", s->threads, "thread count of the second real-time factor (default: the hardware's)")
       ->type_name("N")
       ->check(IntegerIn(1, 1024));

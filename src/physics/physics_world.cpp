@@ -32,6 +32,9 @@ void MakeRegionWorlds(size_t count, std::vector<PhysicsWorld::Impl::Region>* reg
     // Continuous collision (time of impact) guards against tunnelling at speed; foot-bots
     // move millimetres per sub-step, so it only costs time (~5% of a 1000-robot step).
     region.world->SetContinuousPhysics(false);
+    // essaim applies no forces (the servo is a joint), so the forces Box2D clears after
+    // each step are always zero: its walk over every body to clear them is skipped.
+    region.world->SetAutoClearForces(false);
     b2BodyDef gd;
     region.ground = region.world->CreateBody(&gd);
   }

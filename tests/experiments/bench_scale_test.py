@@ -16,9 +16,15 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
     lines = r.stdout.strip().splitlines()
     header = lines[0].split()
     assert header == [
-        "robots", "setup-s", "down-s", "us/r-step", "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1", "rtf-2"
+        "robots", "setup-s", "down-s", "us/r-step", "vs-first", "phys", "sense", "ctrl", "other", "peakKB/r",
+        "rtf-1", "rtf-2"
     ]
     assert len(lines) == 3
+    rows = [dict(zip(header, line.split())) for line in lines[1:]]
+    # Each size's cost over the first size's (printed to 0.01 each).
+    assert rows[0]["vs-first"] == "1.00"
+    ratio = float(rows[1]["us/r-step"]) / float(rows[0]["us/r-step"])
+    assert abs(float(rows[1]["vs-first"]) - ratio) <= 0.01 * ratio + 0.01
     for line, robots in zip(lines[1:], (100, 400)):
         row = dict(zip(header, line.split()))
         assert int(row["robots"]) == robots  # the scenario scaled to the size asked
@@ -33,6 +39,16 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         assert 10 < float(row["peakKB/r"]) < 1e6
         # 5 ticks of 0.1 s: the real-time factor is the simulated 0.5 s over the wall time.
         assert float(row["rtf-1"]) > 0 and float(row["rtf-2"]) > 0
+
+
+def test_scale_warmup_is_an_option_with_a_default_and_a_range():
+    r = run_scale("--help")
+    assert r.returncode == 0 and "--warmup N=20" in r.stdout
+    r = run_scale("--sizes", "50", "--ticks", "2", "--warmup", "0", "--threads", "1")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip().splitlines()[1].split()[0] == "50"
+    r = run_scale("--sizes", "50", "--ticks", "2", "--warmup", "-1")
+    assert r.returncode == 2 and "--warmup" in r.stderr
 
 
 def test_scale_on_one_thread_prints_no_second_factor():
