@@ -147,7 +147,8 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
 void PrintHeader(int threads) {
   std::printf("%8s %8s %7s %9s %8s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "down-s", "us/r-step", "vs-first",
               "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1");
-  if (threads > 1) std::printf(" %8s", ("rtf-" + std::to_string(threads)).c_str());
+  if (threads > 1)
+    std::printf(" %8s %8s", ("rtf-" + std::to_string(threads)).c_str(), ("setup-" + std::to_string(threads)).c_str());
   std::printf("\n");
 }
 
@@ -165,7 +166,7 @@ void PrintRow(const ScaleRun& one, const ScaleRun* many, double first_cost) {
               one.wall * per, PerRobotStep(one) / first_cost, t.physics * per, t.sense * per, t.control * per,
               other * per, static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots),
               one.simulated / one.wall);
-  if (many) std::printf(" %8.2f", many->simulated / many->wall);
+  if (many) std::printf(" %8.2f %8.2f", many->simulated / many->wall, many->setup);
   std::printf("\n");
   std::fflush(stdout);
 }

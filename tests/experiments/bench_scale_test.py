@@ -17,7 +17,7 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
     header = lines[0].split()
     assert header == [
         "robots", "setup-s", "down-s", "us/r-step", "vs-first", "phys", "sense", "ctrl", "other", "peakKB/r",
-        "rtf-1", "rtf-2"
+        "rtf-1", "rtf-2", "setup-2"
     ]
     assert len(lines) == 3
     rows = [dict(zip(header, line.split())) for line in lines[1:]]
@@ -39,6 +39,8 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         assert 10 < float(row["peakKB/r"]) < 1e6
         # 5 ticks of 0.1 s: the real-time factor is the simulated 0.5 s over the wall time.
         assert float(row["rtf-1"]) > 0 and float(row["rtf-2"]) > 0
+        # The set-up again, on 2 threads (the Lua states are made on the pool).
+        assert float(row["setup-2"]) > 0
 
 
 def test_scale_warmup_is_an_option_with_a_default_and_a_range():
