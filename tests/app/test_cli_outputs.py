@@ -215,7 +215,9 @@ def test_an_output_in_a_missing_folder_is_bad_input(recorded, tmp_path):
 
 def test_summary_reports_setup_seconds_in_the_stage_that_spent_them(tmp_path):
     # Each of the 4 robots' states spends 0.1 s CPU in its script's top level and 0.2 s in
-    # init(): at least 0.4 s and 0.8 s of wall clock, in `lua_states` and `init`.
+    # init(): about 0.4 s and 0.8 s of wall clock, in `lua_states` and `init`. os.clock() is
+    # the whole process's CPU time, so the run's other threads shorten each spin a little:
+    # a 10 % margin.
     (tmp_path / "slow.lua").write_text(
         "local function spin(s) local t = os.clock() while os.clock() - t < s do end end\n"
         "spin(0.1)\n"
@@ -230,7 +232,7 @@ def test_summary_reports_setup_seconds_in_the_stage_that_spent_them(tmp_path):
     setup = s["setup_seconds"]
     assert list(setup) == ["load", "placement", "world", "lua_states", "init", "total"]
     assert all(v >= 0 for v in setup.values())
-    assert setup["lua_states"] >= 0.4 and setup["init"] >= 0.8
+    assert setup["lua_states"] >= 0.36 and setup["init"] >= 0.72
     parts = sum(v for k, v in setup.items() if k != "total")
     assert abs(setup["total"] - parts) < 1e-9
     # wall_seconds counts from the world's set-up on (the load and placement come before).
