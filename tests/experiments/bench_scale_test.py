@@ -39,8 +39,9 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         assert 10 < float(row["peakKB/r"]) < 1e6
         # 5 ticks of 0.1 s: the real-time factor is the simulated 0.5 s over the wall time.
         assert float(row["rtf-1"]) > 0 and float(row["rtf-2"]) > 0
-        # The set-up again, on 2 threads (the Lua states are made on the pool).
-        assert float(row["setup-2"]) > 0
+        # The set-up again, on 2 threads (the Lua states are made on the pool); a few
+        # hundred robots take milliseconds, printed to 0.01 s.
+        assert 0 <= float(row["setup-2"]) <= float(row["setup-s"]) + 1
 
 
 def test_scale_warmup_is_an_option_with_a_default_and_a_range():
