@@ -57,7 +57,18 @@ void BeginTick(World& w) {
 // ~0.1 µs a robot against ~5-10 µs to wake the pool: per-robot passes this cheap pay off on
 // threads from a few hundred robots. Balanced: the tick does not wait for a worker slow to
 // wake (it finds nothing left).
-constexpr int kParallelActMin = 256;
+constexpr int kParallelCheapMin = 256;
+
+// `pass(begin, end)` over every robot: on the pool when there are enough robots to pay for
+// waking it, else here.
+template <typename Pass>
+void ForEachRobotCheap(World& w, Pass& pass) {
+  const int n = static_cast<int>(w.robots.size());
+  if (n >= kParallelCheapMin)
+    w.pool->ParallelForBalanced(n, pass);
+  else
+    pass(0, n);
+}
 
 // Commands the controllers set last tick. First each robot's wheels, scanner, LEDs and RAB
 // payload (its own state and servo only: any thread), then gripper and turret, which make
@@ -68,10 +79,7 @@ void ActStage(World& w) {
   auto act = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) ActRobotOwnState(m, m.robots[i], w.robots[i], w.physics);
   };
-  if (n >= kParallelActMin)
-    w.pool->ParallelForBalanced(n, act);
-  else
-    act(0, n);
+  ForEachRobotCheap(w, act);
   for (int i = 0; i < n; ++i) ActRobotJoints(m, m.robots[i], w.robots[i], w.physics);
 }
 
@@ -95,14 +103,10 @@ void PhysicsStage(World& w) {
   const Model& m = w.model;
   w.physics.Step(m.experiment.TickLength(), m.physics.iterations, PhysicsRegionRunner(w));
   // Each robot's own battery and scanner, from its body's pose: any thread.
-  const int n = static_cast<int>(w.robots.size());
   auto update = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) UpdateRobotComponents(m, m.robots[i], w.robots[i], w.physics, w.tick);
   };
-  if (n >= kParallelActMin)
-    w.pool->ParallelForBalanced(n, update);
-  else
-    update(0, n);
+  ForEachRobotCheap(w, update);
 }
 
 // Who hears whom, where the LEDs are, after the robots moved.
