@@ -130,15 +130,6 @@ TEST(RegionStepping, GripAcrossTheBoundaryHoldsThroughMigrations) {
   EXPECT_EQ(w.physics.Gripped(0).kind, BodyKind::Obstacle);
 }
 
-const char* kWander = R"(
-function step()
-  if robot.random.uniform() < 0.1 then
-    local turn = robot.random.gaussian(5)
-    robot.wheels.set_velocity(15 - turn, 15 + turn)
-  end
-end
-)";
-
 // A crowd in a 2 × 2 m pen across the boundary, a movable cylinder among them.
 std::string Crowd(const std::string& engines) {
   const std::string arena = Box("n", 0, 1, 2.2, 0.1, 0.5) + Box("s", 0, -1, 2.2, 0.1, 0.5) +
@@ -160,7 +151,7 @@ struct CrowdRun {
 
 CrowdRun RunCrowd(const std::string& engines, int threads) {
   TempDir d;
-  d.Write("wander.lua", kWander);
+  d.Write("wander.lua", kWanderController);
   LoadOptions lo;
   lo.threads = threads;
   Scene s = Load(d, Crowd(engines), lo);

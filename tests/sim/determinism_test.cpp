@@ -8,15 +8,6 @@ namespace essaim {
 namespace {
 using namespace essaim::testing;
 
-const char* kWander = R"(
-function step()
-  if robot.random.uniform() < 0.1 then
-    local turn = robot.random.gaussian(5)
-    robot.wheels.set_velocity(15 - turn, 15 + turn)
-  end
-end
-)";
-
 std::string Swarm(int seed) {
   std::string arena =
       "<box id=\"w1\" size=\"0.1,4,0.5\" movable=\"false\"><body position=\"2,0,0\"/></box>"
@@ -34,7 +25,7 @@ std::string Swarm(int seed) {
 
 uint64_t RunHash(int seed, int threads) {
   TempDir d;
-  d.Write("wander.lua", kWander);
+  d.Write("wander.lua", kWanderController);
   LoadOptions lo;
   lo.threads = threads;
   Scene s = Load(d, Swarm(seed), lo);

@@ -17,6 +17,17 @@
 
 namespace essaim::testing {
 
+/// A controller that drives on and now and then turns by a random amount: robots that
+/// spread, meet and collide, drawing on their random streams every step.
+inline constexpr const char* kWanderController = R"(
+function step()
+  if robot.random.uniform() < 0.1 then
+    local turn = robot.random.gaussian(5)
+    robot.wheels.set_velocity(15 - turn, 15 + turn)
+  end
+end
+)";
+
 /// A fresh folder under /tmp, removed at destruction.
 class TempDir {
  public:
