@@ -1,5 +1,5 @@
-// coroutine, io, os, utf8 and debug are opened at a state's first use of them
-// (lua/host/lazy_libraries.cpp): a controller that uses one sees it as before.
+// table, string, package, coroutine, io, os, utf8 and debug are opened at a state's first
+// use of them (lua/host/lazy_libraries.cpp): a controller that uses one sees it as before.
 #include <gtest/gtest.h>
 
 #include "support/scene.h"
@@ -13,11 +13,14 @@ struct Outcome {
   std::string error;  // the first controller error, or the load error, or ""
 };
 
-// Loads `script` as robot fb0's controller (with `module.lua` beside it) and steps once.
-Outcome StepOnce(const std::string& script, bool sandbox = false) {
+// Loads `script` as robot fb0's controller (with `module.lua` and `files` beside it) and
+// steps once.
+Outcome StepOnce(const std::string& script, bool sandbox = false,
+                 const std::vector<std::pair<std::string, std::string>>& files = {}) {
   TempDir d;
   d.Write("c.lua", script);
   d.Write("module.lua", "return {answer = 42}");
+  for (const auto& [name, text] : files) d.Write(name, text);
   Outcome run;
   SimOptions so;
   so.lua.sandbox = sandbox;
@@ -42,13 +45,17 @@ function step()
   assert(math.type(os.time()) == "integer")
   assert(utf8.char(72, 233) == "H\u{e9}" and utf8.len("H\u{e9}") == 2)
   assert(("%d-%s"):format(3, "x") == "3-x" and string.rep("ab", 2) == "abab")
+  local t = {}
+  table.insert(t, "b")
+  table.insert(t, 1, "a")
+  assert(table.concat(t, ",") == "a,b")
   local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
   assert(gen(1) == 2 and gen(5) == 10)
   local co = coroutine.create(function() coroutine.yield(7) end)
   local ok, v = coroutine.resume(co)
   assert(ok and v == 7 and coroutine.status(co) == "suspended")
   local ok2, err = pcall(coroutine.wrap(function() error("boom") end))
-  assert(not ok2 and err:find("^[^:]*c.lua:15: boom$"), err)  -- one position, as Lua's wrap
+  assert(not ok2 and err:find("^[^:]*c.lua:19: boom$"), err)  -- one position, as Lua's wrap
   assert(debug.traceback("here"):find("stack traceback:"))
   assert(require("module").answer == 42 and package.loaded.module.answer == 42)
 end
@@ -76,6 +83,48 @@ function step() end
   EXPECT_EQ(r.error, "");
 }
 
+TEST(LazyLibraries, StringsHaveTheirMetatableBeforeTheLibraryOpens) {
+  Outcome r = StepOnce(R"(
+assert("10" + 1 == 11 and "3" * "4" == 12 and -"2" == -2 and "7" // 2 == 3)  -- Lua's coercions
+assert(#"abc" == 3 and "a" .. 1 == "a1" and rawget(string, "upper") == nil)   -- not opened yet
+assert(getmetatable("").__index == string)
+assert(("abc"):upper() == "ABC" and rawget(string, "upper") ~= nil)          -- a method opens it
+assert(getmetatable("").__index == string and "5" - 1 == 4)
+function string.shout(s) return s:upper() .. "!" end                       -- a script's own method
+assert(("hi"):shout() == "HI!")
+function step() end
+)");
+  EXPECT_EQ(r.error, "");
+}
+
+TEST(LazyLibraries, RequireOpensPackageAndReadsTheScriptsPath) {
+  Outcome r = StepOnce(R"(
+local kept = require                                  -- the placeholder's require
+assert(rawget(package, "path") == nil)
+assert(kept("module").answer == 42 and package.loaded.module.answer == 42)
+assert(require ~= kept and type(package.searchers) == "table")  -- Lua's own from now on
+local folder = package.path:match("^(.-)%?%.lua")      -- the script's folder comes first
+package.path = folder .. "?.mod;" .. package.path     -- read by require's searchers
+assert(kept("other").name == "other" and require("other").name == "other")
+function step() end
+)",
+                       false, {{"other.mod", "return {name = 'other'}"}});
+  EXPECT_EQ(r.error, "");
+}
+
+TEST(LazyLibraries, AScriptsRequireStaysWhenPackageOpens) {
+  Outcome r = StepOnce(R"(
+local original = require
+local calls = 0
+local function mine(name) calls = calls + 1 return original(name) end
+require = mine
+assert(package.config ~= nil and require == mine)     -- package opened by a read
+assert(require("module").answer == 42 and calls == 1)
+function step() end
+)");
+  EXPECT_EQ(r.error, "");
+}
+
 TEST(LazyLibraries, TheWatchdogsGuardsHoldOnceOpened) {
   Outcome sethook = StepOnce("function step() debug.sethook(print, 'l') end");
   EXPECT_NE(sethook.error.find("debug.sethook is not available"), std::string::npos) << sethook.error;
@@ -93,6 +142,7 @@ function step()
   assert(utf8.char(65) == "A" and package.loaded.utf8 == utf8)
   assert(coroutine.wrap(function() coroutine.yield(3) end)() == 3)
   assert(require("module").answer == 42)
+  assert(package.loadlib == nil and package.cpath == "" and package.searchers[3] == nil)
 end
 )",
                        /*sandbox=*/true);

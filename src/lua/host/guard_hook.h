@@ -42,9 +42,16 @@ long long SteadyNowNs();
 /// `base_error`: the stack index of the base library's own error().
 void GuardLibrary(lua_State* L, const char* name, int base_error);
 
-/// Under globals (and package.loaded) coroutine, io, os, utf8, debug (io, os and debug not
-/// under the sandbox): empty tables that open their library into themselves, guarded, at
-/// the first read, write or pairs().
+/// Under globals (and package.loaded) table, string, package, coroutine, utf8, io, os and
+/// debug (io, os and debug not under the sandbox): empty tables that open their library
+/// into themselves, guarded, at the first read, write or pairs(); `require` opens package
+/// at its first call.
 void DeclareLazyLibraries(lua_State* L, bool sandbox);
+
+/// Whether the value at `index` is such a table, not opened yet. Runs no metamethod.
+bool IsUnopenedLibrary(lua_State* L, int index);
+
+/// Puts `prefix` before the path of the package table at `package`.
+void PrependPackagePath(lua_State* L, int package, const std::string& prefix);
 
 }  // namespace essaim

@@ -12,6 +12,7 @@
 #include "core/paths.h"
 #include "lua/host/compiled_scripts.h"
 #include "lua/host/guard_hook.h"
+#include "lua/host/lua_require.h"
 
 namespace essaim {
 
@@ -231,9 +232,9 @@ void CloseBaseEscapes(lua_State* L) {
   lua_pop(L, 1);
 }
 
-// The sandbox's package: no C libraries, Lua files as text from the allowed folders only.
+// The sandbox's package (the table on top): no C libraries, Lua files as text from the
+// allowed folders only.
 void SandboxPackage(lua_State* L) {
-  lua_getglobal(L, "package");
   const int package = lua_gettop(L);
   lua_pushnil(L);
   lua_setfield(L, package, "loadlib");
@@ -247,7 +248,14 @@ void SandboxPackage(lua_State* L) {
   lua_rawseti(L, -2, 4);
   lua_pushnil(L);
   lua_rawseti(L, -2, 3);
-  lua_pop(L, 2);
+  lua_pop(L, 1);
+}
+
+// With package's fresh table on top: what the host asked for before it opened.
+void ReadyPackage(lua_State* L, const LuaGuard& g) {
+  if (g.sandbox) SandboxPackage(L);
+  if (g.module_inputs) WrapModuleSearcher(L, lua_gettop(L), g.module_inputs);
+  if (!g.package_path_prefix.empty()) PrependPackagePath(L, lua_gettop(L), g.package_path_prefix);
 }
 }  // namespace
 
@@ -260,17 +268,24 @@ void GuardLibrary(lua_State* L, const char* name, int base_error) {
     Wrap(L, "sethook", RefusedSethook, nullptr);
   } else if (std::strcmp(name, LUA_OSLIBNAME) == 0) {
     Wrap(L, "exit", GuardedExit, nullptr);
+  } else if (std::strcmp(name, LUA_LOADLIBNAME) == 0) {
+    ReadyPackage(L, *g);
   } else if (std::strcmp(name, LUA_IOLIBNAME) == 0 && g->io_opened) {
     g->io_opened(L, g->io_owner);
   }
 }
 
+void PrependPackagePath(lua_State* L, int package, const std::string& prefix) {
+  lua_getfield(L, package, "path");
+  const std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
+  lua_pop(L, 1);
+  lua_pushstring(L, path.c_str());
+  lua_setfield(L, package, "path");
+}
+
 void OpenGuardedLibraries(lua_State* L, bool sandbox) {
-  for (const luaL_Reg& lib : {luaL_Reg{LUA_GNAME, luaopen_base},
-                              {LUA_LOADLIBNAME, luaopen_package},
-                              {LUA_TABLIBNAME, luaopen_table},
-                              {LUA_STRLIBNAME, luaopen_string},
-                              {LUA_MATHLIBNAME, luaopen_math}}) {
+  GuardOf(L)->sandbox = sandbox;
+  for (const luaL_Reg& lib : {luaL_Reg{LUA_GNAME, luaopen_base}, {LUA_MATHLIBNAME, luaopen_math}}) {
     luaL_requiref(L, lib.name, lib.func, 1);
     lua_pop(L, 1);
   }
@@ -281,7 +296,6 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox) {
     lua_pushnil(L);
     lua_setglobal(L, name);
   }
-  SandboxPackage(L);
   lua_getglobal(L, "load");
   lua_pushcclosure(L, TextOnlyLoad, 1);
   lua_setglobal(L, "load");

@@ -67,6 +67,11 @@ struct LuaGuard {
   // canonical at the first `require` (two realpath calls were ~4 µs of a state's set-up).
   std::vector<std::string> require_roots;
   bool require_roots_canonical = false;
+  // What the package library gets when it opens (at first use): the sandbox's searchers,
+  // the script's folder before package.path, the recording of required files.
+  bool sandbox = false;
+  std::string package_path_prefix;
+  InputFiles* module_inputs = nullptr;
   // Called with the io library's table on top when a script first uses io (the controller
   // routes io.write to its log), with `io_owner`.
   void (*io_opened)(lua_State* L, void* owner) = nullptr;
@@ -107,7 +112,7 @@ void CloseGuardedState(LuaGuard* guard);
 /// debug.sethook refused, __gc finalizers refused (Lua runs them with hooks off), xpcall
 /// message handlers skipped once the guard stopped the call, os.exit ending the run as an
 /// error. Under the sandbox, also without anything that reaches files, processes, native
-/// code or bytecode. base, package, table, string and math are opened; coroutine, io, os,
+/// code or bytecode. base and math are opened; table, string, package, coroutine, io, os,
 /// utf8 and debug are opened at their first use (docs/sandbox.md says what differs).
 void OpenGuardedLibraries(lua_State* L, bool sandbox);
 

@@ -50,11 +50,12 @@ void PrependScriptFolder(lua_State* L, const std::string& script) {
   const std::string dir = DirName(script);
   const std::string prefix = dir.empty() ? "./?.lua;./?/init.lua;" : dir + "/?.lua;" + dir + "/?/init.lua;";
   lua_getglobal(L, "package");
-  lua_getfield(L, -1, "path");
-  const std::string path = prefix + (lua_tostring(L, -1) ? lua_tostring(L, -1) : "");
-  lua_pop(L, 1);
-  lua_pushstring(L, path.c_str());
-  lua_setfield(L, -2, "path");
+  if (IsUnopenedLibrary(L, -1)) {
+    std::string& deferred = GuardOf(L)->package_path_prefix;
+    deferred = prefix + deferred;
+  } else {
+    PrependPackagePath(L, lua_gettop(L), prefix);
+  }
   lua_pop(L, 1);
 }
 

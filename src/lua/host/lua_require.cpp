@@ -4,6 +4,7 @@
 #include <lua.hpp>
 
 #include "core/input_files.h"
+#include "lua/host/guard_hook.h"
 
 namespace essaim {
 
@@ -31,9 +32,17 @@ int RecordingSearcher(lua_State* L) {
 
 void RecordRequiredFiles(lua_State* L, InputFiles* inputs) {
   if (!inputs) return;
+  lua_getglobal(L, "package");
+  if (IsUnopenedLibrary(L, -1))
+    GuardOf(L)->module_inputs = inputs;
+  else if (lua_istable(L, -1))
+    WrapModuleSearcher(L, lua_gettop(L), inputs);
+  lua_pop(L, 1);
+}
+
+void WrapModuleSearcher(lua_State* L, int package, InputFiles* inputs) {
   const int top = lua_gettop(L);
-  if (lua_getglobal(L, "package") == LUA_TTABLE && lua_getfield(L, -1, "searchers") == LUA_TTABLE &&
-      lua_rawgeti(L, -1, 2) == LUA_TFUNCTION) {
+  if (lua_getfield(L, package, "searchers") == LUA_TTABLE && lua_rawgeti(L, -1, 2) == LUA_TFUNCTION) {
     lua_pushlightuserdata(L, inputs);
     lua_pushcclosure(L, RecordingSearcher, 2);
     lua_rawseti(L, -2, 2);
