@@ -163,7 +163,7 @@ void PrintRow(const ScaleRun& one, const ScaleRun* many, double first_cost) {
   const StageTimes& t = one.times;
   const double other = one.wall - t.physics - t.sense - t.control;
   std::printf("%8zu %8.2f %7.2f %9.2f %8.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.teardown,
-              one.wall * per, PerRobotStep(one) / first_cost, t.physics * per, t.sense * per, t.control * per,
+              PerRobotStep(one), PerRobotStep(one) / first_cost, t.physics * per, t.sense * per, t.control * per,
               other * per, static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots),
               one.simulated / one.wall);
   if (many) std::printf(" %8.2f %8.2f", many->simulated / many->wall, many->setup);

@@ -28,15 +28,6 @@
 namespace essaim {
 
 namespace {
-struct LazyLibrary {
-  const char* name;
-  lua_CFunction open;
-  bool sandboxed;  // kept under the sandbox
-};
-constexpr LazyLibrary kLazyLibraries[] = {{"table", luaopen_table, true},     {"string", luaopen_string, true},
-                                          {"package", luaopen_package, true}, {"coroutine", luaopen_coroutine, true},
-                                          {"utf8", luaopen_utf8, true},       {"io", luaopen_io, false},
-                                          {"os", luaopen_os, false},          {"debug", luaopen_debug, false}};
 // One metatable serves every placeholder of a state: its array part holds base's next and
 // error as they were when the state was made (a script may replace the globals since), its
 // hash part each placeholder's index in kLazyLibraries.
@@ -133,26 +124,54 @@ void AdoptPackage(lua_State* L, int t) {
   lua_remove(L, before);
 }
 
-// Opens `lib` into a fresh table, left on top. luaopen_string gives strings a metatable of
-// its own: the one they had (whose __index is the placeholder `t`) is put back.
-void OpenLibrary(lua_State* L, const LazyLibrary& lib, int t) {
-  const bool strings = lib.open == luaopen_string, package = lib.open == luaopen_package;
-  if (strings) {
-    lua_pushliteral(L, "");
-    lua_getmetatable(L, -1);
-    lua_remove(L, -2);
-  }
-  if (package) lua_getglobal(L, "require");
-  lua_pushcfunction(L, lib.open);
+// luaopen_string into a fresh table, left on top. It gives strings a metatable of its own:
+// the one they had (whose __index is the placeholder) is put back.
+void OpenStrings(lua_State* L, lua_CFunction open, int) {
+  lua_pushliteral(L, "");
+  lua_getmetatable(L, -1);
+  lua_remove(L, -2);
+  lua_pushcfunction(L, open);
   lua_call(L, 0, 1);
-  if (package) AdoptPackage(L, t);
-  if (!strings) return;
   lua_pushliteral(L, "");
   lua_pushvalue(L, -3);
   lua_setmetatable(L, -2);
   lua_pop(L, 1);
   lua_remove(L, -2);
 }
+
+// luaopen_package into a fresh table, left on top, adopted by the placeholder `t`.
+void OpenPackage(lua_State* L, lua_CFunction open, int t) {
+  lua_getglobal(L, "require");
+  lua_pushcfunction(L, open);
+  lua_call(L, 0, 1);
+  AdoptPackage(L, t);
+}
+
+// With package's placeholder on top: the global require that opens it.
+void DeclareRequire(lua_State* L) {
+  lua_pushvalue(L, -1);
+  lua_pushcclosure(L, LazyRequire, 1);
+  lua_setglobal(L, "require");
+}
+
+struct LazyLibrary {
+  const char* name;
+  lua_CFunction open;
+  bool sandboxed;  // kept under the sandbox
+  // Called with the placeholder on top once it is declared; null: nothing more.
+  void (*declared)(lua_State* L) = nullptr;
+  // Opens the library for the placeholder at `t`, its fresh table left on top; null: `open`
+  // called as it is.
+  void (*opener)(lua_State* L, lua_CFunction open, int t) = nullptr;
+};
+constexpr LazyLibrary kLazyLibraries[] = {{"table", luaopen_table, true},
+                                          {"string", luaopen_string, true, SetStringMetatable, OpenStrings},
+                                          {"package", luaopen_package, true, DeclareRequire, OpenPackage},
+                                          {"coroutine", luaopen_coroutine, true},
+                                          {"utf8", luaopen_utf8, true},
+                                          {"io", luaopen_io, false},
+                                          {"os", luaopen_os, false},
+                                          {"debug", luaopen_debug, false}};
 
 // Opens the library of the placeholder at stack index `t` into it: its fields are added
 // where the placeholder has none (a raw set before first use stays), and the metatable
@@ -166,7 +185,12 @@ void Fill(lua_State* L, int t) {
   const int base_error = lua_gettop(L);
   lua_pushnil(L);
   lua_setmetatable(L, t);
-  OpenLibrary(L, lib, t);
+  if (lib.opener) {
+    lib.opener(L, lib.open, t);
+  } else {
+    lua_pushcfunction(L, lib.open);
+    lua_call(L, 0, 1);
+  }
   GuardLibrary(L, lib.name, base_error);
   lua_pushnil(L);
   while (lua_next(L, -2)) {  // library, key, value
@@ -245,12 +269,7 @@ void DeclareLazyLibraries(lua_State* L, bool sandbox) {
     lua_rawset(L, metatable);
     lua_pushvalue(L, metatable);
     lua_setmetatable(L, -2);
-    if (lib.open == luaopen_string) SetStringMetatable(L);
-    if (lib.open == luaopen_package) {
-      lua_pushvalue(L, -1);
-      lua_pushcclosure(L, LazyRequire, 1);
-      lua_setglobal(L, "require");
-    }
+    if (lib.declared) lib.declared(L);
     lua_pushvalue(L, -1);
     lua_setfield(L, loaded, lib.name);
     lua_setglobal(L, lib.name);
