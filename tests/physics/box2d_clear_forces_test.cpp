@@ -8,6 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "support/box2d_servo.h"
+
 namespace {
 
 /// 200 foot-bot-sized discs in a tight block, each tied to a kinematic servo driving it
@@ -23,26 +25,9 @@ std::unique_ptr<b2World> Crowd(bool clear_forces, std::vector<b2Body*>* bodies) 
   box.SetAsBox(0.05f, 5);
   wall->CreateFixture(&box, 0);
   for (int i = 0; i < 200; ++i) {
-    b2BodyDef bd;
-    bd.type = b2_dynamicBody;
-    bd.allowSleep = false;
-    bd.position.Set(0.16f * static_cast<float>(i % 10), 0.16f * static_cast<float>(i / 10) - 1.6f);
-    b2Body* body = world->CreateBody(&bd);
-    b2CircleShape c;
-    c.m_radius = 0.085f;
-    body->CreateFixture(&c, 1.0f);
-    b2BodyDef kd;
-    kd.type = b2_kinematicBody;
-    kd.position = bd.position;
-    b2Body* control = world->CreateBody(&kd);
-    control->SetLinearVelocity(b2Vec2(0.2f, 0.01f * static_cast<float>(i % 7)));
-    b2FrictionJointDef jd;
-    jd.bodyA = control;
-    jd.bodyB = body;
-    jd.maxForce = 1.5f;
-    jd.maxTorque = 0.01f;
-    world->CreateJoint(&jd);
-    bodies->push_back(body);
+    const b2Vec2 at(0.16f * static_cast<float>(i % 10), 0.16f * static_cast<float>(i / 10) - 1.6f);
+    const b2Vec2 velocity(0.2f, 0.01f * static_cast<float>(i % 7));
+    bodies->push_back(essaim::testing::AddServoDisc(world.get(), at, velocity, 1.5f, 0.01f, /*allow_sleep=*/false));
   }
   return world;
 }

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <thread>
 
+#include "support/box2d_servo.h"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -17,24 +19,8 @@ TEST(Box2dProfileTimer, LibraryStepsReadNoClock) {
   // Many islands, as robots make: each dynamic body tied to its own kinematic body.
   b2World world(b2Vec2(0, 0));
   for (int i = 0; i < 400; ++i) {
-    b2BodyDef bd;
-    bd.type = b2_dynamicBody;
-    bd.position.Set(static_cast<float>(i % 20), static_cast<float>(i / 20));
-    b2Body* body = world.CreateBody(&bd);
-    b2CircleShape c;
-    c.m_radius = 0.085f;
-    body->CreateFixture(&c, 1.0f);
-    b2BodyDef kd;
-    kd.type = b2_kinematicBody;
-    kd.position = bd.position;
-    b2Body* control = world.CreateBody(&kd);
-    control->SetLinearVelocity(b2Vec2(0.1f, 0));
-    b2FrictionJointDef jd;
-    jd.bodyA = control;
-    jd.bodyB = body;
-    jd.maxForce = 15;
-    jd.maxTorque = 0.15f;
-    world.CreateJoint(&jd);
+    const b2Vec2 at(static_cast<float>(i % 20), static_cast<float>(i / 20));
+    essaim::testing::AddServoDisc(&world, at, b2Vec2(0.1f, 0), 15, 0.15f);
   }
   const Clock::time_point start = Clock::now();
   double slowest_ms = 0;

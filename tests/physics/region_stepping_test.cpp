@@ -151,7 +151,7 @@ struct CrowdRun {
 
 CrowdRun RunCrowd(const std::string& engines, int threads) {
   TempDir d;
-  d.Write("wander.lua", kWanderController);
+  d.Write("wander.lua", WanderController());
   LoadOptions lo;
   lo.threads = threads;
   Scene s = Load(d, Crowd(engines), lo);

@@ -25,7 +25,7 @@ std::string Swarm(int seed) {
 
 uint64_t RunHash(int seed, int threads) {
   TempDir d;
-  d.Write("wander.lua", kWanderController);
+  d.Write("wander.lua", WanderController());
   LoadOptions lo;
   lo.threads = threads;
   Scene s = Load(d, Swarm(seed), lo);

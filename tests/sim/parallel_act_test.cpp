@@ -9,15 +9,6 @@ namespace essaim {
 namespace {
 using namespace essaim::testing;
 
-const char* kWander = R"(
-function step()
-  if robot.random.uniform() < 0.2 then
-    local turn = robot.random.gaussian(8)
-    robot.wheels.set_velocity(12 - turn, 12 + turn)
-  end
-end
-)";
-
 std::string Crowd(int robots) {
   const std::string arena =
       "<distribute><position method=\"uniform\" min=\"-4.8,-4.8,0\" max=\"4.8,4.8,0\"/>"
@@ -34,7 +25,7 @@ std::string Crowd(int robots) {
 
 uint64_t RunHash(int threads, uint64_t* start_hash) {
   TempDir d;
-  d.Write("wander.lua", kWander);
+  d.Write("wander.lua", WanderController("0.2", "8", "12"));
   LoadOptions lo;
   lo.threads = threads;
   Scene s = Load(d, Crowd(400), lo);

@@ -17,16 +17,14 @@
 
 namespace essaim::testing {
 
-/// A controller that drives on and now and then turns by a random amount: robots that
-/// spread, meet and collide, drawing on their random streams every step.
-inline constexpr const char* kWanderController = R"(
-function step()
-  if robot.random.uniform() < 0.1 then
-    local turn = robot.random.gaussian(5)
-    robot.wheels.set_velocity(15 - turn, 15 + turn)
-  end
-end
-)";
+/// A controller that drives on at `speed` cm/s and, with probability `chance` a step, turns
+/// by a Gaussian amount (standard deviation `turn`): robots that spread, meet and collide,
+/// drawing on their random streams every step. The arguments are Lua number literals.
+inline std::string WanderController(const char* chance = "0.1", const char* turn = "5", const char* speed = "15") {
+  return std::string("\nfunction step()\n  if robot.random.uniform() < ") + chance +
+         " then\n    local turn = robot.random.gaussian(" + turn + ")\n    robot.wheels.set_velocity(" + speed +
+         " - turn, " + speed + " + turn)\n  end\nend\n";
+}
 
 /// A fresh folder under /tmp, removed at destruction.
 class TempDir {
