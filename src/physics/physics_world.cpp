@@ -59,50 +59,51 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->controls.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
-  for (size_t i = 0; i < model.robots.size(); ++i) {
-    const RobotDef& r = model.robots[i];
-    b2World& w = *impl_->regions[RegionOf(impl_->region_defs, {r.pose.x, r.pose.y}, 0)].world;
-    b2BodyDef bd;
-    bd.type = b2_dynamicBody;
-    bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
-    bd.angle = static_cast<float>(r.pose.yaw);
-    bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
-    b2Body* body = w.CreateBody(&bd);
-    b2CircleShape circle;
-    circle.m_radius = static_cast<float>(footbot::kRadius);
-    b2FixtureDef fd;
-    fd.shape = &circle;
-    fd.friction = 0.7f;
-    fd.restitution = 0;
-    fd.density = static_cast<float>(footbot::kMass / (kPi * footbot::kRadius * footbot::kRadius));
-    fd.userData.pointer = PackTag(BodyKind::Robot, static_cast<int>(i));
-    body->CreateFixture(&fd);
-    b2MassData md;
-    md.mass = static_cast<float>(footbot::kMass);
-    md.center.SetZero();
-    // ARGoS quirk 1: I = m (2r)^2 / 2.
-    md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
-    body->SetMassData(&md);
+  for (size_t i = 0; i < model.robots.size(); ++i) AddRobot(model.robots[i], static_cast<int>(i));
+}
 
-    // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
-    // a friction joint, which drives their relative velocity to zero with capped force
-    // and torque — Chipmunk's pivot + gear with maxBias 0 in ARGoS.
-    b2BodyDef cd;
-    cd.type = b2_kinematicBody;
-    cd.position = bd.position;
-    cd.angle = bd.angle;
-    b2Body* control = w.CreateBody(&cd);
-    b2FrictionJointDef jd;
-    jd.bodyA = control;
-    jd.bodyB = body;
-    jd.localAnchorA.SetZero();
-    jd.localAnchorB.SetZero();
-    jd.maxForce = static_cast<float>(r.max_force);
-    jd.maxTorque = static_cast<float>(r.max_torque);
-    w.CreateJoint(&jd);
-    robots_.push_back(body);
-    impl_->controls.push_back(control);
-  }
+void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
+  b2World& w = *impl_->regions[RegionOf(impl_->region_defs, {r.pose.x, r.pose.y}, 0)].world;
+  b2BodyDef bd;
+  bd.type = b2_dynamicBody;
+  bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
+  bd.angle = static_cast<float>(r.pose.yaw);
+  bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
+  b2Body* body = w.CreateBody(&bd);
+  b2CircleShape circle;
+  circle.m_radius = static_cast<float>(footbot::kRadius);
+  b2FixtureDef fd;
+  fd.shape = &circle;
+  fd.friction = 0.7f;
+  fd.restitution = 0;
+  fd.density = static_cast<float>(footbot::kMass / (kPi * footbot::kRadius * footbot::kRadius));
+  fd.userData.pointer = PackTag(BodyKind::Robot, i);
+  body->CreateFixture(&fd);
+  b2MassData md;
+  md.mass = static_cast<float>(footbot::kMass);
+  md.center.SetZero();
+  // ARGoS quirk 1: I = m (2r)^2 / 2.
+  md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
+  body->SetMassData(&md);
+
+  // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
+  // a friction joint, which drives their relative velocity to zero with capped force
+  // and torque — Chipmunk's pivot + gear with maxBias 0 in ARGoS.
+  b2BodyDef cd;
+  cd.type = b2_kinematicBody;
+  cd.position = bd.position;
+  cd.angle = bd.angle;
+  b2Body* control = w.CreateBody(&cd);
+  b2FrictionJointDef jd;
+  jd.bodyA = control;
+  jd.bodyB = body;
+  jd.localAnchorA.SetZero();
+  jd.localAnchorB.SetZero();
+  jd.maxForce = static_cast<float>(r.max_force);
+  jd.maxTorque = static_cast<float>(r.max_torque);
+  w.CreateJoint(&jd);
+  robots_.push_back(body);
+  impl_->controls.push_back(control);
 }
 
 int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }

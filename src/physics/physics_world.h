@@ -154,6 +154,8 @@ class PhysicsWorld {
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
   /// region `region`; returns the target's body there.
   void* MoveGripGroupVoid(const GripTarget& t, int region);
+  /// Robot `index`'s body and its servo, in the region holding its pose.
+  void AddRobot(const RobotDef& robot, int index);
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*
   std::vector<void*> obstacles_;  // b2Body*
