@@ -41,15 +41,10 @@ std::vector<std::string> ScaleOverrides(long long robots) {
   const std::string side = Num(32 * s), wall = Num(16 * s), half = Num(15 * s);
   const std::string obstacles = std::to_string(std::max(1LL, robots / 10));
   std::vector<std::string> o = {
-      "framework.system.max_entities=" + std::to_string(robots + 2 * std::max(1LL, robots / 10) + 4),
-      "arena.size=" + side + "," + side + ",1",
-      "arena.wall_north.size=" + side + ",0.1,0.5",
-      "arena.wall_south.size=" + side + ",0.1,0.5",
-      "arena.wall_east.size=0.1," + side + ",0.5",
-      "arena.wall_west.size=0.1," + side + ",0.5",
-      "arena.wall_north.body.position=0," + wall + ",0",
-      "arena.wall_south.body.position=0,-" + wall + ",0",
-      "arena.wall_east.body.position=" + wall + ",0,0",
+      "arena.size=" + side + "," + side + ",1",           "arena.wall_north.size=" + side + ",0.1,0.5",
+      "arena.wall_south.size=" + side + ",0.1,0.5",       "arena.wall_east.size=0.1," + side + ",0.5",
+      "arena.wall_west.size=0.1," + side + ",0.5",        "arena.wall_north.body.position=0," + wall + ",0",
+      "arena.wall_south.body.position=0,-" + wall + ",0", "arena.wall_east.body.position=" + wall + ",0,0",
       "arena.wall_west.body.position=-" + wall + ",0,0",
   };
   for (int d = 0; d < 3; ++d) {

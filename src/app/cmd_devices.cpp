@@ -17,7 +17,8 @@ const char* kAlwaysThere =
     "  robot.random  -> this robot's generator, seeded from the experiment's random_seed:\n"
     "      uniform() in [0,1), uniform(max), uniform(min, max), uniform_int(max), uniform_int(min, max),\n"
     "      gaussian(sd [, mean]), exponential(mean), poisson(mean), bernoulli([p])\n"
-    "  log(...), logerr(...)  -> one line on stdout / stderr, arguments separated by tabs (as print);\n"
+    "  log(...), logerr(...)  -> one line on stdout / stderr, the arguments joined with no separator\n"
+    "      as ARGoS writes them (numbers %g, booleans 1/0); print(...) separates them with tabs;\n"
     "      print(...) and io.write(...) go the same way (--log-prefix, --log-dir)\n"
     "  vector2, vector3, quaternion  -> ARGoS's math types\n"
     "\n";

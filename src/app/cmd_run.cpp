@@ -47,6 +47,17 @@ CLI::Validator RecordEvery() {
       "");
 }
 
+// --lua-budget and --lua-init-budget: instructions per call; 1e9 is welcome.
+CLI::Validator InstructionCount() {
+  return CLI::Validator(
+      [](std::string& v) -> std::string {
+        auto d = ParseDouble(v);
+        if (d && *d >= 0 && *d < 9e18 && *d == std::floor(*d)) return "";
+        return "'" + v + "' must be a non-negative integer (instructions per call; 0 = unlimited)";
+      },
+      "");
+}
+
 std::string DefaultOutDir(const Model& m) {
   std::filesystem::path name = std::filesystem::path(m.file).filename();
   if (name.extension() == ".argos") name = name.stem();
@@ -268,8 +279,7 @@ int ExitCode(const ActiveRun& run, StepStatus status) {
 int Report(const ActiveRun& run, StepStatus status, const std::vector<std::string>& unwritten) {
   const World& world = *run.world;
   if (!world.failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world.failure.c_str());
-  if (!run.args.quiet || run.args.strict)
-    std::fputs(FormatUnreadParams(world.unread_params, run.args.strict).c_str(), stderr);
+  std::fputs(FormatUnreadParams(world.unread_params, run.args.strict).c_str(), stderr);
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
     std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", run.out.c_str(),
@@ -357,7 +367,8 @@ CommandMain AddRunCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("run", "run an experiment");
   AddExperimentOptions(sub, r.get());
   sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
-  sub->add_flag("-q,--quiet", r->quiet, "no progress line, no summary");
+  sub->add_flag("-q,--quiet", r->quiet,
+                "no progress line, no end-of-run summary (warnings and errors are always printed)");
   sub->add_flag("--strict", r->strict,
                 "unknown attributes in the file are errors (exit 2); the first controller error ends the run, "
                 "a parameter no script read fails it (exit 1)");
@@ -366,16 +377,16 @@ CommandMain AddRunCommand(CLI::App& app) {
       ->type_name("DIR");
   sub->add_flag("--sandbox", r->sandbox,
                 "untrusted scripts: no io/os/debug/native code, every instruction counted (docs/sandbox.md)");
-  auto budget = std::make_shared<double>(-1);
-  sub->add_option("--lua-budget", *budget, "instructions per call into Lua (default 1e9; 0 = unlimited)")
+  auto budget = std::make_shared<double>(-1), init_budget = std::make_shared<double>(-1);
+  sub->add_option("--lua-budget", *budget,
+                  "instructions per step() call and per-tick loop-function hook (default 1e8; 0 = unlimited)")
       ->type_name("N")
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            auto d = ParseDouble(v);  // 1e9 is welcome
-            if (d && *d >= 0 && *d < 9e18 && *d == std::floor(*d)) return "";
-            return "'" + v + "' must be a non-negative integer (instructions per call; 0 = unlimited)";
-          },
-          ""));
+      ->check(InstructionCount());
+  sub->add_option("--lua-init-budget", *init_budget,
+                  "instructions per script top level, init(), reset(), destroy() (default 1e9, or --lua-budget "
+                  "when larger; 0 = unlimited)")
+      ->type_name("N")
+      ->check(InstructionCount());
   sub->add_option("--lua-memory", r->lua_memory_mib, "MiB per Lua state (default 256; 0 = unlimited)")
       ->type_name("MIB")
       ->check(IntegerIn(0, 1LL << 30, "0 = unlimited"));
@@ -395,8 +406,9 @@ CommandMain AddRunCommand(CLI::App& app) {
   sub->footer(
       "Example:\n  essaim run arenas/foraging.argos --ticks 600 --seed 7 --record --set "
       "controllers.foraging.params.EPSILONGREED=0.3");
-  return [r, sub, budget] {
+  return [r, sub, budget, init_budget] {
     if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
+    if (*init_budget >= 0) r->lua_init_budget = static_cast<long long>(*init_budget);
     r->record_every = 0;
     if (sub->count("--record") > 0)
       r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));

@@ -46,12 +46,11 @@ bool ApplyOptions(RunArgs* r, std::string* error) {
 std::unique_ptr<Model> LoadOrReport(const RunArgs& r, std::string* message) {
   ErrorList errors, warnings;
   auto model = LoadExperimentFile(r.file, r.load, &errors, &warnings);
-  if (!r.quiet)
-    for (const InputError& w : warnings.Items()) {
-      ErrorList one;
-      one.Add(w.file, w.line, w.element, "warning: " + w.message);
-      std::fputs(one.Format().c_str(), stderr);
-    }
+  for (const InputError& w : warnings.Items()) {  // --quiet keeps them: a sweep must hear of a typo
+    ErrorList one;
+    one.Add(w.file, w.line, w.element, "warning: " + w.message);
+    std::fputs(one.Format().c_str(), stderr);
+  }
   if (!model) std::fputs(errors.Format().c_str(), stderr);
   if (!model && message) {
     *message = errors.Format();
@@ -65,11 +64,18 @@ LuaOptions WatchdogOptions(const Model& m, const RunArgs& r) {
   o.sandbox = r.sandbox;
   if (r.sandbox) {
     o.memory_limit = size_t{64} << 20;
-    o.instruction_limit = 100000000;
+    o.instruction_limit = o.setup_instruction_limit = kDefaultStepBudget;
   }
   long long budget = r.lua_budget >= 0 ? r.lua_budget : m.experiment.lua_budget;
+  long long init_budget = r.lua_init_budget >= 0 ? r.lua_init_budget : m.experiment.lua_init_budget;
   long long mib = r.lua_memory_mib >= 0 ? r.lua_memory_mib : m.experiment.lua_memory_mib;
-  if (budget >= 0) o.instruction_limit = budget;
+  if (budget >= 0) {
+    o.instruction_limit = budget;
+    // A step budget set above the setup calls' (or unlimited) lifts theirs with it.
+    if (budget == 0 || (o.setup_instruction_limit > 0 && budget > o.setup_instruction_limit))
+      o.setup_instruction_limit = budget;
+  }
+  if (init_budget >= 0) o.setup_instruction_limit = init_budget;
   if (mib >= 0) o.memory_limit = static_cast<size_t>(mib) << 20;
   if (r.lua_seconds >= 0) o.wall_seconds = r.lua_seconds;
   return o;

@@ -224,6 +224,10 @@ std::string EntityStore::ObstacleProblemNow(const ObstacleDef& def) const {
   return "";
 }
 
-std::string EntityStore::RoomProblem() const { return EntityCountProblem(Count() + 1, scene_->experiment.limits); }
+std::string EntityStore::RoomProblem(bool robot) const {
+  EntityCounts counts{static_cast<double>(scene_->robots.size()), static_cast<double>(Count() - scene_->robots.size())};
+  (robot ? counts.robots : counts.objects) += 1;
+  return EntityCountProblem(counts, scene_->experiment.limits);
+}
 
 }  // namespace essaim

@@ -84,8 +84,8 @@ class EntityStore {
   /// Why `def` cannot be added now (over the limits, or overlapping a foot-bot where it
   /// stands), or "".
   std::string ObstacleProblemNow(const ObstacleDef& def) const;
-  /// Why one entity more is over the experiment's limit, or "".
-  std::string RoomProblem() const;
+  /// Why one entity more (a foot-bot when `robot`) is over the experiment's limit, or "".
+  std::string RoomProblem(bool robot) const;
 
   /// Adds a box or cylinder (kind from `def.kind`) to the scene and the physics.
   EntityRef AddObstacle(const ObstacleDef& def);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "core/machine_memory.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -19,10 +21,30 @@ std::string ObstacleProblem(const ObstacleDef& o, const LimitsDef& limits) {
   return "";
 }
 
-std::string EntityCountProblem(size_t count, const LimitsDef& limits) {
-  if (static_cast<double>(count) <= static_cast<double>(limits.entities)) return "";
-  return std::to_string(count) + " entities are over the limit of " + std::to_string(limits.entities) +
-         " per experiment (<system max_entities>)";
+namespace {
+std::string Count(double n) { return n >= 1e15 ? FormatDouble(n) : std::to_string(static_cast<long long>(n)); }
+
+std::string GiB(double bytes) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f GiB", bytes / (1024.0 * 1024 * 1024));
+  return b;
+}
+}  // namespace
+
+std::string EntityCountProblem(EntityCounts counts, const LimitsDef& limits) {
+  const double total = counts.robots + counts.objects;
+  if (limits.entities > 0) {
+    if (total <= static_cast<double>(limits.entities)) return "";
+    return Count(total) + " entities are over the limit of " + std::to_string(limits.entities) +
+           " per experiment (<system max_entities>)";
+  }
+  const double usable = static_cast<double>(UsableMemoryBytes());
+  const double needed = counts.robots * kBytesPerRobot + counts.objects * kBytesPerObject;
+  if (usable <= 0 || needed <= usable / 2) return "";
+  return Count(total) + " entities (" + Count(counts.robots) + " foot-bots) would need about " + GiB(needed) +
+         ", over half of the " + GiB(usable) +
+         " this process may use (memory, ulimit -v, cgroup); <system max_entities=\"N\"/> allows N entities "
+         "whatever the machine";
 }
 
 }  // namespace essaim

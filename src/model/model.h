@@ -156,14 +156,15 @@ struct LimitsDef {
   double arena_size = 10000;         // m, per side: <system max_arena_size>
   double entity_size = 1000;         // m, a box's side or height, a cylinder's diameter or height
   long long floor_pixels = 1 << 26;  // pixels of an image floor, read from the PNG header
-  long long entities = 20000;        // foot-bots, boxes, cylinders and lights, added ones included
+  long long entities = 0;            // foot-bots, boxes, cylinders and lights, added ones included; 0: as memory allows
 };
 
 struct ExperimentDef {
   LimitsDef limits;
-  int threads = 0;                // 0 = main thread only
-  long long lua_budget = -1;      // <system lua_budget>: instructions per Lua call; -1 = default
-  long long lua_memory_mib = -1;  // <system lua_memory>: MiB per Lua state; -1 = default
+  int threads = 0;                 // 0 = main thread only
+  long long lua_budget = -1;       // <system lua_budget>: instructions per step() call; -1 = default
+  long long lua_init_budget = -1;  // <system lua_init_budget>: per init()/reset()/top level; -1 = default
+  long long lua_memory_mib = -1;   // <system lua_memory>: MiB per Lua state; -1 = default
   int ticks_per_second = 10;
   uint64_t length_ticks = 0;  // 0 = unlimited
   uint64_t seed = 0;

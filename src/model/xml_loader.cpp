@@ -78,7 +78,7 @@ class Loader {
   void LoadWatchdog(const XMLElement* sys, ExperimentDef* x);
   void LoadLimits(const XMLElement* sys, LimitsDef* limits);
   /// False (an error at `e`) when `more` entities would take the experiment over its limit.
-  bool RoomFor(const XMLElement* e, long long more);
+  bool RoomFor(const XMLElement* e, long long more, bool robots);
   /// An error at `e` when the obstacle is over the size limit or out of range.
   void CheckFits(const XMLElement* e, const ObstacleDef& o) {
     std::string problem = ObstacleProblem(o, model_->experiment.limits);
@@ -355,11 +355,16 @@ void Loader::LoadFramework(const XMLElement* e) {
   if (options_.threads) x.threads = *options_.threads;
 }
 
-// The Lua watchdog's limits (0 = unlimited); the CLI's --lua-budget/--lua-memory win.
+// The Lua watchdog's limits (0 = unlimited); the CLI's --lua-budget/--lua-init-budget/--lua-memory win.
 void Loader::LoadWatchdog(const XMLElement* sys, ExperimentDef* x) {
   if (Has(sys, "lua_budget")) {
     x->lua_budget = Int(sys, "lua_budget", 0);
-    if (x->lua_budget < 0) Error(sys, "lua_budget must be >= 0 (instructions per call into Lua; 0 = unlimited)");
+    if (x->lua_budget < 0) Error(sys, "lua_budget must be >= 0 (instructions per step() call; 0 = unlimited)");
+  }
+  if (Has(sys, "lua_init_budget")) {
+    x->lua_init_budget = Int(sys, "lua_init_budget", 0);
+    if (x->lua_init_budget < 0)
+      Error(sys, "lua_init_budget must be >= 0 (instructions per init(), reset() or top-level call; 0 = unlimited)");
   }
   if (Has(sys, "lua_memory")) {
     x->lua_memory_mib = Int(sys, "lua_memory", 0);
@@ -391,11 +396,12 @@ void Loader::LoadLimits(const XMLElement* sys, LimitsDef* limits) {
   }
 }
 
-bool Loader::RoomFor(const XMLElement* e, long long more) {
-  const double count = static_cast<double>(model_->robots.size() + model_->obstacles.size() + model_->lights.size()) +
-                       static_cast<double>(more);
-  std::string problem = EntityCountProblem(count > 1e18 ? static_cast<size_t>(1e18) : static_cast<size_t>(count),
-                                           model_->experiment.limits);
+// Whether `more` entities (foot-bots when `robots`) fit beside those loaded so far.
+bool Loader::RoomFor(const XMLElement* e, long long more, bool robots) {
+  EntityCounts counts{static_cast<double>(model_->robots.size()),
+                      static_cast<double>(model_->obstacles.size() + model_->lights.size())};
+  (robots ? counts.robots : counts.objects) += static_cast<double>(more);
+  std::string problem = EntityCountProblem(counts, model_->experiment.limits);
   if (problem.empty()) return true;
   Error(e, problem);
   return false;
@@ -874,7 +880,7 @@ void Loader::LoadArena(const XMLElement* e) {
       if (name != "distribute" && !ids_.insert(id).second) Error(c, std::string("duplicate id '") + id + "'");
     }
   }
-  RoomFor(e, 0);
+  RoomFor(e, 0, false);
   const auto placement_start = std::chrono::steady_clock::now();
   PlacedFootprints obstacles, robots_before;
   obstacles.Cover(model_->arena.Min(), model_->arena.Max());
@@ -973,10 +979,6 @@ bool Loader::ReadDistribute(const XMLElement* e, DistributeBlock* b) {
   b->quantity = Int(ent, "quantity", 0, true);
   b->max_trials = Int(ent, "max_trials", 0);
   b->base_num = Int(ent, "base_num", 0);
-  if (b->quantity < 0)
-    Error(ent, "quantity must be >= 0");
-  else if (!RoomFor(ent, b->quantity))
-    return false;
   if (b->max_trials < 0) Error(ent, "max_trials must be >= 0");
   b->proto = ent->FirstChildElement();
   if (!b->proto) {
@@ -988,6 +990,10 @@ bool Loader::ReadDistribute(const XMLElement* e, DistributeBlock* b) {
     Error(b->proto, "cannot distribute this entity: foot-bot, box, cylinder or light");
     return false;
   }
+  if (b->quantity < 0)
+    Error(ent, "quantity must be >= 0");
+  else if (!RoomFor(ent, b->quantity, b->kind == "foot-bot"))
+    return false;
   if (!ok) return false;
   b->base_id = Str(b->proto, "id");
   if (b->base_id.empty()) Error(b->proto, "missing required attribute 'id' (the base of the generated ids)");

@@ -145,7 +145,7 @@ class Simulation {
     opt.output_dir = out_;
     opt.strict = strict_;
     opt.lua.memory_limit = 64u << 20;  // the CLI's limits
-    opt.lua.instruction_limit = 100000000;
+    opt.lua.instruction_limit = opt.lua.setup_instruction_limit = kDefaultStepBudget;
     opt.lua.watchdog = &watchdog_;
     opt.log_sink = [this](char stream, const std::string& line, const LogOrigin& from) {
       logs_.push_back({stream, line, from});

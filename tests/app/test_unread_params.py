@@ -24,6 +24,18 @@ def test_misspelled_set_on_the_foraging_arena_is_named_with_a_suggestion(tmp_pat
     assert "error: parameter 'EPSILONGRED'" in strict.stderr
 
 
+def test_quiet_keeps_warnings_and_drops_only_progress_and_summary(tmp_path):
+    # A sweep runs with -q: it must still hear of a typo and of an unknown attribute.
+    write(tmp_path, {"x.argos": argos(params='gain="1"').replace('<experiment ', '<experiment colour="red" '),
+                     "c.lua": "function step() end\n"})
+    r = essaim("run", "x.argos", "-q", "--out", "o", "--set", "controllers.c.params.gian=2", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert "warning: parameter 'gian' (--set controllers.c.params.gian=2) is never read" in r.stderr, r.stderr
+    assert "warning: parameter 'gain' is never read" in r.stderr, r.stderr
+    assert "<experiment>: warning: unknown attribute 'colour'" in r.stderr, r.stderr
+    assert r.stdout == "", r.stdout  # no summary line
+
+
 def test_the_shipped_foraging_arena_reads_every_parameter(tmp_path):
     r = essaim("run", ROOT / "arenas/foraging.argos", "--ticks", "3", "--strict", "--out", tmp_path / "o",
                cwd=tmp_path)

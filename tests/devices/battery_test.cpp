@@ -174,7 +174,7 @@ TEST(Battery, DischargesWithoutTheSensorToo) {
 TEST(Battery, LuaSeesInitialValuesInInitThenTheDischarge) {
   TempDir d;
   d.Write("b.lua",
-          "function init() log(robot.battery.available_charge, tostring(robot.battery.time_left == math.huge)) end\n"
+          "function init() log(robot.battery.available_charge, ' ', robot.battery.time_left == math.huge) end\n"
           "function step() log(string.format('%.12f %.9f', robot.battery.available_charge, robot.battery.time_left)) "
           "end\n");
   std::vector<std::string> lines;
@@ -187,7 +187,7 @@ TEST(Battery, LuaSeesInitialValuesInInitThenTheDischarge) {
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 2);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0], "0.8\ttrue");                    // log() separates arguments with tabs
+  EXPECT_EQ(lines[0], "0.8 1");                        // ARGoS's log(): no separator, true as 1
   EXPECT_EQ(lines[1], "0.798000000000 40.000000000");  // 0.8 · 0.1 / 0.002
   EXPECT_EQ(lines[2], "0.796000000000 39.900000000");  // 0.798 · 0.1 / 0.002
 }

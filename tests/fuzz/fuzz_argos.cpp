@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   sim.threads = 1;
   sim.lua.sandbox = true;
   sim.lua.memory_limit = size_t{16} << 20;
-  sim.lua.instruction_limit = 1000000;
+  sim.lua.instruction_limit = sim.lua.setup_instruction_limit = 1000000;
   std::string error;
   std::unique_ptr<World> world = World::Create(*model, sim, &error);
   if (!world) return 0;

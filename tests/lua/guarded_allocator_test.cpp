@@ -17,7 +17,7 @@ TEST(GuardedAllocator, CountsExactlyTheBytesLuaHolds) {
   LuaGuard g;
   LuaOptions unlimited;
   unlimited.memory_limit = 0;
-  unlimited.instruction_limit = 0;
+  unlimited.instruction_limit = unlimited.setup_instruction_limit = 0;
   unlimited.wall_seconds = 0;
   lua_State* L = NewGuardedState(&g, unlimited);
   ASSERT_NE(L, nullptr);

@@ -18,7 +18,7 @@ using namespace essaim::testing;
 SimOptions Sandboxed(long long budget = 1000000) {
   SimOptions so;
   so.lua.sandbox = true;
-  so.lua.instruction_limit = budget;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = budget;
   return so;
 }
 
@@ -98,7 +98,7 @@ end)",
 
 TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
   SimOptions so;
-  so.lua.instruction_limit = 1000000;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 1000000;
   // debug.sethook is refused outright (a loop calling it kept removing the hook)...
   std::string e = StepError("function step() debug.sethook() local x = 1 while x > 0 do x = x + 1 end end", so);
   EXPECT_NE(e.find("c.lua:1: debug.sethook is not available: the watchdog's hook cannot be replaced"),
@@ -112,7 +112,7 @@ TEST(LuaWatchdog, OnByDefaultAndNotClearedByDebugSethook) {
 
 TEST(LuaWatchdog, ByDefaultCoversCoroutinesToo) {
   SimOptions so;
-  so.lua.instruction_limit = 1000000;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 1000000;
   for (const char* body :
        {"coroutine.wrap(function() while true do end end)()",
         "coroutine.resume(coroutine.create(function() while true do end end)) while true do end",
@@ -153,7 +153,7 @@ TEST(LuaWatchdog, NextCallStartsWithAFreshBudget) {
 
 TEST(LuaWatchdog, WallClockBacksUpAnUnlimitedBudget) {
   SimOptions so;
-  so.lua.instruction_limit = 0;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 0;
   so.lua.wall_seconds = 0.3;
   std::string e = StepError("function step() while true do end end", so);
   EXPECT_NE(e.find("wall-clock limit exceeded (0.3 s per call)"), std::string::npos) << e;
@@ -239,7 +239,7 @@ function step()
   setmetatable(robot.wheels, {__newindex = function() while true do end end})
 end)");
   SimOptions so;
-  so.lua.instruction_limit = 1000000;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 1000000;
   d.Write("c2.lua", "function step() robot.wheels.set_velocity(5, 5) end");
   Scene s = Load(d,
                  Experiment(FootBot("fb0", 0, 0, 0, "c") + FootBot("fb1", 1, 0, 0, "c2"),
@@ -347,7 +347,7 @@ TEST(LuaWatchdogDeathTest, StuckInsideACFunctionEndsTheProcessWithAMessage) {
     _exit(1);
   });
   SimOptions so;
-  so.lua.instruction_limit = 0;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 0;
   so.lua.wall_seconds = 0.2;
   so.lua.watchdog = &watchdog;
   // Backtracking over 12 lazy captures: one string.find call, far longer than a second.

@@ -47,7 +47,7 @@ function step() end
   EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
   RunTicks(*s.world, 1);
   ASSERT_FALSE(log.lines.empty());
-  EXPECT_EQ(log.lines[0].second, "init ok\t3\t0.5\t1");  // tabs between arguments, as print()
+  EXPECT_EQ(log.lines[0].second, "init ok30.51");  // ARGoS's log: no separator, booleans 1/0
 }
 
 TEST(LuaHost, PositioningGivesPositionAndQuaternionWithAngleAxisFields) {
@@ -206,7 +206,7 @@ TEST(LuaHost, SandboxStopsARunawayStep) {
   d.Write("c.lua", "function step() while true do end end");
   SimOptions so;
   so.lua.sandbox = true;
-  so.lua.instruction_limit = 100000;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 100000;
   Scene s = Load(d, Experiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")), {}, so);
   ASSERT_TRUE(s.ok()) << s.error;
   Step(*s.world);

@@ -92,7 +92,7 @@ TEST(ParallelStates, TheWatchdogStopsARunawayOnAnyThread) {
                                   WheelsController("c2", "loops_in_init.lua");
   SimOptions so;
   so.threads = 2;
-  so.lua.instruction_limit = 1000000;
+  so.lua.instruction_limit = so.lua.setup_instruction_limit = 1000000;
   Scene chunk = Load(d, Experiment(EightRobots("00000010"), controllers), {}, so);
   ASSERT_FALSE(chunk.ok());
   EXPECT_EQ(chunk.error.rfind("robot fb6: ", 0), 0u) << chunk.error;

@@ -20,7 +20,7 @@ struct Guarded {
   Guarded(Watchdog* watchdog, double wall_seconds = 60) {
     LuaOptions o;
     o.watchdog = watchdog;
-    o.instruction_limit = 0;
+    o.instruction_limit = o.setup_instruction_limit = 0;
     o.wall_seconds = wall_seconds;
     L = NewGuardedState(&guard, o);
     luaL_openlibs(L);
@@ -30,7 +30,7 @@ struct Guarded {
   /// Lua's error).
   std::string Run(const char* code) {
     if (luaL_loadstring(L, code) != LUA_OK) return lua_tostring(L, -1);
-    BeginGuardedCall(&guard);
+    BeginGuardedCall(&guard, CallKind::Step);
     const int status = lua_pcall(L, 0, 0, 0);
     std::string stopped = EndGuardedCall(&guard, status);
     if (stopped.empty() && status != LUA_OK) stopped = lua_tostring(L, -1);

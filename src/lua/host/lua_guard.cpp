@@ -84,9 +84,9 @@ void GuardHook(lua_State* L, lua_Debug*) {
   // lua_gethookcount: a coroutine stopped earlier may count every instruction.
   if (g->budget > 0 && (g->budget_exceeded || (g->used += lua_gethookcount(L)) > g->budget)) {
     g->budget_exceeded = true;
-    char what[96];
-    std::snprintf(what, sizeof what, "instruction budget exceeded (%lld instructions per call, --lua-budget)",
-                  g->budget);
+    char what[128];
+    std::snprintf(what, sizeof what, "instruction budget exceeded (%lld instructions per call, %s)", g->budget,
+                  g->kind == CallKind::Step ? "--lua-budget" : "--lua-init-budget");
     Stop(L, what);
   }
   if (g->interrupted.load(std::memory_order_relaxed)) Stop(L, "interrupted by a signal");
@@ -114,7 +114,9 @@ std::string WatchGuard(LuaGuard* g, long long now, bool interrupt) {
   return {};
 }
 
-void BeginGuardedCall(LuaGuard* g) {
+void BeginGuardedCall(LuaGuard* g, CallKind kind) {
+  g->kind = kind;
+  g->budget = kind == CallKind::Step ? g->step_budget : g->setup_budget;
   g->used = 0;
   g->budget_exceeded = false;
   g->stopped = false;

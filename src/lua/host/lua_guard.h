@@ -27,16 +27,29 @@ class InputFiles;
 class Watchdog;
 struct WatchSlot;
 
-/// The watchdog's limits, on by default (--lua-budget, --lua-memory, <system lua_budget>).
-/// A call running this long gets the count hook (and, after a signal, is interrupted).
-constexpr double kArmAfterSeconds = 0.1;
+/// The watchdog's limits, on by default (--lua-budget, --lua-init-budget, --lua-memory, <system>).
+/// A call running this long gets the count hook (and, after a signal, is interrupted). Short,
+/// as what runs before it is not counted: a swarm stuck in step() pays it once a robot.
+constexpr double kArmAfterSeconds = 0.02;
+
+/// Instructions a call may run before it is stopped: a step() (or a loop-function step hook)
+/// runs every tick, so a stuck swarm must end in seconds; setup calls may do more work once.
+constexpr long long kDefaultStepBudget = 100000000;    // ~0.3 s of Lua
+constexpr long long kDefaultSetupBudget = 1000000000;  // ~3 s of Lua
+
+/// Which budget a call runs under.
+enum class CallKind {
+  Step,   // step(), filling the readings, loop functions' pre_step/post_step and per-tick hooks
+  Setup,  // a script's top level, init(), reset(), destroy(), post_experiment()
+};
 
 struct LuaOptions {
-  bool sandbox = false;                      // no io, os, debug, loadlib, C modules, bytecode
-  size_t memory_limit = size_t{256} << 20;   // bytes per state; 0 = unlimited
-  long long instruction_limit = 1000000000;  // per call into Lua; 0 = unlimited
-  double wall_seconds = 60;                  // per call, backstop for time in C functions; 0 = off
-  InputFiles* inputs = nullptr;              // where `require` lists the files it loads; null: nowhere
+  bool sandbox = false;                                     // no io, os, debug, loadlib, C modules, bytecode
+  size_t memory_limit = size_t{256} << 20;                  // bytes per state; 0 = unlimited
+  long long instruction_limit = kDefaultStepBudget;         // per step call; 0 = unlimited
+  long long setup_instruction_limit = kDefaultSetupBudget;  // per setup call; 0 = unlimited
+  double wall_seconds = 60;                                 // per call, backstop for time in C functions; 0 = off
+  InputFiles* inputs = nullptr;                             // where `require` lists the files it loads; null: nowhere
   /// The run's monitor thread (arms long calls, wall clock, interrupts, stuck calls). Null:
   /// the World makes its own; a state made with none is never watched.
   Watchdog* watchdog = nullptr;
@@ -54,8 +67,10 @@ struct LuaGuard {
   SmallBlockPool pool;     // where the state's small blocks live
   bool memory_exceeded = false;
   char memory_where[160] = "";  // "foo.lua:12", the script line that hit the limit
-  // Instructions, counted per call.
-  long long budget = 0;
+  // Instructions, counted per call; 0 = unlimited.
+  long long step_budget = 0, setup_budget = 0;
+  long long budget = 0;  // the running call's
+  CallKind kind = CallKind::Step;
   long long used = 0;
   bool budget_exceeded = false;
   bool stopped = false;            // the guard raised a stop in this call: message handlers are skipped
@@ -121,9 +136,9 @@ void OpenGuardedLibraries(lua_State* L, bool sandbox);
 /// `require`) before the check.
 void SetRequireRoots(LuaGuard* guard, const std::vector<std::string>& folders);
 
-/// Brackets one call into Lua: resets the budget, arms the wall clock and puts the state in
-/// this thread's watchdog slot.
-void BeginGuardedCall(LuaGuard* guard);
+/// Brackets one call into Lua: resets the budget (`kind`'s), arms the wall clock and puts the
+/// state in this thread's watchdog slot.
+void BeginGuardedCall(LuaGuard* guard, CallKind kind);
 /// Ends the call. When the guard stopped it (or a limit was hit and caught inside the
 /// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),
 /// else "". `status` is lua_pcall's result.

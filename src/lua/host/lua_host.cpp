@@ -10,7 +10,8 @@ namespace essaim {
 
 lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
   guard->limit = options.memory_limit;
-  guard->budget = options.instruction_limit;
+  guard->step_budget = options.instruction_limit;
+  guard->setup_budget = options.setup_instruction_limit;
   guard->wall_seconds = options.wall_seconds;
   guard->scripts = options.scripts;
   lua_State* L = lua_newstate(GuardedAlloc, guard);

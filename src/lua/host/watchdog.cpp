@@ -63,7 +63,7 @@ size_t Watchdog::Slots() const {
 
 void Watchdog::Loop() {
   std::unique_lock<std::mutex> lock(mutex_);
-  while (!wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return stopping_; })) {
+  while (!wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return stopping_; })) {
     const long long now = SteadyNowNs();
     for (WatchSlot& slot : slots_) {
       LuaGuard* g = slot.guard.load(std::memory_order_acquire);

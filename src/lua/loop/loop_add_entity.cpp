@@ -212,7 +212,7 @@ int AddEntity(lua_State* L) {
     ParseLight(L, ctx, line);
   else
     ParseObstacle(L, ctx, kind, line);
-  RaiseIf(L, ctx->entities->RoomProblem());
+  RaiseIf(L, ctx->entities->RoomProblem(false));
   AssignId(L, *ctx->entities, kind_name, light ? &ctx->light_spec.id : &ctx->obstacle_spec.id);
   const EntityRef e = light ? ctx->entities->AddLight(ctx->light_spec) : ctx->entities->AddObstacle(ctx->obstacle_spec);
   PushEntityHandle(L, e, ctx->entities->IdOf(e).c_str());

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <lua.hpp>
 
 #include "core/color.h"
 #include "core/paths.h"
+#include "lua/host/log_text.h"
 #include "lua/host/lua_require.h"
 #include "lua/loop/loop_handles.h"
 #include "lua/loop/lua_to_value.h"
@@ -32,24 +34,15 @@ int Traceback(lua_State* L) {
   return 1;
 }
 
+// log and logerr as a controller's (ARGoS's text), print as Lua's.
 int LoopLog(lua_State* L) {
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
-  char stream = static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
-  *log += stream;
-  int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) *log += '\t';  // as print() and the controllers' log()
-    if (lua_type(L, i) == LUA_TNUMBER) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%g", lua_tonumber(L, i));
-      *log += buf;
-    } else if (lua_type(L, i) == LUA_TBOOLEAN) {
-      *log += lua_toboolean(L, i) ? "1" : "0";
-    } else {
-      *log += luaL_tolstring(L, i, nullptr);
-      lua_pop(L, 1);
-    }
-    if (stream == 'P' && i < n) *log += '\t';
+  const char kind = static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
+  *log += kind == 'P' ? 'O' : kind;
+  if (kind == 'P') {
+    AppendPrintText(L, log);
+  } else {
+    AppendArgosLogText(L, log);
   }
   *log += '\n';
   return 0;
@@ -63,7 +56,7 @@ void LoopFunctions::OpenLogs() {
   const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}, {"print", 'P'}};
   for (auto [name, stream] : logs) {
     lua_pushlightuserdata(L_, &context_.log);
-    lua_pushinteger(L_, stream == 'P' ? 'O' : stream);
+    lua_pushinteger(L_, stream);
     lua_pushcclosure(L_, LoopLog, 2);
     lua_setglobal(L_, name);
   }
@@ -193,7 +186,7 @@ bool LoopFunctions::Load(const Model& model, EntityStore* entities,
     *error = "loop functions: " + std::string(lua_tostring(L_, -1));
     return false;
   }
-  return PCall(0, 0, "top level", error);
+  return PCall(0, 0, "top level", CallKind::Setup, error);
 }
 
 void LoopFunctions::ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const {
@@ -212,12 +205,12 @@ void LoopFunctions::SetTick(uint64_t tick) {
   lua_pop(L_, 1);
 }
 
-bool LoopFunctions::PCall(int nargs, int nresults, const char* what, std::string* error) {
+bool LoopFunctions::PCall(int nargs, int nresults, const char* what, CallKind kind, std::string* error) {
   lua_State* L = L_;
   int fn = lua_gettop(L) - nargs;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   lua_insert(L, fn);
-  BeginGuardedCall(&guard_);
+  BeginGuardedCall(&guard_, kind);
   const int status = lua_pcall(L, nargs, nresults, fn);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
@@ -246,7 +239,9 @@ bool LoopFunctions::Call(const char* name, std::string* error) {
     lua_pop(L_, 1);
     return true;
   }
-  bool ok = PCall(0, 0, name, error);
+  // The hooks that run every tick get the step budget; init, reset and destroy run once.
+  const bool per_tick = std::strcmp(name, "pre_step") == 0 || std::strcmp(name, "post_step") == 0;
+  bool ok = PCall(0, 0, name, per_tick ? CallKind::Step : CallKind::Setup, error);
   lua_settop(L_, 0);
   return ok;
 }
@@ -256,7 +251,7 @@ bool LoopFunctions::FloorColor(double x, double y, Color* out, std::string* erro
   RawGlobal(L, "floor_color");
   lua_pushnumber(L, x);
   lua_pushnumber(L, y);
-  if (!PCall(2, 3, "floor_color", error)) return false;
+  if (!PCall(2, 3, "floor_color", CallKind::Step, error)) return false;
   bool ok = true;
   if (lua_type(L, -3) == LUA_TSTRING) {
     auto c = ParseColor(lua_tostring(L, -3));
@@ -282,7 +277,7 @@ bool LoopFunctions::IsExperimentFinished(bool* finished, std::string* error) {
     lua_pop(L_, 1);
     return true;
   }
-  if (!PCall(0, 1, "is_experiment_finished", error)) return false;
+  if (!PCall(0, 1, "is_experiment_finished", CallKind::Step, error)) return false;
   *finished = lua_toboolean(L_, -1);
   lua_settop(L_, 0);
   return true;
@@ -295,7 +290,7 @@ bool LoopFunctions::PostExperiment(Value* metrics, bool* has_metrics, std::strin
     lua_pop(L_, 1);
     return true;
   }
-  if (!PCall(0, 1, "post_experiment", error)) return false;
+  if (!PCall(0, 1, "post_experiment", CallKind::Setup, error)) return false;
   if (lua_istable(L_, -1)) {
     std::string err;
     std::vector<std::string> nonfinite;

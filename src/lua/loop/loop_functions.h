@@ -50,7 +50,7 @@ class LoopFunctions {
   void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
 
  private:
-  bool PCall(int nargs, int nresults, const char* what, std::string* error);
+  bool PCall(int nargs, int nresults, const char* what, CallKind kind, std::string* error);
   void OpenLogs();
   void SeedMathRandom(uint64_t seed);
   /// The `experiment` table, left on the stack.

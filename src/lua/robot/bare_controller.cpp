@@ -46,7 +46,7 @@ lua_State* BareController::NewState(BareAllocator allocator) {
   guard_ = std::make_unique<LuaGuard>();
   LuaOptions unlimited;  // the allocator alone: no memory cap, budget or wall clock
   unlimited.memory_limit = 0;
-  unlimited.instruction_limit = 0;
+  unlimited.instruction_limit = unlimited.setup_instruction_limit = 0;
   unlimited.wall_seconds = 0;
   return NewGuardedState(guard_.get(), unlimited);
 }

@@ -8,6 +8,7 @@
 #include "core/rng.h"
 #include "core/strings.h"
 #include "lua/host/compiled_scripts.h"
+#include "lua/host/log_text.h"
 #include "lua/host/lua_host.h"
 #include "lua/host/lua_require.h"
 #include "lua/robot/lua_devices.h"
@@ -28,37 +29,10 @@ int Traceback(lua_State* L) {
   return 1;
 }
 
-// ARGoS's log(): numbers as C++ streams print
-// them (6 significant digits), booleans 1/0, other types by name.
-void AppendArgs(lua_State* L, std::string* out, const char* sep) {
-  int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) *out += sep;
-    switch (lua_type(L, i)) {
-      case LUA_TNUMBER: {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%g", lua_tonumber(L, i));
-        *out += buf;
-        break;
-      }
-      case LUA_TSTRING:
-        *out += lua_tostring(L, i);
-        break;
-      case LUA_TBOOLEAN:
-        *out += lua_toboolean(L, i) ? "1" : "0";
-        break;
-      default:
-        *out += luaL_typename(L, i);
-    }
-  }
-}
-
 int LogTo(lua_State* L, char stream) {
-  // Arguments separated by tabs, as print() does (ARGoS joins them with nothing, which
-  // makes log("x", 1, 2) read "x12").
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
   *log += stream;
-  AppendArgs(L, log, "\t");
+  AppendArgosLogText(L, log);
   *log += '\n';
   return 0;
 }
@@ -91,12 +65,7 @@ int Print(lua_State* L) {
   // Lua's print, routed through the buffer so output keeps robot order under threads.
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
   *log += 'O';
-  int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) *log += '\t';
-    *log += luaL_tolstring(L, i, nullptr);
-    lua_pop(L, 1);
-  }
+  AppendPrintText(L, log);
   *log += '\n';
   return 0;
 }
@@ -197,7 +166,7 @@ bool LuaController::RunChunk(const LuaOptions& options, std::string* error) {
     lua_settop(L, 0);
     return false;
   }
-  BeginGuardedCall(&guard_);
+  BeginGuardedCall(&guard_, CallKind::Setup);
   const int status = lua_pcall(L, 0, 0, base);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
@@ -239,7 +208,7 @@ bool LuaController::PushReadings(std::string* error) {
   PushJob job{controller_, robot_, &refs_};
   lua_pushcfunction(L, PushProtected);
   lua_pushlightuserdata(L, &job);
-  BeginGuardedCall(&guard_);
+  BeginGuardedCall(&guard_, CallKind::Step);
   const int status = lua_pcall(L, 1, 0, 0);
   return Finish(status, "filling its sensor readings", "", error);
 }
@@ -268,7 +237,7 @@ bool LuaController::HasFunction(const char* name) {
   return found;
 }
 
-bool LuaController::Call(const char* fn, bool required, std::string* error) {
+bool LuaController::Call(const char* fn, bool required, CallKind kind, std::string* error) {
   lua_State* L = L_;
   if (controller_->script.empty()) return true;
   if (!L) {
@@ -283,7 +252,7 @@ bool LuaController::Call(const char* fn, bool required, std::string* error) {
     *error = "robot " + def_->id + ": " + controller_->script + ": no global function '" + fn + "'";
     return false;
   }
-  BeginGuardedCall(&guard_);
+  BeginGuardedCall(&guard_, kind);
   const int status = lua_pcall(L, 0, 0, base);
   return Finish(status, "in ", fn, error);
 }

@@ -33,9 +33,9 @@ class LuaController {
   bool PushReadings(std::string* error);
   /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
   /// A state that hit its memory limit is closed and its memory freed.
-  bool CallInit(std::string* error) { return Call("init", false, error); }
-  bool CallStep(std::string* error) { return Call("step", true, error); }
-  bool CallDestroy(std::string* error) { return Call("destroy", false, error); }
+  bool CallInit(std::string* error) { return Call("init", false, CallKind::Setup, error); }
+  bool CallStep(std::string* error) { return Call("step", true, CallKind::Step, error); }
+  bool CallDestroy(std::string* error) { return Call("destroy", false, CallKind::Setup, error); }
   /// io.write's text: each completed line goes to the log buffer as a print() line.
   void WriteText(const char* text, size_t len);
   /// The script defines global function `name` (false without a script or a state).
@@ -52,7 +52,7 @@ class LuaController {
   ::lua_State* State() { return L_; }
 
  private:
-  bool Call(const char* fn, bool required, std::string* error);
+  bool Call(const char* fn, bool required, CallKind kind, std::string* error);
   /// The globals every controller script sees: log, logerr, print, io.write, vector types.
   void OpenGlobals(::lua_State* L);
   /// The robot table, in ARGoS's order: id, random, actuators, sensors, params.

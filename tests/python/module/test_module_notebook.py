@@ -25,7 +25,7 @@ def controller(tmp_path, body):
 
 NOISY = """
 count = 0
-function init() log("hello", 1, robot.id) end
+function init() log("hello ", 1, true, 1/3, " ", robot.id) end
 function step()
   count = count + 1
   info = {n = count, list = {1, 2, 3}, name = robot.id}
@@ -43,7 +43,8 @@ def test_errors_and_log_lines_reach_logging_and_errors(tmp_path, caplog):
         with essaim.Simulation(FORAGING, seed=1, overrides=over) as sim:
             infos = [r for r in caplog.records if r.levelno == logging.INFO]
             assert len(infos) == 5 and all("hello" in r.getMessage() for r in infos)
-            assert infos[0].getMessage().startswith("fb0: hello") and infos[0].robot == "fb0"
+            # ARGoS's log() text: no separator, numbers as C++ streams write them, true as 1
+            assert infos[0].getMessage() == "fb0: hello 110.333333 fb0" and infos[0].robot == "fb0"
             assert infos[0].tick == 0
             sim.step(5)
             assert sim.tick == 5  # the error did not stop the run

@@ -1,0 +1,18 @@
+// The text of a controller's or loop functions' log line, as ARGoS and Lua write it.
+#pragma once
+
+#include <string>
+
+struct lua_State;
+
+namespace essaim {
+
+/// ARGoS's log() and logerr(): the arguments one after the other with no separator, numbers
+/// as a C++ stream prints them (6 significant digits: 0.333333, 1e+08, 3 for 3.0), booleans
+/// 1/0, strings as they are, any other value by its type name (nil, table...).
+void AppendArgosLogText(lua_State* L, std::string* out);
+
+/// Lua's print(): tostring() of each argument (metamethods included), separated by tabs.
+void AppendPrintText(lua_State* L, std::string* out);
+
+}  // namespace essaim
