@@ -5,7 +5,8 @@
 //   quantile(P) VALUE OP N          the P-quantile over the runs (P in [0, 1])
 //   fraction(VALUE OP N) OP F       the fraction of runs meeting the inner condition
 // VALUE: `errors` (controller errors plus a failed run), `ticks`, `summary.KEY` (summary.json),
-// `metrics.KEY` or a bare KEY (metrics.json); a dotted KEY goes into nested objects.
+// `metrics.KEY` or a bare KEY (metrics.json); a dotted KEY goes into nested objects; A/B (no
+// spaces) is the ratio of two values, e.g. trips_per_source.A/trips_total.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,7 @@
 // Checking an expectation over the runs: reading each run's value, the aggregate, the verdict.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include "app/expectation.h"
@@ -41,6 +42,13 @@ std::optional<double> ErrorCount(const RunOutcome& run) {
   const Value* status = run.summary.Find("status");
   if (!errors || !status) return std::nullopt;
   return static_cast<double>(errors->list.size()) + (status->text == "failed" ? 1 : 0);
+}
+
+/// 4 significant digits: what a table needs (the runs' own files hold the full values).
+std::string Short(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
 }
 
 /// Linear interpolation between closest ranks (numpy's default), on sorted values.
@@ -84,7 +92,7 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
   } else {
     double share = total ? static_cast<double>(met) / static_cast<double>(total) : 0;
     v.pass = total > 0 && e.check.Holds(share);
-    v.value = FormatDouble(share) + " (" + std::to_string(met) + "/" + std::to_string(total) + ")";
+    v.value = Short(share) + " (" + std::to_string(met) + "/" + std::to_string(total) + ")";
   }
   v.failed_seeds = std::move(failed);
   return v;
@@ -92,6 +100,12 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
 }  // namespace
 
 std::optional<double> RunValue(const RunOutcome& run, const std::string& name) {
+  size_t slash = name.find('/');
+  if (slash != std::string::npos) {  // a share: A/B, e.g. trips_per_source.A/trips_total
+    std::optional<double> a = RunValue(run, name.substr(0, slash)), b = RunValue(run, name.substr(slash + 1));
+    if (!a || !b || *b == 0) return std::nullopt;
+    return *a / *b;
+  }
   if (name == "errors") return ErrorCount(run);
   if (name == "ticks") return NumberOf(run.summary.Find("ticks"));
   if (name.rfind("summary.", 0) == 0) return NumberOf(Lookup(run.summary, name.substr(8)));
@@ -116,7 +130,7 @@ Verdict Evaluate(const Expectation& e, const std::vector<RunOutcome>& runs) {
   }
   double aggregate = AggregateOf(e, values);
   v.pass = e.check.Holds(aggregate);
-  v.value = FormatDouble(aggregate);
+  v.value = Short(aggregate);
   // The runs that pull it the wrong way: those whose own value fails the same comparison.
   for (size_t i = 0; i < values.size() && !v.pass; ++i)
     if (!e.check.Holds(values[i])) v.failed_seeds.push_back(seeds[i]);
