@@ -55,7 +55,7 @@ CommandMain AddDevicesCommand(CLI::App& app) {
   sub->add_flag_callback(
          "--luacheck", [format] { *format = "luacheck"; }, "print a .luacheckrc declaring essaim's globals")
       ->excludes(defs);
-  sub->footer("Examples:\n  essaim devices | less\n  essaim devices --lua-defs > essaim.d.lua");
+  sub->footer("Example:\n  essaim devices | less\n  essaim devices --lua-defs > essaim.d.lua");
   return [format] {
     if (format->empty()) return Devices();
     std::fputs((*format == "luacheck" ? LuacheckConfig() : LuaLanguageServerDefs()).c_str(), stdout);

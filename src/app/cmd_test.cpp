@@ -157,7 +157,7 @@ CommandMain AddTestCommand(CLI::App& app) {
   sub->add_option("--junit", args->junit, "also write the results as JUnit XML into this file");
   sub->add_option("--out", args->out, "the runs' folders go under it (default essaim-test/SPEC_NAME)");
   sub->add_flag("--update", args->update, "rewrite the spec's golden file from this run, saying what changed");
-  sub->footer("Example:\n  essaim test tests/specs/foraging_mines.toml -j 2");
+  sub->footer("Example:\n  essaim test arenas/foraging.test.toml -j 2");
   return [args] { return Test(*args); };
 }
 
