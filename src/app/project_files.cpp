@@ -31,17 +31,23 @@ std::string DeviceElement(const DeviceRow& row) {
   return element + "/>";
 }
 
-std::string DeviceLines(bool sensors) {
+/// The declared devices, each under its comment; the ground sensors only over a floor (ARGoS
+/// refuses them without one).
+std::string DeviceLines(bool sensors, bool floor) {
   std::string declared, others;
   for (const DeviceRow& row : kDeviceRows) {
     if (row.is_sensor != sensors || !row.supported) continue;
-    if (kDeclared.count(row.type))
+    if (kDeclared.count(row.type) || (floor && row.type == DeviceType::MotorGroundSensor))
       declared += std::string("        <!-- ") + row.doc + " -->\n        " + DeviceElement(row) + "\n";
     else
       others += "             " + DeviceElement(row) + "\n";
   }
   return declared + "        <!-- more (essaim devices describes each):\n" + others + "        -->\n";
 }
+
+const char* kFloor =
+    "    <!-- the floor's colours: floor_color(x, y) of the loop functions, sampled once at start -->\n"
+    "    <floor id=\"floor\" source=\"loop_functions\" pixels_per_meter=\"50\"/>\n";
 
 const char* kArgos = R"(<?xml version="1.0" ?>
 <!-- @NAME@ (essaim new @NAME@ --template @TEMPLATE@): @ABOUT@.
@@ -68,7 +74,7 @@ const char* kArgos = R"(<?xml version="1.0" ?>
   <loop_functions script="@NAME@_loop.lua"/>
 
   <arena size="4.2,4.2,1" center="0,0,0.5">
-    <box id="wall_north" size="4,0.1,0.5" movable="false"><body position="0,2.05,0" orientation="0,0,0"/></box>
+@FLOOR@    <box id="wall_north" size="4,0.1,0.5" movable="false"><body position="0,2.05,0" orientation="0,0,0"/></box>
     <box id="wall_south" size="4,0.1,0.5" movable="false"><body position="0,-2.05,0" orientation="0,0,0"/></box>
     <box id="wall_east" size="0.1,4,0.5" movable="false"><body position="2.05,0,0" orientation="0,0,0"/></box>
     <box id="wall_west" size="0.1,4,0.5" movable="false"><body position="-2.05,0,0" orientation="0,0,0"/></box>
@@ -156,11 +162,12 @@ std::string Filled(const std::string& text, const ProjectContext& c, const Proje
   out = Replaced(out, "@TEMPLATE@", c.templ);
   out = Replaced(out, "@ABOUT@", t.about);
   out = Replaced(out, "@TICKS@", t.ticks);
+  out = Replaced(out, "@FLOOR@", t.uses_floor ? kFloor : "");
   out = Replaced(out, "@EXPECT@", t.expectations);
   out = Replaced(out, "@ESSAIM@", c.essaim_path);
   out = Replaced(out, "@HINTS@", c.cmake_hint.empty() ? "" : " HINTS \"" + c.cmake_hint + "\"");
-  out = Replaced(out, "@ACTUATORS@", DeviceLines(false));
-  return Replaced(out, "@SENSORS@", DeviceLines(true));
+  out = Replaced(out, "@ACTUATORS@", DeviceLines(false, t.uses_floor));
+  return Replaced(out, "@SENSORS@", DeviceLines(true, t.uses_floor));
 }
 }  // namespace
 

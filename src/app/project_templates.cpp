@@ -145,6 +145,100 @@ function post_experiment()
 end
 )";
 
+const char* kForagingController =
+    R"(-- @NAME@: foraging (essaim new, template "foraging"). Robots wander until their motor ground
+-- sensor sees a grey food patch, pick up food there (LEDs red), drive home to the black nest in
+-- the middle (positioning), drop it (LEDs green) and go out again. init() once, step() every
+-- tick, reset(), destroy() at the end.
+
+local speed   -- cm/s, from <params speed="...">
+carrying = false  -- globals: the loop functions read them (r:lua_global)
+deliveries = 0
+
+function init()
+  speed = tonumber(robot.params.speed) or 10
+  carrying, deliveries = false, 0
+  robot.leds.set_all_colors("green")
+end
+
+-- The floor under the robot: the mean of the four motor ground readings (0 black .. 1 white).
+local function floor_level()
+  local sum = 0
+  for i = 1, 4 do sum = sum + robot.motor_ground[i].value end
+  return sum / 4
+end
+
+-- The largest proximity reading within 60 degrees of the front, and its angle.
+local function obstacle()
+  local value, angle = 0, 0
+  for i = 1, 24 do
+    local r = robot.proximity[i]
+    if math.abs(r.angle) < math.pi / 3 and r.value > value then value, angle = r.value, r.angle end
+  end
+  return value, angle
+end
+
+-- The nest's direction in the robot's frame (rad), from the positioning sensor.
+local function nest_bearing()
+  local p = robot.positioning.position
+  local yaw = robot.positioning.orientation:toeulerangles()
+  local a = math.atan(-p.y, -p.x) - yaw
+  return math.atan(math.sin(a), math.cos(a))
+end
+
+local function steer(angle)
+  local turn = math.max(-1, math.min(1, angle / (math.pi / 2)))
+  robot.wheels.set_velocity(speed * (1 - turn), speed * (1 + turn))
+end
+
+function step()
+  local level = floor_level()
+  if not carrying and level > 0.3 and level < 0.7 then
+    carrying = true
+    robot.leds.set_all_colors("red")
+  elseif carrying and level < 0.2 then
+    carrying, deliveries = false, deliveries + 1
+    robot.leds.set_all_colors("green")
+  end
+  local close, side = obstacle()
+  if close > 0.1 then
+    steer(side > 0 and -math.pi / 2 or math.pi / 2)
+  elseif carrying then
+    steer(nest_bearing())
+  else
+    steer(robot.random.uniform(-0.6, 0.6))
+  end
+end
+
+function reset() init() end
+
+function destroy() end
+)";
+
+const char* kForagingLoop =
+    R"(-- @NAME@: loop functions (docs/loop-functions.md). The floor: a black nest in the middle and
+-- four grey food patches; one metric: the food delivered to the nest, over the swarm.
+
+local NEST_RADIUS = 0.4
+local PATCHES = {{1.3, 1.3}, {-1.3, 1.3}, {1.3, -1.3}, {-1.3, -1.3}}
+local PATCH_RADIUS = 0.35
+
+function floor_color(x, y)
+  if x * x + y * y < NEST_RADIUS ^ 2 then return 0, 0, 0 end
+  for _, p in ipairs(PATCHES) do
+    if (x - p[1]) ^ 2 + (y - p[2]) ^ 2 < PATCH_RADIUS ^ 2 then return 128, 128, 128 end
+  end
+  return 255, 255, 255
+end
+
+-- metrics.json: deliveries over the swarm, and per robot on average.
+function post_experiment()
+  local total = 0
+  for _, r in ipairs(experiment.robots) do total = total + (r:lua_global("deliveries") or 0) end
+  return {deliveries = total, deliveries_per_robot = total / #experiment.robots}
+end
+)";
+
 const ProjectTemplate kTemplates[] = {
     {"empty", kEmptyController, kEmptyLoop,
      "  \"each errors == 0\",\n  \"mean moved > 0.3\",          # metres from the start, on average\n", "300",
@@ -154,11 +248,16 @@ const ProjectTemplate kTemplates[] = {
      "  \"median shrink < 0.6\",                  # the swarm's spread at least 40% smaller\n"
      "  \"fraction(shrink < 0.8) >= 0.8\",        # and gathered in at least 8 runs of 10\n",
      "600", "the robots gather: each steers towards the robots it hears over range-and-bearing"},
+    {"foraging", kForagingController, kForagingLoop,
+     "  \"each errors == 0\",\n"
+     "  \"median deliveries >= 20\",             # food brought to the nest, over the swarm\n"
+     "  \"fraction(deliveries >= 10) >= 0.9\",   # 10 or more in at least 9 runs of 10\n",
+     "1500", "the robots fetch food from grey patches and bring it to the black nest in the middle", true},
 };
 }  // namespace
 
 const std::vector<std::string>& ProjectTemplateNames() {
-  static const std::vector<std::string> names = {"empty", "aggregation"};
+  static const std::vector<std::string> names = {"empty", "aggregation", "foraging"};
   return names;
 }
 

@@ -8,7 +8,7 @@
 
 namespace essaim {
 
-/// "empty", "aggregation".
+/// "empty", "aggregation", "foraging".
 const std::vector<std::string>& ProjectTemplateNames();
 
 /// What differs between templates (project_templates.cpp): the scripts and the expectations.
@@ -19,6 +19,7 @@ struct ProjectTemplate {
   const char* expectations;  // the spec's expect = [...] lines
   const char* ticks;         // the spec's ticks
   const char* about;         // one line for the README and the .argos file
+  bool uses_floor = false;   // the loop functions colour the floor (floor_color)
 };
 /// The template called `name`; nullptr when there is none.
 const ProjectTemplate* FindProjectTemplate(const std::string& name);

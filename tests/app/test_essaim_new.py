@@ -1,5 +1,6 @@
 """`essaim new NAME` (docs/testing.md): the folder runs, its `ctest` passes at once and fails
 with the expectation and the seeds named once the controller is broken; luacheck is clean on it."""
+import json
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
@@ -18,7 +19,7 @@ def ctest(folder):
 
 
 @pytest.mark.skipif(not CTEST, reason="ctest is not installed")
-@pytest.mark.parametrize("template", ["empty", "aggregation"])
+@pytest.mark.parametrize("template", ["empty", "aggregation", "foraging"])
 def test_a_new_project_runs_passes_and_fails_when_broken(tmp_path, template):
     r = essaim("new", "demo", "--template", template, cwd=tmp_path)
     assert r.returncode == 0, r.stderr
@@ -46,7 +47,7 @@ def test_a_new_project_runs_passes_and_fails_when_broken(tmp_path, template):
 
 @pytest.mark.skipif(not LUACHECK, reason="luacheck is not installed (Debian lua-check; scripts/setup.sh)")
 def test_luacheck_is_clean_on_a_new_project_and_catches_a_typo(tmp_path):
-    for template in ("empty", "aggregation"):
+    for template in ("empty", "aggregation", "foraging"):
         assert essaim("new", template, "--template", template, cwd=tmp_path).returncode == 0
         r = subprocess.run([LUACHECK, "--no-color", "."], cwd=tmp_path / template, capture_output=True, text=True)
         assert r.returncode == 0, r.stdout
@@ -54,6 +55,25 @@ def test_luacheck_is_clean_on_a_new_project_and_catches_a_typo(tmp_path):
     lua.write_text(lua.read_text().replace("robot.proximity[i]", "robot.proximty[i]"))
     r = subprocess.run([LUACHECK, "--no-color", "."], cwd=tmp_path / "empty", capture_output=True, text=True)
     assert r.returncode == 1 and "accessing undefined field 'proximty" in r.stdout
+
+
+@pytest.mark.skipif(not CTEST, reason="ctest is not installed")
+def test_the_cmake_module_declares_the_spec_as_a_ctest(tmp_path):
+    """find_package(essaim) from the build folder: essaim_add_test with the spec's timeout and labels."""
+    assert essaim("new", "demo", cwd=tmp_path).returncode == 0
+    folder = tmp_path / "demo"
+    spec = folder / "demo.test.toml"
+    spec.write_text(spec.read_text().replace("timeout = 300", "timeout = 77").replace('["behaviour"]', '["a", "b"]'))
+    r = subprocess.run(["cmake", "-S", ".", "-B", "build"], cwd=folder, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout + r.stderr
+    listed = json.loads(subprocess.run([CTEST, "--test-dir", "build", "--show-only=json-v1"], cwd=folder,
+                                       capture_output=True, text=True, timeout=60).stdout)
+    [test] = listed["tests"]
+    props = {p["name"]: p["value"] for p in test["properties"]}
+    assert test["name"] == "demo_behaviour" and props["TIMEOUT"] == 77 and sorted(props["LABELS"]) == ["a", "b", "essaim"]
+    r = subprocess.run([CTEST, "--test-dir", "build"], cwd=folder, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stdout
+    assert (folder / "build" / "essaim-test" / "demo_behaviour.junit.xml").exists()
 
 
 def test_bad_names_and_existing_folders_are_refused(tmp_path):
