@@ -7,7 +7,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from clitest import essaim, need_essaim
+from clitest import check_junit_shape, essaim, need_essaim
 
 pytestmark = need_essaim
 CTEST = shutil.which("ctest")
@@ -41,8 +41,9 @@ def test_a_new_project_runs_passes_and_fails_when_broken(tmp_path, template):
     assert failed.returncode != 0
     assert "each errors == 0" in failed.stdout and "FAIL     1, 2, 3, 4, 5, 6, 7, 8, 9, 10" in failed.stdout
     assert "attempt to index a nil value (field 'wheel')" in failed.stdout
-    suite = ET.parse(folder / "demo.junit.xml").getroot().find("testsuite")
-    assert int(suite.get("failures")) >= 1
+    root = ET.parse(folder / "demo.junit.xml").getroot()
+    check_junit_shape(root)
+    assert int(root.find("testsuite").get("failures")) >= 1
 
 
 @pytest.mark.skipif(not LUACHECK, reason="luacheck is not installed (Debian lua-check; scripts/setup.sh)")

@@ -3,7 +3,7 @@ code, JUnit XML, spec errors, failed runs and golden runs."""
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from clitest import argos, essaim, need_essaim, write
+from clitest import argos, check_junit_shape, essaim, need_essaim, write
 
 pytestmark = need_essaim
 
@@ -55,7 +55,9 @@ def test_statistics_over_seeds_and_the_seeds_that_fail(tmp_path):
     assert table["mean absent > 0"][1] == "FAIL"
     assert "3 expectations" not in r.stdout and "11 of 14 expectations hold" in r.stdout
 
-    suite = ET.parse(tmp_path / "out.xml").getroot().find("testsuite")
+    root = ET.parse(tmp_path / "out.xml").getroot()
+    check_junit_shape(root)
+    suite = root.find("testsuite")
     cases = suite.findall("testcase")
     assert suite.get("name") == "x.test" and int(suite.get("tests")) == len(cases) == 14
     failed = [c for c in cases if c.find("failure") is not None]
