@@ -123,7 +123,7 @@ const char* kLoopFunctions =
     "---@field params table<string, string|table<string, string>>\n"
     "---@field arena {size_x: number, size_y: number, center_x: number, center_y: number}\n"
     "---@field robots essaim.RobotHandle[]\n---@field random essaim.Random\n---@field output_dir string\n"
-    "---@field timeseries fun(row: {[1]: string, [2]: number}[])\n"
+    "---@field timeseries fun(row: table[]) one row: an array of {name, value} pairs\n"
     "---@field entities fun(kind?: string): essaim.Entity[]\n"
     "---@field add_entity fun(kind: string, spec: table): essaim.Entity\n"
     "---@field remove_entity fun(h: essaim.Entity)\n\n"

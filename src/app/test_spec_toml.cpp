@@ -55,6 +55,10 @@ struct SpecReader {
         if (v && *v >= 0) spec->seeds.push_back(static_cast<uint64_t>(*v));
       }
       if (spec->seeds.empty()) Error(node, "seeds: the list is empty");
+      std::vector<uint64_t> sorted = spec->seeds;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        Error(node, "seeds: a seed is listed twice (its runs would share a folder)");
       return;
     }
     int64_t count = Integer(t, "seeds", 1, 10000, 10);  // seeds = N: seeds 1..N
@@ -126,6 +130,9 @@ struct SpecReader {
     if (!golden.empty()) spec->golden = JoinPath(folder, golden);
     int64_t first = spec->seeds.empty() ? 1 : static_cast<int64_t>(spec->seeds.front());
     spec->golden_seed = static_cast<uint64_t>(Integer(t, "golden_seed", 0, INT64_MAX, first));
+    if (!spec->golden.empty() &&
+        std::find(spec->seeds.begin(), spec->seeds.end(), spec->golden_seed) == spec->seeds.end())
+      Error(t.get("golden_seed"), "golden_seed " + std::to_string(spec->golden_seed) + " is not one of the seeds");
     if (spec->expectations.empty() && spec->golden.empty())
       Error(nullptr, "nothing to check: give expect = [...] or golden = \"FILE.json\"");
   }

@@ -90,6 +90,10 @@ def test_a_spec_that_cannot_be_read_is_exit_2_with_file_and_line(tmp_path):
     write(tmp_path, {"x.test.toml": 'experiment = "missing.argos"\nexpect = ["each errors == 0"]\n'})
     r = essaim("test", "x.test.toml", cwd=tmp_path)
     assert r.returncode == 2 and "missing.argos does not exist" in r.stderr
+    write(tmp_path, {"x.test.toml": 'experiment = "x.argos"\nseeds = [1, 2, 1]\ngolden = "g.json"\ngolden_seed = 5\n'})
+    r = essaim("test", "x.test.toml", cwd=tmp_path)
+    assert r.returncode == 2 and "x.test.toml:2: seeds: a seed is listed twice" in r.stderr
+    assert "x.test.toml:4: golden_seed 5 is not one of the seeds" in r.stderr
     write(tmp_path, {"x.test.toml": 'experiment = "x.argos"\nticks = [\n'})
     r = essaim("test", "x.test.toml", cwd=tmp_path)
     assert r.returncode == 2 and r.stderr.startswith("x.test.toml:")
