@@ -136,7 +136,7 @@ const char* kLuarc = R"({
 
 const char* kReadme = R"(# @NAME@
 
-@ABOUT@ (made by `essaim new @NAME@ --template @TEMPLATE@`).
+What happens: @ABOUT@ (made by `essaim new @NAME@ --template @TEMPLATE@`).
 
 | file | what |
 |---|---|
@@ -149,9 +149,9 @@ const char* kReadme = R"(# @NAME@
 
 A run writes into `runs/@NAME@-SEED/`; the test's runs go into `essaim-test/`.
 
-    essaim run @NAME@.argos          # one run
-    ctest --output-on-failure        # the behaviour test (essaim test @NAME@.test.toml)
-    luacheck .                       # the scripts against essaim's globals
+    essaim run @NAME@.argos      # one run
+    ctest --output-on-failure    # the behaviour test: essaim test @NAME@.test.toml
+    luacheck .                   # the scripts against essaim's globals
 
 Regenerate the editor files after an upgrade of essaim:
 `essaim devices --lua-defs > types/essaim.lua` and `essaim devices --luacheck > .luacheckrc`.
