@@ -131,3 +131,12 @@ def test_golden_run_fails_on_a_difference_and_update_rewrites_it(tmp_path):
     r = essaim("test", "x.test.toml", "--update", cwd=tmp_path)
     assert r.returncode == 0 and "written, 1 change(s)" in r.stdout and "recording:" in r.stdout
     assert essaim("test", "x.test.toml", cwd=tmp_path).returncode == 0
+
+
+def test_a_run_past_the_specs_timeout_is_stopped_and_failed(tmp_path):
+    spec = spec_text(["each errors == 0"]).replace("seeds = 10\nticks = 5\n", "seeds = [1, 2]\nticks = 100000000\n")
+    project(tmp_path, spec + "timeout = 1\n")
+    r = essaim("test", "x.test.toml", "-j", "2", cwd=tmp_path, timeout=60)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert rows(r.stdout)["every run finishes (exit 0)"] == ("0/2 runs", "FAIL", "1, 2")
+    assert "seed 1: stopped after the spec's timeout of 1 s" in r.stdout
