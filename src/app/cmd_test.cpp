@@ -128,6 +128,8 @@ int Test(TestArgs& args) {
   if (LoadTestSpec(args.spec, &spec, &errors) && ParseExpectations(spec, &expectations, &errors) &&
       !FileExists(spec.experiment))
     errors.push_back(spec.file + ": experiment " + spec.experiment + " does not exist");
+  if (errors.empty() && !PathExists(spec.workdir))
+    errors.push_back(spec.file + ": workdir " + spec.workdir + " does not exist");
   for (const std::string& e : errors) std::fprintf(stderr, "%s\n", e.c_str());
   if (!errors.empty()) return kExitBadInput;
   if (args.out.empty()) args.out = "essaim-test/" + spec.name;

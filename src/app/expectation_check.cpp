@@ -44,10 +44,10 @@ std::optional<double> ErrorCount(const RunOutcome& run) {
   return static_cast<double>(errors->list.size()) + (status->text == "failed" ? 1 : 0);
 }
 
-/// 4 significant digits: what a table needs (the runs' own files hold the full values).
+/// 6 significant digits: what a table needs (the runs' own files hold the full values).
 std::string Short(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
+  std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 

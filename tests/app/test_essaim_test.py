@@ -140,3 +140,9 @@ def test_a_run_past_the_specs_timeout_is_stopped_and_failed(tmp_path):
     assert r.returncode == 1, r.stdout + r.stderr
     assert rows(r.stdout)["every run finishes (exit 0)"] == ("0/2 runs", "FAIL", "1, 2")
     assert "seed 1: stopped after the spec's timeout of 1 s" in r.stdout
+
+
+def test_a_missing_workdir_is_a_spec_error(tmp_path):
+    project(tmp_path, spec_text(["each errors == 0"], extra='workdir = "nowhere"'))
+    r = essaim("test", "x.test.toml", cwd=tmp_path)
+    assert r.returncode == 2 and "x.test.toml: workdir nowhere does not exist" in r.stderr
