@@ -1,8 +1,11 @@
 // `essaim devices`: the device table, as the loader and the Lua host use it.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
+#include <string>
 
 #include "app/commands.h"
+#include "app/lua_annotations.h"
 #include "model/device_table.h"
 
 namespace essaim {
@@ -44,9 +47,21 @@ int Devices() {
 }  // namespace
 
 CommandMain AddDevicesCommand(CLI::App& app) {
-  app.add_subcommand("devices", "list supported sensors and actuators, their XML attributes and Lua tables")
-      ->footer("Example:\n  essaim devices | less");
-  return Devices;
+  auto format = std::make_shared<std::string>();
+  CLI::App* sub =
+      app.add_subcommand("devices", "list supported sensors and actuators, their XML attributes and Lua tables");
+  CLI::Option* defs = sub->add_flag_callback(
+      "--lua-defs", [format] { *format = "lua-defs"; },
+      "print the Lua language server annotations of robot.*, log and the loop functions' API");
+  sub->add_flag_callback(
+         "--luacheck", [format] { *format = "luacheck"; }, "print a .luacheckrc declaring essaim's globals")
+      ->excludes(defs);
+  sub->footer("Example:\n  essaim devices | less\n  essaim devices --lua-defs > essaim.d.lua");
+  return [format] {
+    if (format->empty()) return Devices();
+    std::fputs((*format == "luacheck" ? LuacheckConfig() : LuaLanguageServerDefs()).c_str(), stdout);
+    return 0;
+  };
 }
 
 }  // namespace essaim

@@ -65,3 +65,22 @@ def fnv1a64(data: bytes) -> str:
     for b in data:
         h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
     return f"fnv1a64:{h:016x}"
+
+
+def check_junit_shape(root):
+    """What JUnit readers (Jenkins, GitLab, GitHub reporters) require: testsuites > testsuite >
+    testcase [> failure], counts that add up, numbers where numbers go."""
+    assert root.tag == "testsuites"
+    for suite in root:
+        assert suite.tag == "testsuite" and suite.get("name")
+        for key in ("tests", "failures", "errors", "skipped"):
+            assert int(suite.get(key)) >= 0
+        float(suite.get("time"))
+        cases = list(suite)
+        assert all(c.tag == "testcase" and c.get("name") and c.get("classname") for c in cases)
+        assert all(float(c.get("time")) >= 0 for c in cases)
+        failures = [f for c in cases for f in c if f.tag == "failure"]
+        assert all(f.get("message") and f.get("type") for f in failures)
+        assert int(suite.get("tests")) == len(cases) and int(suite.get("failures")) == len(failures)
+    assert int(root.get("tests")) == sum(int(s.get("tests")) for s in root)
+    assert int(root.get("failures")) == sum(int(s.get("failures")) for s in root)

@@ -1,0 +1,36 @@
+# essaim_add_test(NAME name SPEC file.toml [LABELS l...] [JOBS n] [ARGS a...]): one ctest that runs
+# `essaim test SPEC` (docs/testing.md). Its timeout and labels come from the spec's `timeout = S` and
+# `labels = [...]` lines (read here with a regular expression: the spec is TOML, CMake cannot parse
+# it); changing the spec reconfigures. The runs go into the build folder, with the JUnit XML beside
+# them (NAME.junit.xml). ESSAIM_EXECUTABLE names the essaim binary (essaimConfig.cmake sets it).
+function(essaim_add_test)
+  cmake_parse_arguments(ARG "" "NAME;SPEC;JOBS" "LABELS;ARGS" ${ARGN})
+  if(NOT ARG_NAME OR NOT ARG_SPEC)
+    message(FATAL_ERROR "essaim_add_test: NAME and SPEC are required")
+  endif()
+  get_filename_component(spec "${ARG_SPEC}" ABSOLUTE)
+  if(NOT EXISTS "${spec}")
+    message(FATAL_ERROR "essaim_add_test(${ARG_NAME}): no spec ${spec}")
+  endif()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${spec}")
+  set(timeout 600)
+  file(STRINGS "${spec}" timeout_line REGEX "^[ \t]*timeout[ \t]*=")
+  if(timeout_line MATCHES "=[ \t]*([0-9]+)")
+    set(timeout ${CMAKE_MATCH_1})
+  endif()
+  set(labels essaim ${ARG_LABELS})
+  file(STRINGS "${spec}" labels_line REGEX "^[ \t]*labels[ \t]*=")
+  string(REGEX MATCHALL "\"[^\"]*\"" quoted "${labels_line}")
+  foreach(label ${quoted})
+    string(REPLACE "\"" "" label "${label}")
+    list(APPEND labels "${label}")
+  endforeach()
+  set(jobs)
+  if(ARG_JOBS)
+    set(jobs -j ${ARG_JOBS})
+  endif()
+  set(out "${CMAKE_CURRENT_BINARY_DIR}/essaim-test/${ARG_NAME}")
+  add_test(NAME ${ARG_NAME}
+           COMMAND ${ESSAIM_EXECUTABLE} test "${spec}" --out "${out}" --junit "${out}.junit.xml" ${jobs} ${ARG_ARGS})
+  set_tests_properties(${ARG_NAME} PROPERTIES TIMEOUT ${timeout} LABELS "${labels}")
+endfunction()

@@ -1,0 +1,18 @@
+# find_package(essaim): the essaim executable (ESSAIM_EXECUTABLE, the imported target essaim::essaim)
+# and essaim_add_test() (EssaimTesting.cmake). Found in a build folder (beside build/essaim) or in an
+# install (PREFIX/lib/cmake/essaim, the binary in PREFIX/bin).
+if(EXISTS "${CMAKE_CURRENT_LIST_DIR}/essaim")
+  set(ESSAIM_EXECUTABLE "${CMAKE_CURRENT_LIST_DIR}/essaim")
+else()
+  get_filename_component(ESSAIM_EXECUTABLE "${CMAKE_CURRENT_LIST_DIR}/../../../bin/essaim" ABSOLUTE)
+endif()
+if(NOT EXISTS "${ESSAIM_EXECUTABLE}")
+  set(essaim_FOUND FALSE)
+  set(essaim_NOT_FOUND_MESSAGE "no essaim binary at ${ESSAIM_EXECUTABLE}")
+  return()
+endif()
+if(NOT TARGET essaim::essaim)
+  add_executable(essaim::essaim IMPORTED)
+  set_target_properties(essaim::essaim PROPERTIES IMPORTED_LOCATION "${ESSAIM_EXECUTABLE}")
+endif()
+include("${CMAKE_CURRENT_LIST_DIR}/EssaimTesting.cmake")

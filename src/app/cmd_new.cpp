@@ -1,0 +1,70 @@
+// `essaim new NAME [--template T]`: a new experiment folder that runs and tests at once
+// (project_templates.cpp, project_files.cpp; docs/testing.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+
+#include "app/commands.h"
+#include "app/project_templates.h"
+
+namespace essaim {
+
+namespace {
+namespace fs = std::filesystem;
+
+struct NewArgs {
+  std::string name;
+  std::string templ = "empty";
+};
+
+/// The folder holding essaimConfig.cmake for this binary: beside it (a build folder) or
+/// PREFIX/lib/cmake/essaim (an install); "" when neither has one.
+std::string CMakeHint(const fs::path& binary) {
+  for (const fs::path& dir : {binary.parent_path(), binary.parent_path().parent_path() / "lib/cmake/essaim"})
+    if (fs::exists(dir / "essaimConfig.cmake")) return dir.lexically_normal().string();
+  return "";
+}
+
+int New(const NewArgs& args) {
+  if (!std::regex_match(args.name, std::regex("[A-Za-z][A-Za-z0-9_-]*"))) {
+    std::fprintf(stderr, "essaim new: '%s': a name is a letter, then letters, digits, _ or -\n", args.name.c_str());
+    return kExitBadInput;
+  }
+  fs::path folder = args.name;
+  std::error_code ec;
+  if (fs::exists(folder, ec)) {
+    std::fprintf(stderr, "essaim new: %s already exists; nothing written\n", args.name.c_str());
+    return kExitBadInput;
+  }
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  ProjectContext context{args.name, args.templ, self.string(), CMakeHint(self)};
+  for (const auto& [path, text] : ProjectFiles(context)) {
+    fs::create_directories((folder / path).parent_path(), ec);
+    std::ofstream out(folder / path, std::ios::binary);
+    out << text;
+    if (!out.flush()) {
+      std::fprintf(stderr, "essaim new: cannot write %s\n", (folder / path).c_str());
+      return kExitRunFailed;
+    }
+  }
+  std::printf("essaim new: %s/ made from the '%s' template. Next:\n  cd %s && essaim run %s.argos && ctest\n",
+              args.name.c_str(), args.templ.c_str(), args.name.c_str(), args.name.c_str());
+  return kExitOk;
+}
+}  // namespace
+
+CommandMain AddNewCommand(CLI::App& app) {
+  auto args = std::make_shared<NewArgs>();
+  CLI::App* sub = app.add_subcommand("new", "make a new experiment folder: .argos, controller, loop functions, test");
+  sub->add_option("NAME", args->name, "the experiment's name: its folder and files")->required();
+  sub->add_option("--template", args->templ, "what the robots do")
+      ->check(CLI::IsMember(ProjectTemplateNames()))
+      ->capture_default_str();
+  sub->footer("Example:\n  essaim new demo --template aggregation");
+  return [args] { return New(*args); };
+}
+
+}  // namespace essaim

@@ -1,0 +1,87 @@
+"""`essaim new NAME` (docs/testing.md): the folder runs, its `ctest` passes at once and fails
+with the expectation and the seeds named once the controller is broken; luacheck is clean on it."""
+import json
+import shutil
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from clitest import check_junit_shape, essaim, need_essaim
+
+pytestmark = need_essaim
+CTEST = shutil.which("ctest")
+LUACHECK = shutil.which("luacheck")
+
+
+def ctest(folder):
+    return subprocess.run([CTEST, "--output-on-failure"], cwd=folder, capture_output=True, text=True, timeout=300)
+
+
+@pytest.mark.skipif(not CTEST, reason="ctest is not installed")
+@pytest.mark.parametrize("template", ["empty", "aggregation", "foraging"])
+def test_a_new_project_runs_passes_and_fails_when_broken(tmp_path, template):
+    r = essaim("new", "demo", "--template", template, cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    folder = tmp_path / "demo"
+    assert {p.name for p in folder.iterdir()} >= {"demo.argos", "demo.lua", "demo_loop.lua", "demo.test.toml",
+                                                  "CMakeLists.txt", "CTestTestfile.cmake", ".luarc.json",
+                                                  ".luacheckrc", "README.md", "types"}
+    controller = (folder / "demo.lua").read_text()
+    for hook in ("function init()", "function step()", "function reset()", "function destroy()"):
+        assert hook in controller
+    assert essaim("run", "demo.argos", "-q", cwd=folder).returncode == 0
+    passed = ctest(folder)
+    assert passed.returncode == 0, passed.stdout
+    suite = ET.parse(folder / "demo.junit.xml").getroot().find("testsuite")
+    assert suite.get("failures") == "0" and int(suite.get("tests")) >= 3
+
+    (folder / "demo.lua").write_text(controller.replace("robot.wheels.set_velocity", "robot.wheel.set_velocity"))
+    failed = ctest(folder)
+    assert failed.returncode != 0
+    assert "each errors == 0" in failed.stdout and "FAIL     1, 2, 3, 4, 5, 6, 7, 8, 9, 10" in failed.stdout
+    assert "attempt to index a nil value (field 'wheel')" in failed.stdout
+    root = ET.parse(folder / "demo.junit.xml").getroot()
+    check_junit_shape(root)
+    assert int(root.find("testsuite").get("failures")) >= 1
+
+
+@pytest.mark.skipif(not LUACHECK, reason="luacheck is not installed (Debian lua-check; scripts/setup.sh)")
+def test_luacheck_is_clean_on_a_new_project_and_catches_a_typo(tmp_path):
+    for template in ("empty", "aggregation", "foraging"):
+        assert essaim("new", template, "--template", template, cwd=tmp_path).returncode == 0
+        r = subprocess.run([LUACHECK, "--no-color", "."], cwd=tmp_path / template, capture_output=True, text=True)
+        assert r.returncode == 0, r.stdout
+    lua = tmp_path / "empty" / "empty.lua"
+    lua.write_text(lua.read_text().replace("robot.proximity[i]", "robot.proximty[i]"))
+    r = subprocess.run([LUACHECK, "--no-color", "."], cwd=tmp_path / "empty", capture_output=True, text=True)
+    assert r.returncode == 1 and "accessing undefined field 'proximty" in r.stdout
+
+
+@pytest.mark.skipif(not CTEST, reason="ctest is not installed")
+def test_the_cmake_module_declares_the_spec_as_a_ctest(tmp_path):
+    """find_package(essaim) from the build folder: essaim_add_test with the spec's timeout and labels."""
+    assert essaim("new", "demo", cwd=tmp_path).returncode == 0
+    folder = tmp_path / "demo"
+    spec = folder / "demo.test.toml"
+    spec.write_text(spec.read_text().replace("timeout = 300", "timeout = 77").replace('["behaviour"]', '["a", "b"]'))
+    r = subprocess.run(["cmake", "-S", ".", "-B", "build"], cwd=folder, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout + r.stderr
+    listed = json.loads(subprocess.run([CTEST, "--test-dir", "build", "--show-only=json-v1"], cwd=folder,
+                                       capture_output=True, text=True, timeout=60).stdout)
+    [test] = listed["tests"]
+    props = {p["name"]: p["value"] for p in test["properties"]}
+    assert test["name"] == "demo_behaviour" and props["TIMEOUT"] == 77 and sorted(props["LABELS"]) == ["a", "b", "essaim"]
+    r = subprocess.run([CTEST, "--test-dir", "build"], cwd=folder, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stdout
+    assert (folder / "build" / "essaim-test" / "demo_behaviour.junit.xml").exists()
+
+
+def test_bad_names_and_existing_folders_are_refused(tmp_path):
+    (tmp_path / "taken").mkdir()
+    r = essaim("new", "taken", cwd=tmp_path)
+    assert r.returncode == 2 and "taken already exists; nothing written" in r.stderr
+    r = essaim("new", "../up", cwd=tmp_path)
+    assert r.returncode == 2 and "a name is a letter" in r.stderr
+    r = essaim("new", "x", "--template", "swarming", cwd=tmp_path)
+    assert r.returncode == 2 and not (tmp_path / "x").exists()
