@@ -90,8 +90,10 @@ const char* kAlwaysThere =
 
 const char* kGlobals =
     "---@type essaim.Robot\nrobot = {}\n\n"
-    "---One line on stdout, arguments separated by tabs.\n---@param ... any\nfunction log(...) end\n\n"
-    "---One line on stderr, arguments separated by tabs.\n---@param ... any\nfunction logerr(...) end\n\n"
+    "---One line on stdout, the arguments joined with no separator as ARGoS writes them.\n---@param ... any\n"
+    "function log(...) end\n\n"
+    "---One line on stderr, the arguments joined with no separator as ARGoS writes them.\n---@param ... any\n"
+    "function logerr(...) end\n\n"
     "---@param x? number\n---@param y? number\n---@return essaim.vector2\nfunction vector2(x, y) end\n\n"
     "---@param x? number\n---@param y? number\n---@param z? number\n---@return essaim.vector3\n"
     "function vector3(x, y, z) end\n\n"
