@@ -53,3 +53,12 @@ def test_devices_lists_what_every_controller_has():
     for name in ("robot.id", "robot.params", "robot.random", "log(...)"):
         assert name in out, name
     assert out.index("robot.id") < out.index("ACTUATORS")
+
+
+def test_a_newline_inside_a_log_line_starts_a_line_of_the_same_stream(tmp_path):
+    ctrl = 'function init() log("a\\nbc", 1) logerr("e\\nf") print("p\\nq") end\nfunction step() end\n'
+    write(tmp_path, {"x.argos": argos(robots=1), "c.lua": ctrl})
+    r = essaim("run", "x.argos", "--ticks", "1", "-q", "--log-prefix", "--out", "o", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines() == ["[t=0 fb0] a", "[t=0 fb0] bc1", "[t=0 fb0] p", "[t=0 fb0] q"], r.stdout
+    assert r.stderr.splitlines() == ["[t=0 fb0] e", "[t=0 fb0] f"], r.stderr

@@ -41,4 +41,11 @@ void AppendPrintText(lua_State* L, std::string* out) {
   }
 }
 
+void EndLogEntry(std::string* log, size_t begin) {
+  const char stream = (*log)[begin];
+  for (size_t i = log->find('\n', begin); i != std::string::npos; i = log->find('\n', i + 2))
+    log->insert(i + 1, 1, stream);
+  *log += '\n';
+}
+
 }  // namespace essaim

@@ -15,4 +15,8 @@ void AppendArgosLogText(lua_State* L, std::string* out);
 /// Lua's print(): tostring() of each argument (metamethods included), separated by tabs.
 void AppendPrintText(lua_State* L, std::string* out);
 
+/// Ends the entry that starts at `begin` of a log buffer ("<stream><text>\n" per line): a
+/// newline inside the text starts a line of the same stream, so no character of it is lost.
+void EndLogEntry(std::string* log, size_t begin);
+
 }  // namespace essaim

@@ -38,13 +38,14 @@ int Traceback(lua_State* L) {
 int LoopLog(lua_State* L) {
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
   const char kind = static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
+  const size_t begin = log->size();
   *log += kind == 'P' ? 'O' : kind;
   if (kind == 'P') {
     AppendPrintText(L, log);
   } else {
     AppendArgosLogText(L, log);
   }
-  *log += '\n';
+  EndLogEntry(log, begin);
   return 0;
 }
 

@@ -31,9 +31,10 @@ int Traceback(lua_State* L) {
 
 int LogTo(lua_State* L, char stream) {
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const size_t begin = log->size();
   *log += stream;
   AppendArgosLogText(L, log);
-  *log += '\n';
+  EndLogEntry(log, begin);
   return 0;
 }
 int Log(lua_State* L) { return LogTo(L, 'O'); }
@@ -64,9 +65,10 @@ void RouteIoWrite(lua_State* L, void* controller) {
 int Print(lua_State* L) {
   // Lua's print, routed through the buffer so output keeps robot order under threads.
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const size_t begin = log->size();
   *log += 'O';
   AppendPrintText(L, log);
-  *log += '\n';
+  EndLogEntry(log, begin);
   return 0;
 }
 
