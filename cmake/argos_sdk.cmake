@@ -29,7 +29,7 @@ foreach(alias ${ARGOS_ALIASES})
   add_library(${alias} SHARED argos/api/library_alias.cpp)
   target_link_libraries(${alias} PRIVATE argos3core_simulator)
   target_link_options(${alias} PRIVATE "LINKER:--no-as-needed")
-  set_target_properties(${alias} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${ARGOS_SDK_DIR}/lib)
+  set_target_properties(${alias} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${ARGOS_SDK_DIR}/lib INSTALL_RPATH "$ORIGIN")
 endforeach()
 
 # The host side: loading libraries, driving the session over the EntityStore.
@@ -51,20 +51,24 @@ foreach(dir ${lua_includes})
   string(APPEND ARGOS_PC_LUA_CFLAGS " -I${dir}")
   string(APPEND ARGOS_CONFIG_LUA_INCLUDE " \"${dir}\"")
 endforeach()
-function(essaim_argos_package prefix libdir includedir out)
-  set(ARGOS_PC_PREFIX ${prefix})
-  set(ARGOS_PC_LIBDIR ${libdir})
-  set(ARGOS_PC_INCLUDEDIR ${includedir})
+# The build tree's names absolute paths; the install's are relative to where the files
+# are (pkg-config's ${pcfiledir}, CMake's CMAKE_CURRENT_LIST_DIR), so it can be moved.
+function(essaim_argos_package out pc_prefix pc_libdir pc_includedir config_prefix config_includedir)
+  set(ARGOS_PC_PREFIX ${pc_prefix})
+  set(ARGOS_PC_LIBDIR ${pc_libdir})
+  set(ARGOS_PC_INCLUDEDIR ${pc_includedir})
+  set(ARGOS_CONFIG_PREFIX ${config_prefix})
+  set(ARGOS_CONFIG_INCLUDEDIR ${config_includedir})
   configure_file(${PROJECT_SOURCE_DIR}/cmake/argos3_simulator.pc.in ${out}/lib/pkgconfig/argos3_simulator.pc @ONLY)
   configure_file(${PROJECT_SOURCE_DIR}/cmake/ARGoSConfig.cmake.in ${out}/lib/cmake/ARGoS/ARGoSConfig.cmake @ONLY)
   configure_file(${PROJECT_SOURCE_DIR}/cmake/ARGoSCheckQTOpenGL.cmake ${out}/share/argos3/cmake/ARGoSCheckQTOpenGL.cmake
                  COPYONLY)
 endfunction()
-essaim_argos_package(${ARGOS_SDK_DIR} ${ARGOS_SDK_DIR}/lib ${ARGOS_INCLUDE_SOURCE} ${ARGOS_SDK_DIR})
-set(install_prefix ${CMAKE_INSTALL_PREFIX})
-essaim_argos_package(${install_prefix} ${install_prefix}/lib ${install_prefix}/include ${CMAKE_BINARY_DIR}/argos3-install)
+essaim_argos_package(${ARGOS_SDK_DIR} ${ARGOS_SDK_DIR} ${ARGOS_SDK_DIR}/lib ${ARGOS_INCLUDE_SOURCE}
+                     ${ARGOS_SDK_DIR} ${ARGOS_INCLUDE_SOURCE})
+essaim_argos_package(${CMAKE_BINARY_DIR}/argos3-install "\${pcfiledir}/../.." "\${prefix}/lib" "\${prefix}/include"
+                     "\${CMAKE_CURRENT_LIST_DIR}/../../.." "\${CMAKE_CURRENT_LIST_DIR}/../../../include")
 
-include(GNUInstallDirs)
 install(TARGETS argos3core_simulator ${ARGOS_ALIASES} LIBRARY DESTINATION lib)
 install(DIRECTORY ${ARGOS_INCLUDE_SOURCE}/argos3 DESTINATION include)
 install(DIRECTORY ${CMAKE_BINARY_DIR}/argos3-install/ DESTINATION .)

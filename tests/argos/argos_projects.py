@@ -18,13 +18,14 @@ def sdk() -> Path:
     return Path(ESSAIM).resolve().parent / "argos3-sdk"
 
 
-def build_project(source: Path, folder: Path) -> Path:
+def build_project(source: Path, folder: Path, prefix: Path = None) -> Path:
     """Copies the project `source` into `folder`, configures and builds it there (its own
-    CMakeLists.txt, untouched) with PKG_CONFIG_PATH and CMAKE_PREFIX_PATH naming the SDK;
-    returns the copy's folder (the libraries are in its build/)."""
+    CMakeLists.txt, untouched) with PKG_CONFIG_PATH and CMAKE_PREFIX_PATH naming `prefix`
+    (default: the build tree's SDK); returns the copy's folder (libraries in its build/)."""
     copy = folder / source.name
     shutil.copytree(source, copy)
-    env = dict(os.environ, PKG_CONFIG_PATH=str(sdk() / "lib" / "pkgconfig"), CMAKE_PREFIX_PATH=str(sdk()))
+    prefix = prefix or sdk()
+    env = dict(os.environ, PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"), CMAKE_PREFIX_PATH=str(prefix))
     env.pop("CXXFLAGS", None)
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
     for command in (["cmake", "-S", ".", "-B", "build", *generator], ["cmake", "--build", "build"]):

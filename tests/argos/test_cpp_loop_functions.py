@@ -3,10 +3,12 @@ functions"): a course-style project through pkg-config, every hook and call of t
 through find_package(ARGoS), the clustering loop functions in C++ against their Lua twin,
 and the error paths."""
 import json
+import subprocess
+from pathlib import Path
 
 import pytest
 
-from argos_projects import HERE, ROOT, build_project, need_essaim, run
+from argos_projects import ESSAIM, HERE, ROOT, build_project, need_essaim, run
 
 pytestmark = need_essaim
 
@@ -141,3 +143,17 @@ def test_clustering_in_cpp_gives_the_lua_twins_metrics(tmp_path):
     assert done.returncode == 0, done.stderr
     assert json.loads((cpp / "cpp_metrics.json").read_text()) == json.loads((lua / "metrics.json").read_text())
     assert (cpp / "cpp_timeseries.csv").read_text() == (lua / "timeseries.csv").read_text()
+
+
+def test_installed_essaim_builds_and_runs_the_course_project(tmp_path):
+    """cmake --install: bin/essaim, lib/ (the API and its aliases, the .pc, the CMake
+    package), include/argos3, share/argos3/cmake; the course project builds against it."""
+    prefix = tmp_path / "prefix"
+    build = Path(ESSAIM).resolve().parent
+    done = subprocess.run(["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    course = build_project(HERE / "course_project", tmp_path, prefix=prefix)
+    done = subprocess.run([str(prefix / "bin" / "essaim"), "run", "course.argos", "--out", str(tmp_path / "out")],
+                          cwd=course, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "# finished at 30 objects 3" in (course / "score.txt").read_text()

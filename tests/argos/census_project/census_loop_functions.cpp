@@ -139,8 +139,8 @@ class CCensusLoopFunctions : public CLoopFunctions {
 
   void AddAndRemove() {
     CLEDMedium& cLEDs = CSimulator::GetInstance().GetMedium<CLEDMedium>("leds");
-    CCylinderEntity* pcCylinder = new CCylinderEntity("added_cylinder", CVector3(-1, 1, 0), CQuaternion(), true,
-                                                      0.05, 0.1, 0.2);
+    CCylinderEntity* pcCylinder =
+        new CCylinderEntity("added_cylinder", CVector3(-1, 1, 0), CQuaternion(), true, 0.05, 0.1, 0.2);
     pcCylinder->GetLEDEquippedEntity().AddLED(CVector3(0, 0, 0.1), CColor::GREEN);
     pcCylinder->GetLEDEquippedEntity().AddToMedium(cLEDs);
     AddEntity(*pcCylinder);

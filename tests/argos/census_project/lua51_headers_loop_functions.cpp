@@ -1,5 +1,6 @@
 #include <argos3/core/simulator/loop_functions.h>
 #include <argos3/plugins/robots/foot-bot/simulator/footbot_entity.h>
+
 #include <cstddef>
 
 using namespace argos;

@@ -37,8 +37,8 @@ class CClusteringLoopFunctions : public CLoopFunctions {
     m_pcRNG = CRandom::CreateRNG("argos");
     CLEDMedium& cLEDs = GetSimulator().GetMedium<CLEDMedium>("leds");
     for (UInt32 i = 1; i <= m_unCount; ++i) {
-      CCylinderEntity* pcCylinder = new CCylinderEntity("load" + ToString(i), FreeSpot(), CQuaternion(), true,
-                                                        m_fRadius, m_fHeight, m_fMass);
+      CCylinderEntity* pcCylinder =
+          new CCylinderEntity("load" + ToString(i), FreeSpot(), CQuaternion(), true, m_fRadius, m_fHeight, m_fMass);
       pcCylinder->GetLEDEquippedEntity().AddLED(CVector3(0, 0, m_fHeight), CColor::RED);
       pcCylinder->GetLEDEquippedEntity().AddToMedium(cLEDs);
       AddEntity(*pcCylinder);
