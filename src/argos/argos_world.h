@@ -59,9 +59,12 @@ class ArgosWorld {
   virtual std::vector<std::string> LedMedia() const = 0;
   /// Live entities of `kind` (all when -1), in creation order.
   virtual std::vector<ArgosRef> Entities(int kind) const = 0;
+  /// Changes whenever an entity is added or removed (not when one moves).
+  virtual uint64_t LayoutVersion() const = 0;
   virtual bool Live(const ArgosRef& e) const = 0;
   virtual std::string Id(const ArgosRef& e) const = 0;
-  virtual ArgosPose Pose(const ArgosRef& e) const = 0;
+  /// The entity's pose; false when it is no longer live.
+  virtual bool Pose(const ArgosRef& e, ArgosPose* pose) const = 0;
   virtual bool Movable(const ArgosRef& e) const = 0;
   /// Moves a body there when it overlaps no other (or `check_only`: says whether it would).
   virtual bool Move(const ArgosRef& e, const ArgosPose& pose, bool check_only, bool ignore_collisions) = 0;

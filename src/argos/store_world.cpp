@@ -28,10 +28,18 @@ std::vector<ArgosRef> StoreWorld::Entities(int kind) const {
   return out;
 }
 
-ArgosPose StoreWorld::Pose(const ArgosRef& e) const {
+// Added() only grows and All() only shrinks when nothing is added: the pair changes on every
+// addition or removal.
+uint64_t StoreWorld::LayoutVersion() const {
+  return (static_cast<uint64_t>(entities_.Added().size()) << 32) | entities_.All().size();
+}
+
+bool StoreWorld::Pose(const ArgosRef& e, ArgosPose* pose) const {
   const int index = entities_.IndexOf(Ref(e));
+  if (index < 0) return false;
   const Vec3 p = entities_.Position(Ref(e), index);
-  return {p.x(), p.y(), p.z(), entities_.Yaw(Ref(e), index)};
+  *pose = {p.x(), p.y(), p.z(), entities_.Yaw(Ref(e), index)};
+  return true;
 }
 
 bool StoreWorld::Overlaps(const ArgosRef& e, const Pose2& pose) const {

@@ -30,9 +30,10 @@ class StoreWorld : public ArgosWorld {
   void Arena(double size[3], double center[3]) const override;
   std::vector<std::string> LedMedia() const override;
   std::vector<ArgosRef> Entities(int kind) const override;
+  uint64_t LayoutVersion() const override;
   bool Live(const ArgosRef& e) const override { return entities_.IndexOf(Ref(e)) >= 0; }
   std::string Id(const ArgosRef& e) const override { return entities_.IdOf(Ref(e)); }
-  ArgosPose Pose(const ArgosRef& e) const override;
+  bool Pose(const ArgosRef& e, ArgosPose* pose) const override;
   bool Movable(const ArgosRef& e) const override { return entities_.Movable(Ref(e), entities_.IndexOf(Ref(e))); }
   bool Move(const ArgosRef& e, const ArgosPose& pose, bool check_only, bool ignore_collisions) override;
   ArgosBody Body(const ArgosRef& e) const override;

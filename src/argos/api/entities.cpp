@@ -49,7 +49,9 @@ CEmbodiedEntity::CEmbodiedEntity(CEntity* pc_parent, const std::string& str_id, 
 const SAnchor& CEmbodiedEntity::GetOriginAnchor() const {
   essaim::ArgosRef ref;
   if (SEntityBinding::Find(*this, &ref)) {
-    const essaim::ArgosPose pose = World("GetOriginAnchor").Pose(SEntityBinding::Require(*this, "GetOriginAnchor"));
+    essaim::ArgosPose pose;
+    if (!World("GetOriginAnchor").Pose(ref, &pose))
+      THROW_ARGOSEXCEPTION("GetOriginAnchor: \"" << GetRootEntity().GetId() << "\" is not in the space");
     m_sOriginAnchor.Position.Set(pose.x, pose.y, pose.z);
     m_sOriginAnchor.Orientation = FromYaw(pose.yaw);
   }

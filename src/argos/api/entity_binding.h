@@ -14,6 +14,9 @@ struct CSpace::SWorldEntities {
   /// Wrappers by (kind, serial): the world's own entities, and those AddEntity adopted.
   std::map<std::pair<int, UInt32>, std::unique_ptr<CEntity>> wrappers;
   bool kind_seen[4] = {false, false, false, false};
+  /// GetEntitiesByType's maps, kept until an entity is added or removed (LayoutVersion).
+  CSpace::TMapPerType by_type[4];
+  uint64_t by_type_version[4] = {~0ull, ~0ull, ~0ull, ~0ull};
 };
 
 struct SEntityBinding {

@@ -5,6 +5,8 @@
 #include <argos3/plugins/simulator/entities/cylinder_entity.h>
 #include <argos3/plugins/simulator/entities/light_entity.h>
 
+#include <cmath>
+
 #include "argos/api/entity_binding.h"
 #include "argos/api/session_state.h"
 
@@ -16,7 +18,7 @@ Real YawOf(const CQuaternion& c_orientation) {
   return z.GetValue();
 }
 
-CQuaternion FromYaw(Real f_yaw) { return CQuaternion().FromEulerAngles(CRadians(f_yaw), CRadians(), CRadians()); }
+CQuaternion FromYaw(Real f_yaw) { return CQuaternion(std::cos(f_yaw / 2), 0, 0, std::sin(f_yaw / 2)); }
 
 namespace {
 essaim::ArgosRgb Rgb(const CColor& c) { return {c.GetRed(), c.GetGreen(), c.GetBlue()}; }
@@ -81,7 +83,8 @@ CVector3 Position(const essaim::ArgosPose& p) { return CVector3(p.x, p.y, p.z); 
 
 std::unique_ptr<CEntity> MakeBodyWrapper(essaim::ArgosWorld& world, const essaim::ArgosRef& ref) {
   const essaim::ArgosBody b = world.Body(ref);
-  const essaim::ArgosPose pose = world.Pose(ref);
+  essaim::ArgosPose pose;
+  world.Pose(ref, &pose);
   CLEDEquippedEntity* leds;
   std::unique_ptr<CEntity> made;
   if (ref.kind == essaim::kArgosBox) {
@@ -101,7 +104,8 @@ std::unique_ptr<CEntity> MakeBodyWrapper(essaim::ArgosWorld& world, const essaim
 
 std::unique_ptr<CEntity> MakeWrapper(essaim::ArgosWorld& world, const essaim::ArgosRef& ref) {
   std::unique_ptr<CEntity> made;
-  const essaim::ArgosPose pose = world.Pose(ref);
+  essaim::ArgosPose pose;
+  world.Pose(ref, &pose);
   if (ref.kind == essaim::kArgosFootBot) {
     auto* robot = new CFootBotEntity(world.Id(ref), world.ControllerId(ref.serial), Position(pose), FromYaw(pose.yaw));
     made.reset(robot);

@@ -38,16 +38,20 @@ CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
   int kind = 0;
   while (kind < 4 && str_type != kTypeNames[kind]) ++kind;
   if (kind == 4) THROW_ARGOSEXCEPTION("Entity map for type \"" << str_type << "\" not found.");
-  const std::vector<essaim::ArgosRef> refs = world.Entities(kind);
-  if (!refs.empty()) m_psEntities->kind_seen[kind] = true;
+  TMapPerType& cached = m_psEntities->by_type[kind];
+  const uint64_t version = world.LayoutVersion();
+  if (m_psEntities->by_type_version[kind] != version) {  // made again only after an addition or removal
+    cached.clear();
+    for (const essaim::ArgosRef& ref : world.Entities(kind)) {
+      CEntity& wrapper = SEntityBinding::Wrapper(*this, ref);
+      cached.emplace(wrapper.GetId(), Typed(wrapper, kind));
+    }
+    m_psEntities->by_type_version[kind] = version;
+    if (!cached.empty()) m_psEntities->kind_seen[kind] = true;
+  }
   // ARGoS keeps one map per type that ever had an entity, and throws for any other type.
   if (!m_psEntities->kind_seen[kind]) THROW_ARGOSEXCEPTION("Entity map for type \"" << str_type << "\" not found.");
-  m_mapByType.clear();
-  for (const essaim::ArgosRef& ref : refs) {
-    CEntity& wrapper = SEntityBinding::Wrapper(*this, ref);
-    m_mapByType.emplace(wrapper.GetId(), Typed(wrapper, kind));
-  }
-  return m_mapByType;
+  return cached;
 }
 
 CEntity& CSpace::GetEntity(const std::string& str_id) {

@@ -13,7 +13,7 @@
 #include <argos3/plugins/simulator/media/led_medium.h>
 
 #include <fstream>
-#include <map>
+#include <unordered_map>
 #include <vector>
 
 using namespace argos;
@@ -75,7 +75,7 @@ class CClusteringLoopFunctions : public CLoopFunctions {
 
   void PostExperiment() override {
     UInt32 unInZone = 0;
-    for (std::map<std::string, bool>::iterator it = m_mapArrived.begin(); it != m_mapArrived.end(); ++it)
+    for (std::unordered_map<std::string, bool>::iterator it = m_mapArrived.begin(); it != m_mapArrived.end(); ++it)
       unInZone += it->second;
     std::ofstream cMetrics((m_strDir + "/cpp_metrics.json").c_str());
     cMetrics << "{\"all_delivered_tick\": " << m_unAllDeliveredTick << ", \"cylinders\": " << m_unCount
@@ -154,8 +154,8 @@ class CClusteringLoopFunctions : public CLoopFunctions {
   UInt32 m_unEvery = 50;
   std::string m_strDir = ".";
   CRandom::CRNG* m_pcRNG = nullptr;
-  std::map<std::string, bool> m_mapArrived;
-  std::map<std::string, int> m_mapEver;
+  std::unordered_map<std::string, bool> m_mapArrived;
+  std::unordered_map<std::string, int> m_mapEver;
   std::vector<UInt32> m_vecDeliveryTicks;
   UInt32 m_unAllDeliveredTick = 0;
   std::vector<std::vector<UInt32> > m_vecRows;

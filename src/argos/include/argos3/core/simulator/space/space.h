@@ -34,7 +34,6 @@ class CSpace {
   struct SWorldEntities;
   std::unique_ptr<SWorldEntities> m_psEntities;
   CFloorEntity m_cFloor;
-  TMapPerType m_mapByType;  // GetEntitiesByType's answer, filled at each call
 };
 
 }  // namespace argos
