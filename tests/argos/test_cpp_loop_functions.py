@@ -3,7 +3,9 @@ functions"): a course-style project through pkg-config, every hook and call of t
 through find_package(ARGoS), the clustering loop functions in C++ against their Lua twin,
 and the error paths."""
 import json
+import os
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -157,3 +159,24 @@ def test_installed_essaim_builds_and_runs_the_course_project(tmp_path):
                           cwd=course, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     assert "# finished at 30 objects 3" in (course / "score.txt").read_text()
+
+
+def test_python_module_runs_cpp_loop_functions(course, tmp_path):
+    """The Python module loads the same API library: a run, its end and a reset."""
+    module = Path(ESSAIM).resolve().parent / "python"
+    if not any(module.glob("essaim*.so")):
+        pytest.skip("the Python module is not built")
+    if os.environ.get("ESSAIM_SANITIZED") == "1":
+        pytest.skip("under ASan the interpreter needs its runtime preloaded: python_module covers the module there")
+    script = (
+        "import essaim\n"
+        "s = essaim.Simulation('course.argos', seed=3)\n"
+        "s.run(); s.finish()\n"
+        "first = open('score.txt').read()\n"
+        "s.reset(); s.run(); s.finish()\n"
+        "assert open('score.txt').read() == first\n"
+        "print(first.splitlines()[-1])\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=course, capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ, PYTHONPATH=str(module)))
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("# finished at 30 objects 3")
