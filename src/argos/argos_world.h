@@ -81,7 +81,7 @@ class ArgosWorld {
   virtual bool Add(const ArgosLight& light, ArgosRef* added, std::string* error) = 0;
   virtual bool Remove(const ArgosRef& e) = 0;
   virtual std::string ControllerId(uint32_t robot) const = 0;
-  /// The robot's Lua state, null when its controller has none or failed.
+  /// The robot's Lua state (kept after its controller failed), null when it has none.
   virtual lua_State* LuaState(uint32_t robot) = 0;
   virtual bool ControllerOk(uint32_t robot) const = 0;
   virtual void Log(bool error, const std::string& line) = 0;

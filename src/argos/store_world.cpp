@@ -183,8 +183,9 @@ bool StoreWorld::Add(const ArgosLight& light, ArgosRef* added, std::string* erro
   return true;
 }
 
+// A controller stopped by an error keeps its state, as ARGoS's does: its globals stay readable.
 lua_State* StoreWorld::LuaState(uint32_t robot) {
-  if (robot >= controllers_.size() || !controllers_[robot] || !ControllerOk(robot)) return nullptr;
+  if (robot >= controllers_.size() || !controllers_[robot]) return nullptr;
   return controllers_[robot]->State();
 }
 

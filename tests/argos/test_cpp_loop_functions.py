@@ -180,3 +180,10 @@ def test_python_module_runs_cpp_loop_functions(course, tmp_path):
                           env=dict(os.environ, PYTHONPATH=str(module)))
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("# finished at 30 objects 3")
+
+
+def test_a_file_that_is_no_library_is_a_clear_error(census, tmp_path):
+    (census / "build" / "libtext.so").write_text("not a library\n")
+    done = census_variant(census, tmp_path, "build/libtext.so", "text")
+    assert done.returncode == 2
+    assert "build/libtext.so: not a 64-bit ELF shared library" in done.stderr

@@ -198,7 +198,11 @@ CCI_Controller& CControllableEntity::GetController() {
   return *m_pcController;
 }
 
-lua_State* CLuaController::GetLuaState() { return World("GetLuaState").LuaState(m_unRobot); }
+lua_State* CLuaController::GetLuaState() {
+  lua_State* state = World("GetLuaState").LuaState(m_unRobot);
+  if (!state) THROW_ARGOSEXCEPTION("GetLuaState: robot " << m_unRobot << "'s controller has no Lua state");
+  return state;
+}
 bool CLuaController::IsOK() { return World("IsOK").ControllerOk(m_unRobot); }
 
 void CFloorEntity::SetChanged() { World("SetChanged").FloorChanged(); }

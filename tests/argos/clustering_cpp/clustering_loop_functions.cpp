@@ -139,8 +139,13 @@ class CClusteringLoopFunctions : public CLoopFunctions {
     CSpace::TMapPerType& cRobots = GetSpace().GetEntitiesByType("foot-bot");
     for (CSpace::TMapPerType::iterator it = cRobots.begin(); it != cRobots.end(); ++it) {
       CFootBotEntity& cRobot = *any_cast<CFootBotEntity*>(it->second);
-      lua_State* L = dynamic_cast<CLuaController&>(cRobot.GetControllableEntity().GetController()).GetLuaState();
-      if (!L) continue;
+      CLuaController& cController = dynamic_cast<CLuaController&>(cRobot.GetControllableEntity().GetController());
+      lua_State* L = nullptr;
+      try {
+        L = cController.GetLuaState();
+      } catch (CARGoSException&) {
+        continue;  // closed after its memory limit: no state (the Lua twin's nil)
+      }
       lua_getglobal(L, "deliveries");
       if (lua_isnumber(L, -1)) fSum += lua_tonumber(L, -1);
       lua_pop(L, 1);

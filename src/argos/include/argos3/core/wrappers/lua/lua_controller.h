@@ -20,7 +20,7 @@ namespace argos {
 class CLuaController : public CCI_Controller {
  public:
   CLuaController(const std::string& str_id, UInt32 un_robot) : CCI_Controller(str_id), m_unRobot(un_robot) {}
-  /// The robot's Lua state (its globals, the `robot` table); null once its controller failed.
+  /// The robot's Lua state (its globals, the `robot` table), kept after a Lua error.
   lua_State* GetLuaState();
   /// Whether the controller runs (ARGoS: false after a Lua error).
   bool IsOK();
