@@ -187,3 +187,11 @@ def test_a_file_that_is_no_library_is_a_clear_error(census, tmp_path):
     done = census_variant(census, tmp_path, "build/libtext.so", "text")
     assert done.returncode == 2
     assert "build/libtext.so: not a 64-bit ELF shared library" in done.stderr
+
+
+def test_a_library_linked_to_another_lua_but_not_calling_it_runs(census, tmp_path):
+    done = census_variant(census, tmp_path, "build/liblua51_no_calls_loop_functions", "lua51_no_calls_loop_functions")
+    assert done.returncode == 0, done.stderr
+    needed = subprocess.run(["readelf", "-d", str(census / "build" / "liblua51_no_calls_loop_functions.so")],
+                            capture_output=True, text=True).stdout
+    assert "liblua5.1.so.0" in needed
