@@ -77,12 +77,15 @@ class CClusteringLoopFunctions : public CLoopFunctions {
     UInt32 unInZone = 0;
     for (std::unordered_map<std::string, bool>::iterator it = m_mapArrived.begin(); it != m_mapArrived.end(); ++it)
       unInZone += it->second;
+    // As the Lua twin's table: keys in sorted order, the two ticks absent until they happen.
     std::ofstream cMetrics((m_strDir + "/cpp_metrics.json").c_str());
-    cMetrics << "{\"all_delivered_tick\": " << m_unAllDeliveredTick << ", \"cylinders\": " << m_unCount
-             << ", \"delivery_ticks\": [";
+    cMetrics << "{";
+    if (m_unAllDeliveredTick != 0) cMetrics << "\"all_delivered_tick\": " << m_unAllDeliveredTick << ", ";
+    cMetrics << "\"cylinders\": " << m_unCount << ", \"delivery_ticks\": [";
     for (size_t i = 0; i < m_vecDeliveryTicks.size(); ++i) cMetrics << (i ? ", " : "") << m_vecDeliveryTicks[i];
-    cMetrics << "], \"first_delivery_tick\": " << (m_vecDeliveryTicks.empty() ? 0 : m_vecDeliveryTicks[0])
-             << ", \"in_zone\": " << unInZone << ", \"robot_deliveries\": " << RobotDeliveries() << "}\n";
+    cMetrics << "], ";
+    if (!m_vecDeliveryTicks.empty()) cMetrics << "\"first_delivery_tick\": " << m_vecDeliveryTicks[0] << ", ";
+    cMetrics << "\"in_zone\": " << unInZone << ", \"robot_deliveries\": " << RobotDeliveries() << "}\n";
     std::ofstream cSeries((m_strDir + "/cpp_timeseries.csv").c_str());
     cSeries << "tick,in_zone,robot_deliveries\n";
     for (size_t i = 0; i < m_vecRows.size(); ++i)
