@@ -645,6 +645,7 @@ XmlNode ToXmlNode(const XMLElement* e) {
 // ARGoS resolves it) and label="..."; a label alone is looked for in ARGOS_PLUGIN_PATH's
 // libraries when the run starts.
 void Loader::LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf) {
+  ReadAllBelow(e);  // Init(TConfigurationNode&) may read any of them, at any depth
   lf->label = Str(e, "label");
   if (lf->label.empty()) Error(e, "C++ loop functions need label=\"...\" (the REGISTER_LOOP_FUNCTIONS label)");
   const std::string library = Str(e, "library");
@@ -666,7 +667,7 @@ void Loader::ReadAllBelow(const XMLElement* e) {
 void Loader::LoadLoopFunctions(const XMLElement* e) {
   LoopFunctionsDef& lf = model_->loop_functions;
   lf.loc = Loc(e);
-  ReadAllBelow(e);  // free-form: every attribute is a parameter for the loop functions
+  ledger_.ReadAll(e);  // free-form: every attribute is a parameter for the loop functions
   lf.xml = ToXmlNode(e);
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
   // ARGoS hands the whole element to Init(TConfigurationNode&); scripts read its children
@@ -674,6 +675,7 @@ void Loader::LoadLoopFunctions(const XMLElement* e) {
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
     if (lf.children.count(c->Name())) continue;
     AttrMap& attrs = lf.children[c->Name()];
+    ledger_.ReadAll(c);  // free-form too: the script reads experiment.params.<child>
     for (auto* a = c->FirstAttribute(); a; a = a->Next()) attrs[a->Name()] = a->Value();
   }
   std::string script = Str(e, "script");

@@ -34,6 +34,7 @@ def score_rows(folder):
 def test_course_project_runs_unmodified(course, tmp_path):
     done = run(course / "course.argos", "--out", str(tmp_path / "out"), cwd=course)
     assert done.returncode == 0, done.stderr
+    assert "warning" not in done.stderr  # every attribute of the file is read
     assert "course: 3 objects placed" in done.stdout and "course: done" in done.stdout
     rows, last = score_rows(course)
     assert [t for t, robot, _, _ in rows if robot == "fb0"] == list(range(1, 31))  # the end: tick 30
@@ -85,6 +86,7 @@ CENSUS_EXPECTED = {
 def test_every_hook_and_call_of_the_census(census, tmp_path):
     done = run(census / "census.argos", "--out", str(tmp_path / "out"), cwd=census)
     assert done.returncode == 0, done.stderr
+    assert "warning" not in done.stderr
     lines = [line.split(" ", 1) for line in (census / "census.txt").read_text().splitlines()]
     seen = dict(lines)
     for key, value in CENSUS_EXPECTED.items():
@@ -147,6 +149,7 @@ def test_clustering_in_cpp_gives_the_lua_twins_metrics(clustering, tmp_path, see
                "--set", f"loop_functions.library={clustering / 'build' / 'libclustering_loop_functions.so'}",
                "--set", f"loop_functions.output.dir={cpp}", cwd=tmp_path)
     assert done.returncode == 0, done.stderr
+    assert "warning" not in done.stderr
     done = run(ROOT / "arenas" / "clustering.argos", "--seed", seed, "--out", str(lua), cwd=tmp_path)
     assert done.returncode == 0, done.stderr
     assert json.loads((cpp / "cpp_metrics.json").read_text()) == json.loads((lua / "metrics.json").read_text())
