@@ -4,6 +4,8 @@ below the including file's own (or the same one). Exit 1 naming each upward incl
 
 The order is the one README.md's Architecture section draws and src/CMakeLists.txt links.
 lua/host sits beside the simulation layers, not above them: it sees only core.
+argos (C++ loop functions, the ARGoS API) sits beside lua/loop, on the same floor: neither
+sees the other, and only sim above them sees both.
 """
 import re
 import sys
@@ -21,7 +23,8 @@ BELOW = {
 }
 BELOW["lua/robot"] = BELOW["devices"] | BELOW["lua/host"] | {"lua/robot"}
 BELOW["lua/loop"] = BELOW["lua/robot"] | {"lua/loop"}
-BELOW["sim"] = BELOW["lua/loop"] | {"sim"}
+BELOW["argos"] = BELOW["lua/robot"] | {"argos"}
+BELOW["sim"] = BELOW["lua/loop"] | BELOW["argos"] | {"sim"}
 BELOW["output"] = BELOW["sim"] | {"output"}
 BELOW["serve"] = BELOW["output"] | {"serve"}
 BELOW["render"] = BELOW["output"] | {"render"}

@@ -195,6 +195,14 @@ void EntityStore::SetLightColor(int index, const Color& color) {
   MarkChanged(false);
 }
 
+void EntityStore::SetMedium(const EntityRef& e, int index, const std::string& medium) {
+  if (e.kind == EntityKind::Light)
+    scene_->lights[index].medium = medium;
+  else if (IsObstacle(e))
+    scene_->obstacles[index].led_medium = medium;
+  MarkChanged(true);  // the media index who is in which medium
+}
+
 double EntityStore::BatteryLevel(int i) const {
   return (*robots_)[i].battery.charge / scene_->robots[i].battery.full_charge;
 }

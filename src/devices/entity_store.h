@@ -70,6 +70,8 @@ class EntityStore {
   void SetLed(const EntityRef& e, int index, int k, const Color& color);
   void SetLightIntensity(int index, double intensity);
   void SetLightColor(int index, const Color& color);
+  /// The <led> medium a box's or cylinder's LEDs, or a light, are seen through ("": none).
+  void SetMedium(const EntityRef& e, int index, const std::string& medium);
 
   // ---- robots, by index
   const RobotState& Robot(int i) const { return (*robots_)[i]; }

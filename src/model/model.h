@@ -141,9 +141,23 @@ struct LedMediumDef {
   std::string id;
 };
 
+/// An XML element as written: C++ loop functions get theirs whole in Init(TConfigurationNode&).
+struct XmlNode {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> attributes;  // in the file's order
+  std::string text;
+  std::vector<XmlNode> children;
+};
+
 struct LoopFunctionsDef {
   std::string script;  // resolved path; empty = none
-  AttrMap params;      // attributes of <loop_functions>
+  /// C++ loop functions (library and/or label, no script): the library's resolved path
+  /// ("": found by label in ARGOS_PLUGIN_PATH), the label, the whole element.
+  std::string library;
+  std::string label;
+  XmlNode xml;
+  bool Cpp() const { return !label.empty(); }
+  AttrMap params;  // attributes of <loop_functions>
   /// Its child elements (<params reset_all="true"/>...): name → attributes, first of a name.
   std::map<std::string, AttrMap> children;
   SourceLoc loc;

@@ -103,6 +103,8 @@ class Loader {
   void FinishPhysicsRegions();
   void LoadMedia(const XMLElement* e);
   void LoadLoopFunctions(const XMLElement* e);
+  void LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf);
+  void ReadAllBelow(const XMLElement* e);
   bool LoadFootBot(const XMLElement* e, RobotDef* r);
   bool LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body = true);
   bool LoadLight(const XMLElement* e, LightDef* l);
@@ -633,16 +635,46 @@ void Loader::LoadMedia(const XMLElement* e) {
   }
 }
 
-void Loader::LoadLoopFunctions(const XMLElement* e) {
-  if (Has(e, "library")) {
-    Error(e, "C++ loop functions (library=\"" + Str(e, "library") +
-                 "\") cannot be loaded: essaim's loop functions are Lua scripts, "
-                 "<loop_functions script=\"file.lua\"/> (docs/loop-functions.md)");
-    return;
+namespace {
+// The element as written, children and text included (C++ loop functions get it whole).
+XmlNode ToXmlNode(const XMLElement* e) {
+  XmlNode node;
+  node.name = e->Name();
+  for (auto* a = e->FirstAttribute(); a; a = a->Next()) node.attributes.emplace_back(a->Name(), a->Value());
+  if (e->GetText()) node.text = e->GetText();
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) node.children.push_back(ToXmlNode(c));
+  return node;
+}
+}  // namespace
+
+// C++ loop functions: library="path" (with or without .so, beside the .argos file as
+// ARGoS resolves it) and label="..."; a label alone is looked for in ARGOS_PLUGIN_PATH's
+// libraries when the run starts.
+void Loader::LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf) {
+  ReadAllBelow(e);  // Init(TConfigurationNode&) may read any of them, at any depth
+  lf->label = Str(e, "label");
+  if (lf->label.empty()) Error(e, "C++ loop functions need label=\"...\" (the REGISTER_LOOP_FUNCTIONS label)");
+  const std::string library = Str(e, "library");
+  if (library.empty()) return;
+  for (const std::string& candidate : {library, library + ".so"}) {
+    lf->library = ResolvePath(candidate);
+    if (FileExists(lf->library)) return;
   }
+  Error(e, "library '" + library + "' not found (nor '" + library + ".so'), beside " + (dir_.empty() ? "." : dir_) +
+               " or the working directory");
+}
+
+// Every attribute and descendant is the loop functions' own: none is reported as unknown.
+void Loader::ReadAllBelow(const XMLElement* e) {
+  ledger_.ReadAll(e);
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) ReadAllBelow(c);
+}
+
+void Loader::LoadLoopFunctions(const XMLElement* e) {
   LoopFunctionsDef& lf = model_->loop_functions;
   lf.loc = Loc(e);
-  ledger_.ReadAll(e);  // free-form: every attribute is a parameter for the script
+  ledger_.ReadAll(e);  // free-form: every attribute is a parameter for the loop functions
+  lf.xml = ToXmlNode(e);
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) lf.params[a->Name()] = a->Value();
   // ARGoS hands the whole element to Init(TConfigurationNode&); scripts read its children
   // as experiment.params.<child>.<attribute>.
@@ -653,8 +685,10 @@ void Loader::LoadLoopFunctions(const XMLElement* e) {
     for (auto* a = c->FirstAttribute(); a; a = a->Next()) attrs[a->Name()] = a->Value();
   }
   std::string script = Str(e, "script");
+  if (script.empty() && (Has(e, "library") || Has(e, "label"))) return LoadCppLoopFunctions(e, &lf);
+  if (Has(e, "library")) Error(e, "give script=\"...\" (Lua) or library=\"...\" (C++), not both");
   if (script.empty()) {
-    Error(e, "missing attribute 'script' (a Lua file, docs/loop-functions.md)");
+    Error(e, "missing attribute 'script' (a Lua file) or 'label' (C++ loop functions; docs/loop-functions.md)");
     return;
   }
   lf.script = ResolvePath(script);
@@ -1185,9 +1219,11 @@ void Loader::CheckReferences() {
       errors_->Add(c.loc.file, c.loc.line, c.loc.element,
                    "ground sensors need a <floor> in the <arena> (ARGoS: \"No floor entity has been added\")");
   }
-  if (model_->floor.source == FloorSource::LoopFunctions && model_->loop_functions.script.empty())
+  if (model_->floor.source == FloorSource::LoopFunctions && model_->loop_functions.script.empty() &&
+      !model_->loop_functions.Cpp())
     errors_->Add(model_->floor.loc.file, model_->floor.loc.line, "floor",
-                 "source=\"loop_functions\" needs <loop_functions script=\"...\"> with floor_color(x, y)");
+                 "source=\"loop_functions\" needs <loop_functions script=\"...\"> with floor_color(x, y) "
+                 "(or C++ loop functions with GetFloorColor)");
 }
 }  // namespace
 

@@ -1,10 +1,12 @@
 #include "sim/run_end.h"
 
+#include "sim/loop_hooks.h"
+
 namespace essaim {
 
 bool FinishRun(World& w, Value* metrics, bool* has_metrics, std::string* error) {
-  bool ok = w.loop_functions.PostExperiment(metrics, has_metrics, error);
-  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
+  bool ok = LoopPostExperiment(w, metrics, has_metrics, error);
+  FlushLoopLog(w);
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
     if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err)) {

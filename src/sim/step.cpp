@@ -4,6 +4,7 @@
 
 #include "devices/devices.h"
 #include "sim/error_groups.h"
+#include "sim/loop_hooks.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -40,7 +41,7 @@ void RefreshMediaIfSceneChanged(World& w) {
 
 bool LoopCall(World& w, const char* hook) {
   std::string err;
-  if (!w.loop_functions.Call(hook, &err)) {
+  if (!CallLoopHook(w, hook, &err) || !RedrawFloorIfChanged(w, &err)) {
     w.failure = err;
     return false;
   }
@@ -51,7 +52,7 @@ bool LoopCall(World& w, const char* hook) {
 
 void BeginTick(World& w) {
   ++w.tick;
-  w.loop_functions.SetTick(w.tick);
+  SetLoopTick(w);
 }
 
 // ~0.1 µs a robot against ~5-10 µs to wake the pool: per-robot passes this cheap pay off on
@@ -119,7 +120,7 @@ void MediaStage(World& w) {
 bool PreStepStage(World& w) {
   const bool ok = LoopCall(w, "pre_step");
   RefreshMediaIfSceneChanged(w);
-  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
+  FlushLoopLog(w);
   return ok;
 }
 
@@ -188,10 +189,10 @@ StepStatus PostStepStage(World& w) {
   bool finished = false;
   if (ok) {
     std::string err;
-    ok = w.loop_functions.IsExperimentFinished(&finished, &err);
+    ok = LoopExperimentFinished(w, &finished, &err);
     if (!ok) w.failure = err;
   }
-  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
+  FlushLoopLog(w);
   if (!ok) return StepStatus::Failed;
   if (finished) {
     w.finished_by_loop_functions = true;

@@ -6,6 +6,7 @@
 #include "core/stopwatch.h"
 #include "devices/devices.h"
 #include "sim/error_groups.h"
+#include "sim/loop_hooks.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -35,22 +36,17 @@ bool BuildFloor(World& w, std::string* error) {
     f.height = m.floor.height;
     f.pixels = m.floor.pixels;
   } else if (m.floor.source == FloorSource::LoopFunctions) {
-    if (!w.loop_functions.HasFunction("floor_color")) {
+    if (!w.cpp_loop_functions.Loaded() && !w.loop_functions.HasFunction("floor_color")) {
       *error =
           m.loop_functions.script + ": the floor comes from the loop functions but they define no floor_color(x, y)";
       return false;
     }
-    // Sampled once at pixel centres: ground sensors then read a raster, thread-safe and
-    // fast. A floor that changes during the run is not supported (docs/compatibility.md).
+    // Sampled at pixel centres: ground sensors then read a raster, thread-safe and fast.
+    // Lua floors are drawn once; C++ ones again after the floor entity's SetChanged().
     f.width = std::max(1, static_cast<int>(m.arena.size.x() * m.floor.pixels_per_meter));
     f.height = std::max(1, static_cast<int>(m.arena.size.y() * m.floor.pixels_per_meter));
     f.pixels.resize(static_cast<size_t>(f.width) * f.height);
-    for (int py = 0; py < f.height; ++py)
-      for (int px = 0; px < f.width; ++px) {
-        double x = f.min.x() + (px + 0.5) * f.size.x() / f.width;
-        double y = f.min.y() + (py + 0.5) * f.size.y() / f.height;
-        if (!w.loop_functions.FloorColor(x, y, &f.pixels[static_cast<size_t>(py) * f.width + px], error)) return false;
-      }
+    return DrawLoopFloor(w, error);
   }
   return true;
 }
@@ -121,8 +117,12 @@ bool MakeControllerStates(World& w, std::string* error) {
 // The loop functions' state (first, so the floor exists before anything senses it), then
 // the controllers'; false with `error` when a script fails.
 bool MakeLuaStates(World& w, std::string* error) {
-  w.loop_functions.SetLimits(w.options.lua);
-  if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
+  if (w.model.loop_functions.Cpp()) {
+    if (!w.cpp_loop_functions.Load(w.model, &w.entities, &w.controllers, error)) return false;
+  } else {
+    w.loop_functions.SetLimits(w.options.lua);
+    if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
+  }
   if (!BuildFloor(w, error)) return false;
   return MakeControllerStates(w, error);
 }
@@ -168,8 +168,9 @@ void RunInits(World& w) {
   // A runtime error in init() is the run failing, not bad input: the World is returned
   // with `failure` set, so the caller can still write a summary (exit 1, docs/cli.md).
   std::string err;
-  if (w.failure.empty() && !w.loop_functions.Call("init", &err)) w.failure = err;
-  FlushLog(w, w.loop_functions.LogBuffer(), kLogLoopFunctions);
+  if (w.failure.empty() && !CallLoopHook(w, "init", &err)) w.failure = err;
+  if (w.failure.empty() && !RedrawFloorIfChanged(w, &err)) w.failure = err;
+  FlushLoopLog(w);
 }
 }  // namespace
 
@@ -206,6 +207,7 @@ void ListModelInputs(const Model& model, InputFiles* inputs) {
   for (size_t i = 0; i < model.controllers.size(); ++i)
     if (used[i] && !model.controllers[i].script.empty()) inputs->Add(model.controllers[i].script, "controller");
   if (!model.loop_functions.script.empty()) inputs->Add(model.loop_functions.script, "loop_functions");
+  if (!model.loop_functions.library.empty()) inputs->Add(model.loop_functions.library, "loop_functions_library");
   if (model.floor.source == FloorSource::Image) inputs->Add(model.floor.path, "floor_image");
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "argos/cpp_loop_functions.h"
 #include "core/input_files.h"
 #include "devices/entity_store.h"
 #include "devices/floor.h"
@@ -110,6 +111,8 @@ class World {
   std::vector<RobotState> robots;
   std::vector<std::unique_ptr<LuaController>> controllers;
   LoopFunctions loop_functions;
+  /// C++ loop functions (<loop_functions library/label>), when the model names them.
+  CppLoopFunctions cpp_loop_functions;
   Media media;
   FloorRaster floor;
   StageTimes times;

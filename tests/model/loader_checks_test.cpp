@@ -185,6 +185,9 @@ TEST(UnknownAttributes, EveryShippedExperimentLoadsWithoutWarnings) {
       if (entry.path().extension() != ".argos") continue;
       // Fuzz seeds are inputs for the fuzzer (their scripts live in tests/fuzz/data), not experiments.
       if (entry.path().string().find("/tests/fuzz/") != std::string::npos) continue;
+      // C++ loop-function projects name libraries their test builds into a temporary folder
+      // (tests/argos runs them, and fails on any warning there).
+      if (entry.path().string().find("/tests/argos/") != std::string::npos) continue;
       ++files;
       ErrorList errors, warnings;
       LoadOptions opt;

@@ -83,12 +83,31 @@ TEST(Loader, MalformedXmlNamesTheLine) {
   EXPECT_NE(e.Format().find("x.argos:2: malformed XML"), std::string::npos) << e.Format();
 }
 
-TEST(Loader, CppLoopFunctionsAreAClearError) {
+TEST(Loader, CppLoopFunctionsLibraryIsFoundBesideTheFileWithOrWithoutSo) {
+  TempDir d;
+  d.Write("c.lua", "");
+  const std::string library = d.Write("libx.so", "");
+  ErrorList e;
+  auto m = LoadText(
+      d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libx\" label=\"x\"><p a=\"1\"/></loop_functions>"),
+      &e);
+  ASSERT_TRUE(m) << e.Format();
+  EXPECT_EQ(m->loop_functions.library, library);
+  EXPECT_EQ(m->loop_functions.label, "x");
+  ASSERT_EQ(m->loop_functions.xml.children.size(), 1u);
+  EXPECT_EQ(m->loop_functions.xml.children[0].attributes[0].second, "1");
+}
+
+TEST(Loader, CppLoopFunctionsMissingLibraryOrLabelAreClearErrors) {
   TempDir d;
   d.Write("c.lua", "");
   ErrorList e;
-  EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libx\" label=\"x\"/>"), &e));
-  EXPECT_NE(e.Format().find("essaim's loop functions are Lua scripts"), std::string::npos) << e.Format();
+  EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libz\" label=\"x\"/>"), &e));
+  EXPECT_NE(e.Format().find("library 'libz' not found (nor 'libz.so')"), std::string::npos) << e.Format();
+  ErrorList e2;
+  d.Write("liby.so", "");
+  EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"liby\"/>"), &e2));
+  EXPECT_NE(e2.Format().find("C++ loop functions need label"), std::string::npos) << e2.Format();
 }
 
 TEST(Loader, UnsupportedDeviceIsNamed) {

@@ -1,0 +1,210 @@
+// The entity classes' members that read or change the world: through the current session,
+// once the entity is in the space; before that, on the values it was made with.
+#include <argos3/core/simulator/entity/controllable_entity.h>
+#include <argos3/core/simulator/entity/embodied_entity.h>
+#include <argos3/core/simulator/entity/floor_entity.h>
+#include <argos3/core/wrappers/lua/lua_controller.h>
+#include <argos3/plugins/simulator/entities/led_equipped_entity.h>
+#include <argos3/plugins/simulator/entities/light_entity.h>
+
+#include "argos/api/entity_binding.h"
+#include "argos/api/entity_specs.h"
+#include "argos/api/session_state.h"
+
+namespace argos {
+
+namespace {
+essaim::ArgosWorld& World(const char* what) { return *essaim::RequireSession(what).world; }
+essaim::ArgosRgb Rgb(const CColor& c) { return {c.GetRed(), c.GetGreen(), c.GetBlue()}; }
+}  // namespace
+
+essaim::ArgosRef SEntityBinding::Require(const CEntity& c_entity, const char* what) {
+  essaim::ArgosRef ref;
+  if (!Find(c_entity, &ref) || !World(what).Live(ref))
+    THROW_ARGOSEXCEPTION(what << ": \"" << c_entity.GetRootEntity().GetId() << "\" is not in the space");
+  return ref;
+}
+
+CEntity& CEntity::GetParent() {
+  if (!m_pcParent) THROW_ARGOSEXCEPTION("Entity \"" << m_strId << "\" has no parent");
+  return *m_pcParent;
+}
+
+CEntity& CEntity::GetRootEntity() { return m_pcParent ? m_pcParent->GetRootEntity() : *this; }
+const CEntity& CEntity::GetRootEntity() const { return m_pcParent ? m_pcParent->GetRootEntity() : *this; }
+
+bool CEntity::IsInSpace() const {
+  essaim::ArgosRef ref;
+  return SEntityBinding::Find(*this, &ref) && World("IsInSpace").Live(ref);
+}
+
+CEmbodiedEntity::CEmbodiedEntity(CEntity* pc_parent, const std::string& str_id, const CVector3& c_position,
+                                 const CQuaternion& c_orientation, bool b_movable)
+    : CEntity(pc_parent, str_id), m_bMovable(b_movable) {
+  m_sOriginAnchor.Id = "origin";
+  m_sOriginAnchor.Position = c_position;
+  m_sOriginAnchor.Orientation = c_orientation;
+}
+
+const SAnchor& CEmbodiedEntity::GetOriginAnchor() const {
+  essaim::ArgosRef ref;
+  if (SEntityBinding::Find(*this, &ref)) {
+    essaim::ArgosPose pose;
+    if (!World("GetOriginAnchor").Pose(ref, &pose))
+      THROW_ARGOSEXCEPTION("GetOriginAnchor: \"" << GetRootEntity().GetId() << "\" is not in the space");
+    m_sOriginAnchor.Position.Set(pose.x, pose.y, pose.z);
+    m_sOriginAnchor.Orientation = FromYaw(pose.yaw);
+  }
+  return m_sOriginAnchor;
+}
+
+bool CEmbodiedEntity::IsMovable() const {
+  essaim::ArgosRef ref;
+  return SEntityBinding::Find(*this, &ref) ? World("IsMovable").Movable(ref) : m_bMovable;
+}
+
+bool CEmbodiedEntity::MoveTo(const CVector3& c_position, const CQuaternion& c_orientation, bool b_check_only,
+                             bool b_ignore_collisions) {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) {  // not in the space yet: where it will be added
+    if (!b_check_only) m_sOriginAnchor.Position = c_position, m_sOriginAnchor.Orientation = c_orientation;
+    return true;
+  }
+  ref = SEntityBinding::Require(*this, "MoveEntity");
+  const essaim::ArgosPose pose{c_position.GetX(), c_position.GetY(), c_position.GetZ(), YawOf(c_orientation)};
+  return World("MoveEntity").Move(ref, pose, b_check_only, b_ignore_collisions);
+}
+
+CLEDEntity::CLEDEntity(CLEDEquippedEntity* pc_parent, UInt32 un_index, const CVector3& c_offset, const CColor& c_color)
+    : CEntity(pc_parent, pc_parent->GetId() + "." + std::to_string(un_index)),
+      m_cEquipped(*pc_parent),
+      m_unIndex(un_index),
+      m_cOffset(c_offset),
+      m_cColor(c_color) {}
+
+CColor CLEDEntity::GetColor() const {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) return m_cColor;
+  const essaim::ArgosRgb c = World("GetColor").Led(SEntityBinding::Require(*this, "GetColor"), m_unIndex);
+  return CColor(c.r, c.g, c.b);
+}
+
+void CLEDEntity::SetColor(const CColor& c_color) {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) {
+    m_cColor = c_color;
+    return;
+  }
+  World("SetColor").SetLed(SEntityBinding::Require(*this, "SetColor"), m_unIndex, Rgb(c_color));
+}
+
+CLEDEquippedEntity::~CLEDEquippedEntity() {
+  for (CLEDEntity* led : m_vecLEDs) delete led;
+}
+
+void CLEDEquippedEntity::AddLED(const CVector3& c_offset, const CColor& c_color) {
+  essaim::ArgosRef ref;
+  if (SEntityBinding::Find(*this, &ref))
+    THROW_ARGOSEXCEPTION("AddLED: \"" << GetRootEntity().GetId() << "\" is in the space: add LEDs before AddEntity");
+  m_vecLEDs.push_back(new CLEDEntity(this, static_cast<UInt32>(m_vecLEDs.size()), c_offset, c_color));
+}
+
+CLEDEntity& CLEDEquippedEntity::GetLED(UInt32 un_index) {
+  if (un_index >= m_vecLEDs.size())
+    THROW_ARGOSEXCEPTION("GetLED(" << un_index << "): \"" << GetRootEntity().GetId() << "\" has " << m_vecLEDs.size()
+                                   << " LEDs");
+  return *m_vecLEDs[un_index];
+}
+
+void CLEDEquippedEntity::SetLEDColor(UInt32 un_index, const CColor& c_color) { GetLED(un_index).SetColor(c_color); }
+
+void CLEDEquippedEntity::SetAllLEDsColors(const CColor& c_color) {
+  for (CLEDEntity* led : m_vecLEDs) led->SetColor(c_color);
+}
+
+void CLEDEquippedEntity::SetAllLEDsColors(const std::vector<CColor>& vec_colors) {
+  if (vec_colors.size() != m_vecLEDs.size())
+    THROW_ARGOSEXCEPTION("SetAllLEDsColors: " << vec_colors.size() << " colours for " << m_vecLEDs.size() << " LEDs");
+  for (size_t k = 0; k < vec_colors.size(); ++k) m_vecLEDs[k]->SetColor(vec_colors[k]);
+}
+
+void CLEDEquippedEntity::AddToMedium(CLEDMedium& c_medium) {
+  m_strMedium = c_medium.GetId();
+  essaim::ArgosRef ref;
+  if (SEntityBinding::Find(*this, &ref))
+    World("AddToMedium").SetMedium(SEntityBinding::Require(*this, "AddToMedium"), m_strMedium);
+}
+
+CVector3 CLightEntity::GetPosition() const {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) return m_cPosition;
+  const essaim::ArgosLight l = World("GetPosition").Light(SEntityBinding::Require(*this, "GetPosition"));
+  return CVector3(l.position[0], l.position[1], l.position[2]);
+}
+
+namespace {
+// Changes a light in the world, or the values it will be added with.
+template <typename Change>
+void ChangeLight(CLightEntity& light, const char* what, Change change) {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(light, &ref)) return;
+  ref = SEntityBinding::Require(light, what);
+  essaim::ArgosLight l = World(what).Light(ref);
+  change(&l);
+  World(what).SetLight(ref, l);
+}
+}  // namespace
+
+void CLightEntity::SetPosition(const CVector3& c) {
+  m_cPosition = c;
+  ChangeLight(*this, "SetPosition", [&](essaim::ArgosLight* l) {
+    l->position[0] = c.GetX(), l->position[1] = c.GetY(), l->position[2] = c.GetZ();
+  });
+}
+
+CColor CLightEntity::GetColor() const {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) return m_cColor;
+  const essaim::ArgosRgb c = World("GetColor").Light(SEntityBinding::Require(*this, "GetColor")).color;
+  return CColor(c.r, c.g, c.b);
+}
+
+void CLightEntity::SetColor(const CColor& c_color) {
+  m_cColor = c_color;
+  ChangeLight(*this, "SetColor", [&](essaim::ArgosLight* l) { l->color = Rgb(c_color); });
+}
+
+Real CLightEntity::GetIntensity() const {
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) return m_fIntensity;
+  return World("GetIntensity").Light(SEntityBinding::Require(*this, "GetIntensity")).intensity;
+}
+
+void CLightEntity::SetIntensity(Real f_intensity) {
+  m_fIntensity = f_intensity;
+  ChangeLight(*this, "SetIntensity", [&](essaim::ArgosLight* l) { l->intensity = f_intensity; });
+}
+
+void CLightEntity::AddToMedium(CLEDMedium& c_medium) {
+  m_strMedium = c_medium.GetId();
+  ChangeLight(*this, "AddToMedium", [&](essaim::ArgosLight* l) { l->medium = m_strMedium; });
+}
+
+CControllableEntity::~CControllableEntity() { delete m_pcController; }
+
+CCI_Controller& CControllableEntity::GetController() {
+  const essaim::ArgosRef ref = SEntityBinding::Require(*this, "GetController");
+  if (!m_pcController) m_pcController = new CLuaController(m_strControllerId, ref.serial);
+  return *m_pcController;
+}
+
+lua_State* CLuaController::GetLuaState() {
+  lua_State* state = World("GetLuaState").LuaState(m_unRobot);
+  if (!state) THROW_ARGOSEXCEPTION("GetLuaState: robot " << m_unRobot << "'s controller has no Lua state");
+  return state;
+}
+bool CLuaController::IsOK() { return World("IsOK").ControllerOk(m_unRobot); }
+
+void CFloorEntity::SetChanged() { World("SetChanged").FloorChanged(); }
+
+}  // namespace argos

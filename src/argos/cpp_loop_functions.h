@@ -1,0 +1,49 @@
+// C++ loop functions (docs/loop-functions.md, "C++ loop functions"): a library built
+// against essaim's ARGoS API, loaded and driven at the points of the tick where the Lua
+// loop functions' hooks run. The ARGoS classes stay inside this room: the rest of essaim
+// sees this class only.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/color.h"
+#include "devices/entity_store.h"
+#include "lua/robot/lua_controller.h"
+#include "model/model.h"
+
+namespace essaim {
+
+class ArgosSession;
+class StoreWorld;
+
+class CppLoopFunctions {
+ public:
+  CppLoopFunctions();
+  ~CppLoopFunctions();  // Destroy(), then the loop functions deleted
+  CppLoopFunctions(const CppLoopFunctions&) = delete;
+  CppLoopFunctions& operator=(const CppLoopFunctions&) = delete;
+
+  /// Loads the library (or ARGOS_PLUGIN_PATH's) and makes the loop functions of the label.
+  /// Everything passed must outlive it. False with `error`: bad input (exit 2).
+  bool Load(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
+            std::string* error);
+  bool Loaded() const { return session_ != nullptr; }
+  void SetTick(uint64_t tick);
+
+  /// "init", "pre_step", "post_step", "reset", "destroy", "post_experiment".
+  bool Call(const char* hook, std::string* error);
+  bool IsExperimentFinished(bool* finished, std::string* error);
+  bool FloorColor(double x, double y, Color* out, std::string* error);
+  /// Whether the floor entity's SetChanged() was called since the last call.
+  bool TakeFloorChanged();
+  /// LOG/LOGERR lines, "<O or E><text>\n" each.
+  std::string& LogBuffer();
+
+ private:
+  const Model* model_ = nullptr;
+  std::unique_ptr<StoreWorld> world_;
+  std::unique_ptr<ArgosSession> session_;
+};
+
+}  // namespace essaim

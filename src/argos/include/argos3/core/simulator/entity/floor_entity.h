@@ -1,0 +1,16 @@
+// ARGoS's CFloorEntity (argos3/core/simulator/entity/floor_entity.h): the arena's floor.
+// With <floor source="loop_functions">, SetChanged() has the floor drawn again from
+// GetFloorColor before the robots next sense it.
+#pragma once
+#include <argos3/core/simulator/entity/entity.h>
+
+namespace argos {
+
+class CFloorEntity : public CEntity {
+ public:
+  CFloorEntity() : CEntity("floor") {}
+  std::string GetTypeDescription() const override { return "floor"; }
+  void SetChanged();
+};
+
+}  // namespace argos

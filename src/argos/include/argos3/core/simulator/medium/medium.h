@@ -1,0 +1,17 @@
+// ARGoS's CMedium (argos3/core/simulator/medium/medium.h): one of the experiment's <media>.
+#pragma once
+#include <string>
+
+namespace argos {
+
+class CMedium {
+ public:
+  explicit CMedium(const std::string& str_id) : m_strId(str_id) {}
+  virtual ~CMedium() = default;
+  const std::string& GetId() const { return m_strId; }
+
+ private:
+  std::string m_strId;
+};
+
+}  // namespace argos

@@ -1,0 +1,38 @@
+// ARGoS's CSimulator (argos3/core/simulator/simulator.h): the running experiment, reached
+// from loop functions through CSimulator::GetInstance() while one of their hooks runs.
+#pragma once
+#include <argos3/core/simulator/medium/medium.h>
+#include <argos3/core/simulator/space/space.h>
+#include <argos3/core/utility/configuration/argos_exception.h>
+
+#include <string>
+
+namespace argos {
+
+class CLoopFunctions;
+
+class CSimulator {
+ public:
+  /// The experiment whose loop functions are running; throws outside their hooks.
+  static CSimulator& GetInstance();
+  CSpace& GetSpace();
+  CLoopFunctions& GetLoopFunctions();
+  /// The <media> member with id `str_id`, as a T (CLEDMedium); throws when there is none.
+  template <typename T>
+  T& GetMedium(const std::string& str_id) {
+    T* medium = dynamic_cast<T*>(&GetMediumById(str_id));
+    if (!medium) THROW_ARGOSEXCEPTION("medium \"" << str_id << "\" is not of the type asked for");
+    return *medium;
+  }
+  CMedium& GetMediumById(const std::string& str_id);
+  UInt32 GetRandomSeed() const;
+  /// The experiment's length in ticks (0: unlimited).
+  UInt32 GetMaxSimulationClock() const;
+  bool IsRealTimeClock() const { return false; }
+
+ private:
+  friend struct SSessionAccess;
+  CSimulator() = default;
+};
+
+}  // namespace argos

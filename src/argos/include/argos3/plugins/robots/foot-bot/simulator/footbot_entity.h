@@ -1,0 +1,36 @@
+// ARGoS's CFootBotEntity (argos3/plugins/robots/foot-bot/simulator/footbot_entity.h): a
+// foot-bot of the .argos file, with its body, LEDs and Lua controller.
+#pragma once
+#include <argos3/core/simulator/entity/composable_entity.h>
+#include <argos3/core/simulator/entity/controllable_entity.h>
+#include <argos3/core/simulator/entity/embodied_entity.h>
+#include <argos3/plugins/simulator/entities/led_equipped_entity.h>
+
+namespace argos {
+
+class CFootBotEntity : public CComposableEntity {
+ public:
+  /// ARGoS's constructor; essaim cannot add foot-bots during a run (AddEntity throws).
+  CFootBotEntity(const std::string& str_id, const std::string& str_controller_id,
+                 const CVector3& c_position = CVector3(), const CQuaternion& c_orientation = CQuaternion(),
+                 Real f_rab_range = 3.0, size_t un_rab_data_size = 10, const std::string& str_bat_model = "",
+                 const CRadians& c_omnicam_aperture = CRadians(1.2740903539558606), Real f_perspcam_range = 2.0)
+      : CComposableEntity(str_id),
+        m_cEmbodied(this, str_id + ".body", c_position, c_orientation, true),
+        m_cControllable(this, str_id + ".controller", str_controller_id),
+        m_cLEDs(this, str_id + ".leds") {
+    (void)f_rab_range, (void)un_rab_data_size, (void)str_bat_model, (void)c_omnicam_aperture, (void)f_perspcam_range;
+  }
+  std::string GetTypeDescription() const override { return "foot-bot"; }
+  CEmbodiedEntity& GetEmbodiedEntity() { return m_cEmbodied; }
+  CControllableEntity& GetControllableEntity() { return m_cControllable; }
+  /// Its 13 LEDs (12 in the ring, 1 beacon), as its LED actuator last set them.
+  CLEDEquippedEntity& GetLEDEquippedEntity() { return m_cLEDs; }
+
+ private:
+  CEmbodiedEntity m_cEmbodied;
+  CControllableEntity m_cControllable;
+  CLEDEquippedEntity m_cLEDs;
+};
+
+}  // namespace argos

@@ -1,0 +1,24 @@
+// The experiment's loop functions, Lua (lua/loop) or C++ (argos/), whichever the model
+// names: the stages call these, so both run at the same points of the tick.
+#pragma once
+#include <string>
+
+#include "core/value.h"
+#include "sim/world.h"
+
+namespace essaim {
+
+/// "init", "pre_step", "post_step", "reset", "destroy".
+bool CallLoopHook(World& w, const char* hook, std::string* error);
+bool LoopExperimentFinished(World& w, bool* finished, std::string* error);
+/// post_experiment(); Lua's returned table becomes `metrics` (C++ ones write their own files).
+bool LoopPostExperiment(World& w, Value* metrics, bool* has_metrics, std::string* error);
+void SetLoopTick(World& w);
+/// Hands the loop functions' log lines to the log sink.
+void FlushLoopLog(World& w);
+/// Samples the loop functions' floor colour into w.floor (its size already set).
+bool DrawLoopFloor(World& w, std::string* error);
+/// Draws the floor again when C++ loop functions called the floor entity's SetChanged().
+bool RedrawFloorIfChanged(World& w, std::string* error);
+
+}  // namespace essaim

@@ -1,0 +1,40 @@
+"""Helpers for the C++ loop-function tests: the essaim binary ($ESSAIM, set by ctest), the
+build tree's ARGoS SDK beside it, and an ARGoS loop-function project built into a folder."""
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+ESSAIM = os.environ.get("ESSAIM")
+need_essaim = pytest.mark.skipif(not ESSAIM, reason="ESSAIM (the essaim binary) is not set")
+
+
+def sdk() -> Path:
+    """build/argos3-sdk: the libraries, argos3_simulator.pc, ARGoSConfig.cmake."""
+    return Path(ESSAIM).resolve().parent / "argos3-sdk"
+
+
+def build_project(source: Path, folder: Path, prefix: Path = None) -> Path:
+    """Copies the project `source` into `folder`, configures and builds it there (its own
+    CMakeLists.txt, untouched) with PKG_CONFIG_PATH and CMAKE_PREFIX_PATH naming `prefix`
+    (default: the build tree's SDK); returns the copy's folder (libraries in its build/)."""
+    copy = folder / source.name
+    shutil.copytree(source, copy)
+    prefix = prefix or sdk()
+    env = dict(os.environ, PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"), CMAKE_PREFIX_PATH=str(prefix))
+    env.pop("CXXFLAGS", None)
+    generator = ["-G", "Ninja"] if shutil.which("ninja") else []
+    for command in (["cmake", "-S", ".", "-B", "build", *generator], ["cmake", "--build", "build"]):
+        done = subprocess.run(command, cwd=copy, env=env, capture_output=True, text=True)
+        assert done.returncode == 0, f"{' '.join(command)}:\n{done.stdout}\n{done.stderr}"
+    return copy
+
+
+def run(argos: Path, *args, cwd: Path, env=None):
+    """essaim run on `argos` from `cwd`; the completed process."""
+    return subprocess.run([ESSAIM, "run", str(argos), *args], cwd=cwd, capture_output=True, text=True,
+                          env=dict(os.environ, **(env or {})), timeout=300)
