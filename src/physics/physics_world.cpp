@@ -24,6 +24,12 @@ constexpr double kRayCellSize = 0.5;
 }  // namespace
 
 namespace {
+/// The friction a fixture holds for ARGoS's coefficient `argos`. A contact's friction is
+/// Chipmunk's product of the two shapes' coefficients in ARGoS (foot-bot on wall 0.7 × 0.1 =
+/// 0.07) and Box2D's square root of the product of the two fixtures'; fixtures holding the
+/// squares give the product in every pair, every region, at no cost per contact.
+float ContactFriction(double argos) { return static_cast<float>(argos * argos); }
+
 /// One Box2D world per region, each with its ground body first.
 void MakeRegionWorlds(size_t count, std::vector<PhysicsWorld::Impl::Region>* regions) {
   regions->resize(count);
@@ -74,7 +80,7 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   circle.m_radius = static_cast<float>(footbot::kRadius);
   b2FixtureDef fd;
   fd.shape = &circle;
-  fd.friction = 0.7f;
+  fd.friction = ContactFriction(0.7);
   fd.restitution = 0;
   fd.density = static_cast<float>(footbot::kMass / (kPi * footbot::kRadius * footbot::kRadius));
   fd.userData.pointer = PackTag(BodyKind::Robot, i);
@@ -82,8 +88,9 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   b2MassData md;
   md.mass = static_cast<float>(footbot::kMass);
   md.center.SetZero();
-  // ARGoS quirk 1: I = m (2r)^2 / 2.
-  md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
+  // ARGoS's base and gripper bodies turn together (a gear joint) and both have the moment of
+  // the base's mass with quirk 1, I = m (2r)^2 / 2: twice that about the centre.
+  md.I = static_cast<float>(2 * footbot::kBaseMass * 4 * footbot::kRadius * footbot::kRadius / 2);
   body->SetMassData(&md);
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
@@ -146,7 +153,7 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
     area = kPi * o.radius * o.radius;
   }
   // ARGoS: static friction 0.1, movable 0.7, no bounce.
-  fd.friction = o.movable ? 0.7f : 0.1f;
+  fd.friction = ContactFriction(o.movable ? 0.7 : 0.1);
   fd.restitution = 0;
   fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
   fd.userData.pointer = PackTag(BodyKind::Obstacle, index);
@@ -261,14 +268,43 @@ void StepRegion(void* ctx, int region) {
 }
 }  // namespace
 
+namespace {
+/// Moves a moving dynamic body by `h` seconds at its velocity (h < 0: back).
+void ShiftAlongVelocity(void* p, float h) {
+  b2Body* body = AsBody(p);
+  const b2Vec2 v = body->GetLinearVelocity();
+  const float w = body->GetAngularVelocity();
+  if (body->GetType() != b2_dynamicBody || (v.x == 0 && v.y == 0 && w == 0)) return;
+  body->SetTransform(body->GetPosition() + h * v, body->GetAngle() + h * w);
+}
+}  // namespace
+
+// ARGoS's engine (Chipmunk) moves each body at the start of a sub-step with the velocity the
+// sub-step before solved, then solves velocities; Box2D solves, then moves. So Box2D's pose
+// after a sub-step is Chipmunk's after the next one's move, and the two engines meet the same
+// contacts at the same places when Box2D's bodies are one sub-step ahead along their velocity.
+// Between ticks the bodies hold ARGoS's poses, which everything else reads (sensors, the
+// wheels' heading, loop functions); a tick shifts them ahead, steps, and shifts them back.
+void PhysicsWorld::ShiftDynamicBodies(float h) {
+  for (void* body : robots_) ShiftAlongVelocity(body, h);
+  for (void* body : obstacles_) ShiftAlongVelocity(body, h);
+}
+
 void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
-  const int regions = impl_->RegionCount();
-  if (regions == 1) {
-    RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), substeps};
+  const float h = static_cast<float>(dt / substeps);
+  ShiftDynamicBodies(h);
+  if (impl_->RegionCount() == 1) {
+    RegionSteps steps{&impl_->regions, h, substeps};
     StepRegion(&steps, 0);
-    ++impl_->shapes_moved;
-    return;
+  } else {
+    StepRegions(dt, substeps, runner);
   }
+  ShiftDynamicBodies(-h);
+  ++impl_->shapes_moved;
+}
+
+void PhysicsWorld::StepRegions(double dt, int substeps, const PhysicsRunner& runner) {
+  const int regions = impl_->RegionCount();
   SyncRegions(dt, runner);
   // The regions step one sub-step at a time, the ghosts following their bodies in between:
   // a ghost moves at its body's velocity of the sub-step's start, never a tick's.
@@ -281,7 +317,6 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
     else
       for (int r = 0; r < regions; ++r) StepRegion(&steps, r);
   }
-  ++impl_->shapes_moved;
 }
 
 Pose2 PhysicsWorld::RobotPose(int robot) const {

@@ -149,6 +149,10 @@ class PhysicsWorld {
   /// Several regions, before a step: each body (with what it grips or is gripped by) moves
   /// to the region holding its centre, then ghosts are made, moved or dropped.
   void SyncRegions(double dt, const PhysicsRunner& runner);
+  /// Several regions, one tick: the sync, then each sub-step on every region at once.
+  void StepRegions(double dt, int substeps, const PhysicsRunner& runner);
+  /// Every moving dynamic body moved `h` seconds along its velocity (see Step).
+  void ShiftDynamicBodies(float h);
   /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
   void FollowGhosts(const PhysicsRunner& runner);
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
