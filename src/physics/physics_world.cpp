@@ -85,6 +85,7 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   // ARGoS quirk 1: I = m (2r)^2 / 2.
   md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
   body->SetMassData(&md);
+  AddGripperDisc(body, i);
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force
@@ -104,6 +105,38 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   w.CreateJoint(&jd);
   robots_.push_back(body);
   impl_->controls.push_back(control);
+}
+
+namespace {
+/// The disc ahead of the turret at rotation `turret`, in the robot's frame.
+b2Vec2 GripperDiscCentre(double turret) {
+  return b2Vec2(static_cast<float>(footbot::kRadius * std::cos(turret)),
+                static_cast<float>(footbot::kRadius * std::sin(turret)));
+}
+
+/// Robot `body`'s gripper disc (it has one fixture of kind Gripper), or null.
+b2Fixture* GripperDisc(b2Body* body) {
+  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
+    if (TagKind(f->GetUserData().pointer) == BodyKind::Gripper) return f;
+  return nullptr;
+}
+}  // namespace
+
+void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
+  // A fixture on the robot's own body rather than ARGoS's second body pinned to it: the two
+  // move as one there, and a fixture costs no joint. A sensor that collides with nothing
+  // (ARGoS marks the gripper shape a sensor: robots still touch walls with their body), of
+  // density 0: the body's mass set above stays as it is.
+  b2CircleShape disc;
+  disc.m_radius = static_cast<float>(kGripperRadius);
+  disc.m_p = GripperDiscCentre(0);
+  b2FixtureDef fd;
+  fd.shape = &disc;
+  fd.density = 0;
+  fd.isSensor = true;
+  fd.filter.maskBits = 0;  // no contact is ever made for it, not even a sensor's
+  fd.userData.pointer = PackTag(BodyKind::Gripper, index);
+  AsBody(robot_body)->CreateFixture(&fd);
 }
 
 int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }
@@ -325,7 +358,7 @@ namespace {
 /// A shape's vertical extent (m): a robot's is the foot-bot's body, an obstacle's its own.
 void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const std::vector<double>& bottoms,
                 double* bottom, double* top) {
-  if (kind == BodyKind::Robot) {
+  if (kind == BodyKind::Robot || kind == BodyKind::Gripper) {
     *bottom = 0;
     *top = footbot::kHeight;
   } else {
@@ -338,7 +371,7 @@ void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const
 /// obstacle, whose vertical extent contains z.
 bool ReachesHeight(BodyKind kind, int index, double z, int exclude_robot, const std::vector<double>& tops,
                    const std::vector<double>& bottoms) {
-  if (kind == BodyKind::None || (kind == BodyKind::Robot && index == exclude_robot)) return false;
+  if (kind == BodyKind::None || (kind != BodyKind::Obstacle && index == exclude_robot)) return false;
   double bottom, top;
   HeightSpan(kind, index, tops, bottoms, &bottom, &top);
   return z >= bottom && z <= top;
@@ -379,7 +412,8 @@ class GripQuery : public b2QueryCallback {
     uintptr_t tag = f->GetUserData().pointer;
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
-    if (kind == BodyKind::Robot && index == self_) return true;
+    if ((kind == BodyKind::Robot && index == self_) || kind == BodyKind::Gripper)
+      return true;                                                                         // grippers: not grippable
     if (kind == BodyKind::None || f->GetBody()->GetType() != b2_dynamicBody) return true;  // static: not grippable
     b2DistanceInput in;
     in.proxyA.Set(&centre_, 1, 0.0f);
@@ -494,7 +528,7 @@ void FileRayCircles(Impl* im) {
         c.r += kCircleSlack;
         if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
         const int index = TagIndex(tag);
-        if (kind == BodyKind::Robot) c.robot = index;
+        if (kind != BodyKind::Obstacle) c.robot = index;  // a robot's body or gripper disc
         HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
         c.fixture = f;
         circles.push_back(c);
@@ -716,6 +750,13 @@ Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
   return {b->GetPosition().x + footbot::kRadius * std::cos(a), b->GetPosition().y + footbot::kRadius * std::sin(a)};
 }
 
+Vec2 PhysicsWorld::GripperDiscPoint(int robot) const {
+  b2Body* b = AsBody(robots_[robot]);
+  const b2Fixture* disc = GripperDisc(b);
+  const b2Vec2 p = b2Mul(b->GetTransform(), static_cast<const b2CircleShape*>(disc->GetShape())->m_p);
+  return {p.x, p.y};
+}
+
 bool PhysicsWorld::TryGrip(int robot, double turret) {
   Impl::Grip& g = impl_->grips[robot];
   if (g.joint) return true;
@@ -753,6 +794,12 @@ void PhysicsWorld::Release(int robot) {
 }
 
 void PhysicsWorld::SetGripTurret(int robot, double turret) {
+  if (b2Fixture* disc = GripperDisc(AsBody(robots_[robot]))) {
+    // The broad-phase box follows at the next step (robots are always awake); the ray grid
+    // is refiled at the next query.
+    static_cast<b2CircleShape*>(disc->GetShape())->m_p = GripperDiscCentre(turret);
+    ++impl_->shapes_moved;
+  }
   Impl::Grip& g = impl_->grips[robot];
   if (!g.joint || turret == g.turret) return;
   g.turned += WrapSigned(turret - g.turret);  // unwrapped: a turret in speed mode may turn many times
