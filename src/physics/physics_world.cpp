@@ -16,6 +16,9 @@ namespace essaim {
 namespace {
 constexpr double kMaxStaticPiece = 1.0;    // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
+/// m, how far neighbouring pieces of a tiled wall overlap: far above their float rounding
+/// (~6e-8 m at arena scale), far below anything a sensor resolves.
+constexpr double kSeamOverlap = 1e-5;
 
 /// m: the ray grid's cells, a side of about three foot-bot diameters. A scanner's disc
 /// (1.51 m) spans 7 × 7 cells, the proximity ring's (0.19 m) one to four; smaller cells
@@ -147,18 +150,26 @@ namespace {
 /// A long static wall's bounding box overlaps most of the tree and makes every ray cast
 /// visit it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tiled into
 /// pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances. At
-/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
+/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures. Neighbouring
+/// pieces overlap by kSeamOverlap: their float vertices, rounded apart, left gaps of ~6e-8 m
+/// that a ray along a seam went through into the wall (the outer faces do not move).
 void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
   double piece = kMaxStaticPiece;
   while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
-  int nx = static_cast<int>(std::ceil(o.size_x / piece));
-  int ny = static_cast<int>(std::ceil(o.size_y / piece));
-  float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+  const int nx = static_cast<int>(std::ceil(o.size_x / piece));
+  const int ny = static_cast<int>(std::ceil(o.size_y / piece));
+  // Piece k of n along a side of length `size`: its [lo, hi], inner ends widened.
+  auto span = [](double size, int n, int k, double* lo, double* hi) {
+    *lo = -size / 2 + size * k / n - (k > 0 ? kSeamOverlap : 0);
+    *hi = -size / 2 + size * (k + 1) / n + (k + 1 < n ? kSeamOverlap : 0);
+  };
   for (int ix = 0; ix < nx; ++ix)
     for (int iy = 0; iy < ny; ++iy) {
-      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
-               static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
-      poly->SetAsBox(hx, hy, c, 0);
+      double x0, x1, y0, y1;
+      span(o.size_x, nx, ix, &x0, &x1);
+      span(o.size_y, ny, iy, &y0, &y1);
+      poly->SetAsBox(static_cast<float>((x1 - x0) / 2), static_cast<float>((y1 - y0) / 2),
+                     b2Vec2(static_cast<float>((x0 + x1) / 2), static_cast<float>((y0 + y1) / 2)), 0);
       body->CreateFixture(fd);
     }
 }
@@ -171,6 +182,12 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   double area;
   if (o.kind == ShapeKind::Box) {
     poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
+    // Box2D wraps polygons in a 1 cm skin (b2_polygonRadius) that collides but that rays do
+    // not see: a robot placed within 5 mm of a static box was pushed off it at the first
+    // step, where ARGoS leaves it. Without the skin a static box collides at its true
+    // faces, as ARGoS's does (its pieces too: TileStaticBox copies this shape). Movable
+    // boxes keep theirs: the issue was static ones, and box-on-box stacking relies on it.
+    if (!o.movable) poly.m_radius = 0;
     fd.shape = &poly;
     area = o.size_x * o.size_y;
   } else {
