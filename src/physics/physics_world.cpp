@@ -70,7 +70,9 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   b2BodyDef bd;
   bd.type = b2_dynamicBody;
   bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
-  bd.angle = static_cast<float>(r.pose.yaw);
+  // ARGoS turns the start yaw into a quaternion and back (-π..π) before its body takes it:
+  // a robot placed at 300° starts at -60°, and its orientation quaternion says so.
+  bd.angle = static_cast<float>(WrapSigned(r.pose.yaw));
   bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
   b2Body* body = w.CreateBody(&bd);
   b2CircleShape circle;
@@ -350,8 +352,9 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   ++impl_->shapes_moved;
   b2Body* b = AsBody(robots_[robot]);
   const b2Transform before = b->GetTransform();
-  const float turn = static_cast<float>(pose.yaw) - b->GetAngle();
-  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  const float yaw = static_cast<float>(WrapSigned(pose.yaw));  // as a start yaw (AddRobot)
+  const float turn = yaw - b->GetAngle();
+  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), yaw);
   b->SetLinearVelocity(b2Vec2(0, 0));
   b->SetAngularVelocity(0);
   // A held object moves with the robot instead of being dragged across the arena.
