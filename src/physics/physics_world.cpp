@@ -16,6 +16,9 @@ namespace essaim {
 namespace {
 constexpr double kMaxStaticPiece = 1.0;    // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
+/// m, how far neighbouring pieces of a tiled wall overlap: far above their float rounding
+/// (~6e-8 m at arena scale), far below anything a sensor resolves.
+constexpr double kSeamOverlap = 1e-5;
 
 /// m: the ray grid's cells, a side of about three foot-bot diameters. A scanner's disc
 /// (1.51 m) spans 7 × 7 cells, the proximity ring's (0.19 m) one to four; smaller cells
@@ -73,7 +76,9 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   b2BodyDef bd;
   bd.type = b2_dynamicBody;
   bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
-  bd.angle = static_cast<float>(r.pose.yaw);
+  // ARGoS turns the start yaw into a quaternion and back (-π..π) before its body takes it:
+  // a robot placed at 300° starts at -60°, and its orientation quaternion says so.
+  bd.angle = static_cast<float>(WrapSigned(r.pose.yaw));
   bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
   b2Body* body = w.CreateBody(&bd);
   b2CircleShape circle;
@@ -92,6 +97,7 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   // the base's mass with quirk 1, I = m (2r)^2 / 2: twice that about the centre.
   md.I = static_cast<float>(2 * footbot::kBaseMass * 4 * footbot::kRadius * footbot::kRadius / 2);
   body->SetMassData(&md);
+  AddGripperDisc(body, i);
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force
@@ -113,6 +119,38 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   impl_->controls.push_back(control);
 }
 
+namespace {
+/// The disc ahead of the turret at rotation `turret`, in the robot's frame.
+b2Vec2 GripperDiscCentre(double turret) {
+  return b2Vec2(static_cast<float>(footbot::kRadius * std::cos(turret)),
+                static_cast<float>(footbot::kRadius * std::sin(turret)));
+}
+
+/// Robot `body`'s gripper disc (it has one fixture of kind Gripper), or null.
+b2Fixture* GripperDisc(b2Body* body) {
+  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
+    if (TagKind(f->GetUserData().pointer) == BodyKind::Gripper) return f;
+  return nullptr;
+}
+}  // namespace
+
+void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
+  // A fixture on the robot's own body rather than ARGoS's second body pinned to it: the two
+  // move as one there, and a fixture costs no joint. A sensor that collides with nothing
+  // (ARGoS marks the gripper shape a sensor: robots still touch walls with their body), of
+  // density 0: the body's mass set above stays as it is.
+  b2CircleShape disc;
+  disc.m_radius = static_cast<float>(kGripperRadius);
+  disc.m_p = GripperDiscCentre(0);
+  b2FixtureDef fd;
+  fd.shape = &disc;
+  fd.density = 0;
+  fd.isSensor = true;
+  fd.filter.maskBits = 0;  // no contact is ever made for it, not even a sensor's
+  fd.userData.pointer = PackTag(BodyKind::Gripper, index);
+  AsBody(robot_body)->CreateFixture(&fd);
+}
+
 int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }
 
 int PhysicsWorld::RobotRegion(int robot) const { return impl_->RegionOfBody(AsBody(robots_[robot])); }
@@ -121,18 +159,26 @@ namespace {
 /// A long static wall's bounding box overlaps most of the tree and makes every ray cast
 /// visit it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tiled into
 /// pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances. At
-/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
+/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures. Neighbouring
+/// pieces overlap by kSeamOverlap: their float vertices, rounded apart, left gaps of ~6e-8 m
+/// that a ray along a seam went through into the wall (the outer faces do not move).
 void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
   double piece = kMaxStaticPiece;
   while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
-  int nx = static_cast<int>(std::ceil(o.size_x / piece));
-  int ny = static_cast<int>(std::ceil(o.size_y / piece));
-  float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+  const int nx = static_cast<int>(std::ceil(o.size_x / piece));
+  const int ny = static_cast<int>(std::ceil(o.size_y / piece));
+  // Piece k of n along a side of length `size`: its [lo, hi], inner ends widened.
+  auto span = [](double size, int n, int k, double* lo, double* hi) {
+    *lo = -size / 2 + size * k / n - (k > 0 ? kSeamOverlap : 0);
+    *hi = -size / 2 + size * (k + 1) / n + (k + 1 < n ? kSeamOverlap : 0);
+  };
   for (int ix = 0; ix < nx; ++ix)
     for (int iy = 0; iy < ny; ++iy) {
-      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
-               static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
-      poly->SetAsBox(hx, hy, c, 0);
+      double x0, x1, y0, y1;
+      span(o.size_x, nx, ix, &x0, &x1);
+      span(o.size_y, ny, iy, &y0, &y1);
+      poly->SetAsBox(static_cast<float>((x1 - x0) / 2), static_cast<float>((y1 - y0) / 2),
+                     b2Vec2(static_cast<float>((x0 + x1) / 2), static_cast<float>((y0 + y1) / 2)), 0);
       body->CreateFixture(fd);
     }
 }
@@ -145,6 +191,12 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   double area;
   if (o.kind == ShapeKind::Box) {
     poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
+    // Box2D wraps polygons in a 1 cm skin (b2_polygonRadius) that collides but that rays do
+    // not see: a robot placed within 5 mm of a static box was pushed off it at the first
+    // step, where ARGoS leaves it. Without the skin a static box collides at its true
+    // faces, as ARGoS's does (its pieces too: TileStaticBox copies this shape). Movable
+    // boxes keep theirs: the issue was static ones, and box-on-box stacking relies on it.
+    if (!o.movable) poly.m_radius = 0;
     fd.shape = &poly;
     area = o.size_x * o.size_y;
   } else {
@@ -335,8 +387,9 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   ++impl_->shapes_moved;
   b2Body* b = AsBody(robots_[robot]);
   const b2Transform before = b->GetTransform();
-  const float turn = static_cast<float>(pose.yaw) - b->GetAngle();
-  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  const float yaw = static_cast<float>(WrapSigned(pose.yaw));  // as a start yaw (AddRobot)
+  const float turn = yaw - b->GetAngle();
+  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), yaw);
   b->SetLinearVelocity(b2Vec2(0, 0));
   b->SetAngularVelocity(0);
   // A held object moves with the robot instead of being dragged across the arena.
@@ -360,7 +413,7 @@ namespace {
 /// A shape's vertical extent (m): a robot's is the foot-bot's body, an obstacle's its own.
 void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const std::vector<double>& bottoms,
                 double* bottom, double* top) {
-  if (kind == BodyKind::Robot) {
+  if (kind == BodyKind::Robot || kind == BodyKind::Gripper) {
     *bottom = 0;
     *top = footbot::kHeight;
   } else {
@@ -373,7 +426,7 @@ void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const
 /// obstacle, whose vertical extent contains z.
 bool ReachesHeight(BodyKind kind, int index, double z, int exclude_robot, const std::vector<double>& tops,
                    const std::vector<double>& bottoms) {
-  if (kind == BodyKind::None || (kind == BodyKind::Robot && index == exclude_robot)) return false;
+  if (kind == BodyKind::None || (kind != BodyKind::Obstacle && index == exclude_robot)) return false;
   double bottom, top;
   HeightSpan(kind, index, tops, bottoms, &bottom, &top);
   return z >= bottom && z <= top;
@@ -414,7 +467,8 @@ class GripQuery : public b2QueryCallback {
     uintptr_t tag = f->GetUserData().pointer;
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
-    if (kind == BodyKind::Robot && index == self_) return true;
+    if ((kind == BodyKind::Robot && index == self_) || kind == BodyKind::Gripper)
+      return true;                                                                         // grippers: not grippable
     if (kind == BodyKind::None || f->GetBody()->GetType() != b2_dynamicBody) return true;  // static: not grippable
     b2DistanceInput in;
     in.proxyA.Set(&centre_, 1, 0.0f);
@@ -529,7 +583,7 @@ void FileRayCircles(Impl* im) {
         c.r += kCircleSlack;
         if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
         const int index = TagIndex(tag);
-        if (kind == BodyKind::Robot) c.robot = index;
+        if (kind != BodyKind::Obstacle) c.robot = index;  // a robot's body or gripper disc
         HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
         c.fixture = f;
         circles.push_back(c);
@@ -751,6 +805,13 @@ Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
   return {b->GetPosition().x + footbot::kRadius * std::cos(a), b->GetPosition().y + footbot::kRadius * std::sin(a)};
 }
 
+Vec2 PhysicsWorld::GripperDiscPoint(int robot) const {
+  b2Body* b = AsBody(robots_[robot]);
+  const b2Fixture* disc = GripperDisc(b);
+  const b2Vec2 p = b2Mul(b->GetTransform(), static_cast<const b2CircleShape*>(disc->GetShape())->m_p);
+  return {p.x, p.y};
+}
+
 bool PhysicsWorld::TryGrip(int robot, double turret) {
   Impl::Grip& g = impl_->grips[robot];
   if (g.joint) return true;
@@ -788,6 +849,12 @@ void PhysicsWorld::Release(int robot) {
 }
 
 void PhysicsWorld::SetGripTurret(int robot, double turret) {
+  if (b2Fixture* disc = GripperDisc(AsBody(robots_[robot]))) {
+    // The broad-phase box follows at the next step (robots are always awake); the ray grid
+    // is refiled at the next query.
+    static_cast<b2CircleShape*>(disc->GetShape())->m_p = GripperDiscCentre(turret);
+    ++impl_->shapes_moved;
+  }
   Impl::Grip& g = impl_->grips[robot];
   if (!g.joint || turret == g.turret) return;
   g.turned += WrapSigned(turret - g.turret);  // unwrapped: a turret in speed mode may turn many times
