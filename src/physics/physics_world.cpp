@@ -183,6 +183,19 @@ void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2Polyg
     }
 }
 
+/// A long static box as two sets of fixtures: the whole box collides, tagged None (queries
+/// and rays pass it by), and its pieces, sensors that collide with nothing, are what rays and
+/// queries meet. Robots pressed on a wall overlap it a little, as ARGoS's do (1-2 mm); against
+/// pieces they caught on the next piece's corner at each seam, where ARGoS's slide on.
+void AddLongStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
+  b2FixtureDef whole = *fd;
+  whole.userData.pointer = PackTag(BodyKind::None, 0);
+  body->CreateFixture(&whole);
+  fd->isSensor = true;
+  fd->filter.maskBits = 0;  // no contact is ever made for a piece
+  TileStaticBox(o, body, fd, poly);
+}
+
 /// The obstacle's box or circle fixture(s) on `body`, tagged with its index.
 void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   b2FixtureDef fd;
@@ -210,7 +223,7 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
   fd.userData.pointer = PackTag(BodyKind::Obstacle, index);
   if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece)
-    TileStaticBox(o, body, &fd, &poly);
+    AddLongStaticBox(o, body, &fd, &poly);
   else
     body->CreateFixture(&fd);
 }
@@ -276,7 +289,8 @@ void PhysicsWorld::RemoveObstacle(int index) {
   // Fixture tags carry the index: those after the removed one move down by one.
   for (size_t k = index; k < obstacles_.size(); ++k)
     for (b2Fixture* f = AsBody(obstacles_[k])->GetFixtureList(); f; f = f->GetNext())
-      f->GetUserData().pointer = PackTag(BodyKind::Obstacle, static_cast<int>(k));
+      if (TagKind(f->GetUserData().pointer) == BodyKind::Obstacle)  // not a long box's whole
+        f->GetUserData().pointer = PackTag(BodyKind::Obstacle, static_cast<int>(k));
 }
 
 void PhysicsWorld::SetObstaclePose(int index, const Pose2& pose) {
