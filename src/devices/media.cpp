@@ -26,6 +26,7 @@ namespace {
 /// Per-body buffers, and what of each obstacle does not change: its top, its bounding circle.
 void InitBodies(const Model& model, Media* m) {
   m->body_xy.assign(model.robots.size(), Vec2::Zero());
+  m->gripper_xy.assign(model.robots.size(), Vec2::Zero());
   const size_t obstacles = model.obstacles.size();
   m->obstacle_xy.assign(obstacles, Vec2::Zero());
   m->obstacle_cs.assign(obstacles, Vec2(1, 0));
@@ -47,6 +48,7 @@ void ReadPoses(const Model& model, const PhysicsWorld& physics, Media* m) {
   for (int i = 0; i < n; ++i) {
     const Pose2 p = physics.RobotPose(i);
     m->body_xy[i] = Vec2(p.x, p.y);
+    m->gripper_xy[i] = physics.GripperDiscPoint(i);
     m->rab_pos[i] = Vec3(p.x, p.y, model.robots[i].z + footbot::kRabElevation);
     m->rab_yaw[i] = p.yaw;
   }

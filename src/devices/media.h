@@ -29,6 +29,7 @@ struct Media {
   // ---- occluders this tick, for RAB and cameras: exact circle/box tests that decide what
   // one Box2D ray would (PhysicsWorld::CastRay), without walking Box2D's tree per ray.
   std::vector<Vec2> body_xy;            // every robot body (dead ones too)
+  std::vector<Vec2> gripper_xy;         // its gripper disc's centre (radius kGripperRadius)
   std::vector<Vec2> obstacle_xy;        // every box/cylinder centre
   std::vector<Vec2> obstacle_cs;        // cos, sin of its yaw
   std::vector<double> obstacle_radius;  // bounding circle (m)
