@@ -14,6 +14,12 @@ double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a,
                                        : BoxEntry(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
 }
 
+bool ObstacleSpan(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b, double* t0, double* t1) {
+  return o.kind == ShapeKind::Cylinder
+             ? CircleSpan(a, b, m.obstacle_xy[k], o.radius, t0, t1)
+             : BoxSpan(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2, t0, t1);
+}
+
 void CoverObstacles(const Vec2& lo, const Vec2& hi, double cell, double slack_cells, const Media& m, UniformGrid* g) {
   const size_t obstacles = m.obstacle_radius.size();
   g->CoverBox(lo, hi, cell, 4 * obstacles + 64);
