@@ -2,10 +2,12 @@
 
 Foot-bots grip red LED cylinders that the loop functions scattered with add_entity and carry
 them into the black zone; the loop functions turn those that arrived blue (set_led_color) and
-count them into metrics.json. At the file's seed, all 12 arrive well within 1000 ticks (tick 818
-when this test was written); the test asks for 10, so that a harmless change in the dynamics
-does not fail it, and checks the mechanisms: recolouring shows in the recording, the robots'
-own counters read through r:lua_global reach the metrics, and threads change nothing.
+count them into metrics.json. The count after 1000 ticks depends much on the seed: over seeds
+1-24 it ranged 5-12 (mean 9.1) before the sensors were made ARGoS's (issue 38) and 1-12 (mean
+8.7) after; at the file's seed it was 12, then 9 (cylinders left in the zone can be pushed out
+again). The test asks for 8, so that a harmless change in the dynamics does not fail it, and
+checks the mechanisms: recolouring shows in the recording, the robots' own counters read
+through r:lua_global reach the metrics, and threads change nothing.
 
 The runs need the binary: set ESSAIM to its path (ctest does); without it they are skipped.
 """
@@ -62,7 +64,7 @@ def movable_leds(path):
 def test_robots_cluster_the_cylinders_in_the_zone(recorded):
     _, summary, m = recorded
     assert m["cylinders"] == 12
-    assert m["in_zone"] >= 10, m
+    assert m["in_zone"] >= 8, m
     ticks = m["delivery_ticks"]
     assert len(ticks) >= m["in_zone"] and ticks == sorted(ticks) and m["first_delivery_tick"] == ticks[0]
     if m["in_zone"] == 12:
