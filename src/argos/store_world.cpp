@@ -161,7 +161,7 @@ bool StoreWorld::Add(const ArgosBody& body, ArgosRef* added, std::string* error)
   if (error->empty() && def.movable && !(def.mass > 0)) *error = "mass must be > 0 for a movable object";
   if (error->empty() && !def.led_medium.empty()) *error = MediumProblem(def.led_medium);
   if (error->empty()) *error = entities_.ObstacleProblemNow(def);
-  if (error->empty()) *error = entities_.RoomProblem();
+  if (error->empty()) *error = entities_.RoomProblem(false);
   if (!error->empty()) return false;
   const EntityRef e = entities_.AddObstacle(def);
   *added = {static_cast<int>(e.kind), e.serial};
@@ -176,7 +176,7 @@ bool StoreWorld::Add(const ArgosLight& light, ArgosRef* added, std::string* erro
   if (entities_.HasId(def.id)) *error = "id '" + def.id + "' is already used";
   if (error->empty() && !(def.intensity >= 0)) *error = "intensity must be >= 0";
   if (error->empty() && !def.medium.empty()) *error = MediumProblem(def.medium);
-  if (error->empty()) *error = entities_.RoomProblem();
+  if (error->empty()) *error = entities_.RoomProblem(false);
   if (!error->empty()) return false;
   const EntityRef e = entities_.AddLight(def);
   *added = {static_cast<int>(e.kind), e.serial};

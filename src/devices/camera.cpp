@@ -1,14 +1,14 @@
 // Colored-blob omnidirectional camera, rot_z_only (as ARGoS's). Looks up the lit LEDs of
 // the LED field's grid in the square |dx|, |dy| < z_cam·tan(aperture) around the robot.
+// ARGoS sees an LED whose height above the camera is less than the camera's own height
+// (LED z − camera z < camera z: up to twice the camera's height, 0.577 m on the floor).
 //
-// Occlusion in 2D: ARGoS casts a 3D ray from the camera (0.2887 m up) down to the LED; we
-// cast one planar ray from the robot's centre to the LED at the LED's height, ignoring
-// the robot itself. Anything reaching that height in between hides the LED: other robots
-// hide ring LEDs (z 0.085) but never beacons (z 0.174 > body height 0.147), a robot's
-// own body hides its far-side ring LEDs. This is a little more occluding than ARGoS's
-// descending ray (see docs/compatibility.md). An LED on top of its own box/cylinder is
-// not hidden by that carrier. The ray is decided by exact circle/box tests on the media's
-// grids (what PhysicsWorld::CastRay would answer, without walking Box2D's tree).
+// Occlusion in 3D, by ARGoS's ray rule: the segment from the camera (0.2887 m above the
+// robot) to the LED against every shape's heights where it enters the shape or crosses its
+// top (camera_occlusion.cpp), the camera robot's own shapes excepted. So an LED behind a low
+// box or another robot may be seen over it, a light inside a wall is hidden, and a robot's
+// own body and gripper disc hide its LEDs on the far side: what ARGoS shows, measured on
+// every blob of tests/fidelity's scenes.
 #include <algorithm>
 #include <cmath>
 
@@ -29,15 +29,16 @@ void SenseCamera(const SenseContext& ctx, const DeviceConfig& cfg, const RobotDe
   if (!(half > 0)) return;
   const double camera_z = def.z + footbot::kCameraElevation;
   const double noise = cfg.params.noise_std_dev;
-  const Vec2 eye(pose.x, pose.y);
+  const Vec3 eye(pose.x, pose.y, camera_z);
   media.led_grid.ForEachInBox(pose.x - half, pose.y - half, pose.x + half, pose.y + half, [&](int li) {
     const LitLed& led = media.leds[li];
     if (led.robot == self || led.medium != medium) return;
     Vec2 rel(led.pos.x() - pose.x, led.pos.y() - pose.y);
-    if (std::abs(rel.x()) >= half || std::abs(rel.y()) >= half || led.pos.z() >= camera_z) return;
-    // An LED on (or above) the top of its own box/cylinder is not hidden by it.
+    if (std::abs(rel.x()) >= half || std::abs(rel.y()) >= half || !(led.pos.z() - camera_z < camera_z)) return;
+    // An LED on (or above) the top of its own box or cylinder is not hidden by it: where it
+    // sits exactly on the top, ARGoS's answer turns on the rounding of one plane crossing.
     const int carrier = led.obstacle >= 0 && led.pos.z() >= media.obstacle_top[led.obstacle] ? led.obstacle : -1;
-    if (CameraRayBlocked(ctx.model, media, eye, led.pos.head<2>(), led.pos.z(), self, carrier)) return;
+    if (CameraRayBlocked(ctx.model, media, eye, led.pos, self, carrier)) return;
     Blob b;  // holds the planar vector until noise and conversion below
     b.distance = rel.x();
     b.angle = rel.y();

@@ -1,6 +1,7 @@
-// What hides a lit LED from a camera: one planar ray from the camera robot to the LED,
-// decided by exact circle and box tests on grids of the bodies and obstacles (what
-// PhysicsWorld::CastRay would answer, without walking Box2D's tree per ray).
+// What hides a lit LED from a camera: the segment from the camera to the LED, in 3D, meets
+// a shape's volume (CameraRayBlocked), decided by exact circle and box tests on grids of
+// the bodies, their gripper discs and the obstacles.
+#include <algorithm>
 #include <cmath>
 
 #include "devices/media.h"
@@ -43,20 +44,46 @@ void FileCameraOccluders(Media* m) {
       [&](int k) { return Vec2(m->obstacle_xy[k].array() + m->obstacle_radius[k]); });
 }
 
-bool CameraRayBlocked(const Model& model, const Media& m, const Vec2& a, const Vec2& b, double z, int exclude_robot,
+namespace {
+/// Whether a shape hides the 3D segment from -> to, by the rule of ARGoS's ray queries: the
+/// segment's ground projection enters the footprint at fraction t0 (from outside: one that
+/// starts inside meets nothing) and leaves it at t1; it hits where it enters if its height
+/// there is within the shape's [bottom, top]; if it enters above the top, where it crosses the
+/// top's plane, if that lies over the footprint (before t1). Bottom faces are not tested,
+/// as in ARGoS. A light inside a wall is so hidden, and a robot's far-side LEDs by its top.
+bool HidesLikeArgos(double t0, double t1, const Vec3& from, const Vec3& to, double bottom, double top) {
+  if (!(t0 > 0)) return false;
+  const double dz = to.z() - from.z();
+  const double z0 = from.z() + dz * t0;
+  if (z0 >= bottom && z0 <= top) return true;
+  if (z0 < top || !(dz < 0)) return false;  // below the bottom, or rising away from the top
+  return (top - from.z()) / dz <= t1;
+}
+}  // namespace
+
+bool CameraRayBlocked(const Model& model, const Media& m, const Vec3& from, const Vec3& to, int exclude_robot,
                       int skip_obstacle) {
+  const Vec2 a = from.head<2>(), b = to.head<2>();
   const Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-  if (z >= 0 && z <= footbot::kHeight) {  // robots reach this height (PhysicsWorld::CastRay)
-    const double r = footbot::kRadius;
-    auto hides = [&](int j) { return j != exclude_robot && CircleEntry(a, b, m.body_xy[j], r) <= 1; };
-    if (m.camera_body_grid.AnyInBox(lo.x() - r, lo.y() - r, hi.x() + r, hi.y() + r, hides)) return true;
-  }
+  double t0, t1;
+  // A gripper disc lies within the body radius plus its own of its robot's centre.
+  const double reach = footbot::kRadius + kGripperRadius;
+  auto robot_hides = [&](int j) {
+    if (j == exclude_robot) return false;
+    const double bottom = model.robots[j].z, top = bottom + footbot::kHeight;
+    return (CircleSpan(a, b, m.body_xy[j], footbot::kRadius, &t0, &t1) &&
+            HidesLikeArgos(t0, t1, from, to, bottom, top)) ||
+           (CircleSpan(a, b, m.gripper_xy[j], kGripperRadius, &t0, &t1) &&
+            HidesLikeArgos(t0, t1, from, to, bottom, top));
+  };
+  if (m.camera_body_grid.AnyInBox(lo.x() - reach, lo.y() - reach, hi.x() + reach, hi.y() + reach, robot_hides))
+    return true;
   if (m.obstacle_xy.empty()) return false;
   // Obstacles sit in every cell they overlap.
   return m.camera_obstacle_grid.AnyInBox(lo.x(), lo.y(), hi.x(), hi.y(), [&](int k) {
     const ObstacleDef& o = model.obstacles[k];
-    if (k == skip_obstacle || z < o.z || z > o.z + o.height) return false;
-    return ObstacleEntry(o, m, k, a, b) <= 1;
+    return k != skip_obstacle && ObstacleSpan(o, m, k, a, b, &t0, &t1) &&
+           HidesLikeArgos(t0, t1, from, to, o.z, o.z + o.height);
   });
 }
 

@@ -45,18 +45,28 @@ double Cast(const PhysicsWorld& physics, const RayCandidates& near_shapes, const
   return hit.distance > min ? hit.distance * 100 : -1;
 }
 
-/// Sensor k's angle on the platform at rotation `theta` (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
-double SensorAngle(double theta, int k) {
-  double a = theta;
-  if (k == 1)
-    a = theta + kPi / 2;
-  else if (k == 2)
-    a = theta + kPi;
-  else if (k == 3)
-    a = theta - kPi / 2;
-  // WrapSigned's result without its fmod in the common case: for π < a < 2π, fmod(a, 2π) is a.
-  if (a > kPi && a < kTwoPi) return a - kTwoPi;
-  return WrapSigned(a);
+/// ARGoS's signed normalisation of an angle (CRadians::SignedNormalize): whole turns off
+/// until it lies in [-π, π], both ends kept. Applied after every step of the sums below, as
+/// ARGoS does, so that a ray ARGoS reports at -π is reported at -π here, not at +π.
+double SignedNormalize(double a) {
+  while (a > kPi) a -= kTwoPi;
+  while (a < -kPi) a += kTwoPi;
+  return a;
+}
+
+/// The four sensors' angles on the platform at rotation `theta`, summed as ARGoS sums them:
+/// θ, then a quarter turn added three times (k = 0..3: θ, θ + π/2, θ + π, θ − π/2).
+void PositionAngles(double theta, double angle[4]) {
+  angle[0] = SignedNormalize(theta);
+  for (int k = 1; k < 4; ++k) angle[k] = SignedNormalize(angle[k - 1] + kPi / 2);
+}
+
+/// Sensor k's first ray of a sweep from platform rotation `start`, summed as ARGoS does.
+double SweepStartAngle(double start, int k) {
+  if (k == 0) return SignedNormalize(start);
+  if (k == 1) return SignedNormalize(start + kPi / 2);
+  if (k == 2) return SignedNormalize(start + kPi);
+  return SignedNormalize(start + kPi / 2 + kPi);
 }
 
 void Insert(Readings& rd, int k, double angle, double d) {
@@ -68,8 +78,10 @@ void Insert(Readings& rd, int k, double angle, double d) {
 
 /// The four sensors at platform angle `theta`.
 void CastAll(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, double theta) {
+  double angles[4];
+  PositionAngles(theta, angles);
   for (int k = 0; k < 4; ++k) {
-    const double angle = SensorAngle(theta, k);
+    const double angle = angles[k];
     const double a = p.yaw + angle;
     const bool shortRange = (k % 2) == 0;
     const double d = Cast(physics, robot.scanner_candidates, p, std::cos(a), std::sin(a),
@@ -91,7 +103,8 @@ void Sweep(const PhysicsWorld& physics, const Pose2& p, RobotState& robot, doubl
     const bool shortRange = (k % 2) == 0;
     double c[kSweepRays], s[kSweepRays];
     for (int i = 0; i < kSweepRays; ++i) {
-      angle[i][k] = SensorAngle(start + i * span, k);
+      // Each ray one span on from the previous one (ARGoS adds the span, then normalises).
+      angle[i][k] = i == 0 ? SweepStartAngle(start, k) : SignedNormalize(angle[i - 1][k] + span);
       const double a = p.yaw + angle[i][k];
       c[i] = std::cos(a);
       s[i] = std::sin(a);

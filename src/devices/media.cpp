@@ -14,6 +14,12 @@ double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a,
                                        : BoxEntry(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2);
 }
 
+bool ObstacleSpan(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b, double* t0, double* t1) {
+  return o.kind == ShapeKind::Cylinder
+             ? CircleSpan(a, b, m.obstacle_xy[k], o.radius, t0, t1)
+             : BoxSpan(a, b, m.obstacle_xy[k], m.obstacle_cs[k], o.size_x / 2, o.size_y / 2, t0, t1);
+}
+
 void CoverObstacles(const Vec2& lo, const Vec2& hi, double cell, double slack_cells, const Media& m, UniformGrid* g) {
   const size_t obstacles = m.obstacle_radius.size();
   g->CoverBox(lo, hi, cell, 4 * obstacles + 64);
@@ -26,6 +32,7 @@ namespace {
 /// Per-body buffers, and what of each obstacle does not change: its top, its bounding circle.
 void InitBodies(const Model& model, Media* m) {
   m->body_xy.assign(model.robots.size(), Vec2::Zero());
+  m->gripper_xy.assign(model.robots.size(), Vec2::Zero());
   const size_t obstacles = model.obstacles.size();
   m->obstacle_xy.assign(obstacles, Vec2::Zero());
   m->obstacle_cs.assign(obstacles, Vec2(1, 0));
@@ -47,6 +54,7 @@ void ReadPoses(const Model& model, const PhysicsWorld& physics, Media* m) {
   for (int i = 0; i < n; ++i) {
     const Pose2 p = physics.RobotPose(i);
     m->body_xy[i] = Vec2(p.x, p.y);
+    m->gripper_xy[i] = physics.GripperDiscPoint(i);
     m->rab_pos[i] = Vec3(p.x, p.y, model.robots[i].z + footbot::kRabElevation);
     m->rab_yaw[i] = p.yaw;
   }

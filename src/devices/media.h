@@ -29,6 +29,7 @@ struct Media {
   // ---- occluders this tick, for RAB and cameras: exact circle/box tests that decide what
   // one Box2D ray would (PhysicsWorld::CastRay), without walking Box2D's tree per ray.
   std::vector<Vec2> body_xy;            // every robot body (dead ones too)
+  std::vector<Vec2> gripper_xy;         // its gripper disc's centre (radius kGripperRadius)
   std::vector<Vec2> obstacle_xy;        // every box/cylinder centre
   std::vector<Vec2> obstacle_cs;        // cos, sin of its yaw
   std::vector<double> obstacle_radius;  // bounding circle (m)
@@ -80,10 +81,11 @@ struct SlotRunner {
 void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media,
                  const SlotRunner& runner = SlotRunner());
 
-/// Whether a ray from -> to at height z meets a robot body (not `exclude_robot`) or an
-/// obstacle spanning z (not `skip_obstacle`): CastRay's rule, via the camera grids.
-bool CameraRayBlocked(const Model& model, const Media& media, const Vec2& from, const Vec2& to, double z,
-                      int exclude_robot, int skip_obstacle);
+/// Whether a shape hides the 3D segment from -> to, by ARGoS's ray rule (its entry point's
+/// height, or its crossing of the shape's top): a robot body or gripper disc (not robot
+/// `exclude_robot`'s), a box or a cylinder (not `skip_obstacle`). Via the camera grids.
+bool CameraRayBlocked(const Model& model, const Media& media, const Vec3& from, const Vec3& to, int exclude_robot,
+                      int skip_obstacle);
 
 /// World position of foot-bot LED `i` (0..12: ring 0..11 then beacon) for a robot at
 /// `pose`, base height `z`, turret rotation `turret` (rad; the ring rides on the turret).
@@ -100,6 +102,8 @@ int MediumIndex(const std::vector<Def>& media, const std::string& id) {
 }
 /// Where segment a -> b enters obstacle k at its pose this tick (CircleEntry or BoxEntry).
 double ObstacleEntry(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b);
+/// The part of segment a -> b over obstacle k's footprint (CircleSpan or BoxSpan).
+bool ObstacleSpan(const ObstacleDef& o, const Media& m, int k, const Vec2& a, const Vec2& b, double* t0, double* t1);
 /// A grid over [lo, hi] of the obstacles, each in every cell its bounding disc, widened by
 /// `slack_cells` cells, overlaps (a box's margins need half a cell).
 void CoverObstacles(const Vec2& lo, const Vec2& hi, double cell, double slack_cells, const Media& m, UniformGrid* g);

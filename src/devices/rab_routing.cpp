@@ -1,10 +1,11 @@
 // Range and bearing: who hears whom. Candidates come from a uniform grid of all robot
 // bodies with cells of the largest rab_range (a device looks at the 3x3 cells around it:
-// never all pairs). Occlusion uses exact circle and box tests against the bodies and
-// obstacles near the device: what one Box2D ray per pair would find, without walking
-// Box2D's tree for every pair. Devices are routed in parallel (each lists its partners
-// b > a with its thread's scratch), then one serial pass fills the inboxes in ascending a:
-// the same inboxes, in the same order, at any thread count.
+// never all pairs). Occlusion uses exact circle and box tests against the bodies, their
+// gripper discs and the obstacles near the device: what one ray per pair would find, as
+// ARGoS (the first shape met, the sender's own aside, must be the partner's), without
+// walking Box2D's tree for every pair. Devices are routed in parallel (each lists its
+// partners b > a with its thread's scratch), then one serial pass fills the inboxes in
+// ascending a: the same inboxes, in the same order, at any thread count.
 #include "devices/rab_routing.h"
 
 #include <algorithm>
@@ -99,20 +100,29 @@ void GatherObstacles(const Model& model, const Media& m, const Device& d, RabScr
 int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
   const double near = m.rab_max_range + footbot::kRadius;  // a body touching a segment from a is this close
   const double near2 = near * near;
+  // A gripper disc lies within the body radius plus its own of its robot's centre.
+  const double reach = near + kGripperRadius;
   const bool body_occluders = d.occlusions && d.bodies_occlude;
   scratch.candidates.clear();
   int occluders = 0;
-  m.rab_grid.ForEachInBox(d.xy.x() - near, d.xy.y() - near, d.xy.x() + near, d.xy.y() + near, [&](int j) {
-    const Vec2& xj = m.body_xy[j];
-    const double sx = xj.x() - d.xy.x(), sy = xj.y() - d.xy.y();
-    const double n2 = sx * sx + sy * sy;
-    if (n2 > near2 || j == d.index) return;
-    if (j > d.index && m.rab_member[j]) scratch.candidates.push_back(j);
-    const double tangent2 = n2 - kBodyRadius2;
-    if (!body_occluders || tangent2 < 0) return;
+  auto add_occluder = [&](const Vec2& centre, double radius2, int j) {
+    const double sx = centre.x() - d.xy.x(), sy = centre.y() - d.xy.y();
+    const double tangent2 = sx * sx + sy * sy - radius2;
+    if (tangent2 < 0 || tangent2 > near2) return;
     const double q = tangent2 * d.per_bucket;
     const int bucket = q < rab::kOccluderBuckets ? static_cast<int>(q) : rab::kOccluderBuckets - 1;
     scratch.unsorted[occluders++] = {tangent2, sx, sy, j, bucket};
+  };
+  m.rab_grid.ForEachInBox(d.xy.x() - reach, d.xy.y() - reach, d.xy.x() + reach, d.xy.y() + reach, [&](int j) {
+    if (j == d.index) return;  // the sender's own shapes never hide (ARGoS skips its body)
+    const Vec2& xj = m.body_xy[j];
+    const double sx = xj.x() - d.xy.x(), sy = xj.y() - d.xy.y();
+    const double n2 = sx * sx + sy * sy;
+    if (n2 <= near2 && j > d.index && m.rab_member[j]) scratch.candidates.push_back(j);
+    if (!body_occluders) return;
+    // The body, and the gripper disc ahead of it (a third robot's hides a pair too).
+    if (n2 <= near2) add_occluder(xj, kBodyRadius2, j);
+    add_occluder(m.gripper_xy[j], kGripperRadius * kGripperRadius, j);
   });
   return occluders;
 }
@@ -221,13 +231,15 @@ bool HiddenByObstacle(const Model& model, const Media& m, const Device& d, const
   return false;
 }
 
-Pair MakePair(const Device& d, int partner, const Vec3& partner_pos) {
+Pair MakePair(const Media& m, const Device& d, int partner, const Vec3& partner_pos) {
   Pair p;
   p.partner = partner;
   p.from = d.xy;
   p.to = partner_pos.head<2>();
   const double len = (p.to - p.from).norm();
   p.t_partner = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+  // The partner's gripper disc, when it faces the device, is the partner's first shape met.
+  p.t_partner = std::min(p.t_partner, CircleEntry(p.from, p.to, m.gripper_xy[partner], kGripperRadius));
   p.dx = p.to.x() - p.from.x();
   p.dy = p.to.y() - p.from.y();
   p.dd = p.dx * p.dx + p.dy * p.dy;
@@ -249,7 +261,7 @@ void Deliverable(const Model& model, const Media& m, const Device& d, int occlud
     const bool b_hears_a = dist < da.rab_range;
     if (!a_hears_b && !b_hears_a) continue;
     if (d.occlusions) {
-      const Pair p = MakePair(d, b, pb);
+      const Pair p = MakePair(m, d, b, pb);
       if (d.bodies_occlude && HiddenByBody(d, p, occluders, scratch)) continue;
       if (HiddenByObstacle(model, m, d, p, scratch)) continue;
     }
@@ -298,8 +310,8 @@ void Deliver(Media* m) {
 void SizeScratch(const Model& model, RabScratch* scratch) {
   const size_t n = model.robots.size();
   scratch->candidates.reserve(n);
-  scratch->unsorted.resize(n);
-  scratch->occluders.resize(n);
+  scratch->unsorted.resize(2 * n);  // bodies and gripper discs
+  scratch->occluders.resize(2 * n);
   scratch->bucket_start.assign(rab::kOccluderBuckets + 1, 0);
   scratch->sector_blocker.assign(rab::kProbeSectors, -1);
   scratch->near_obstacles.reserve(rab::kFewObstacles);

@@ -12,13 +12,13 @@ namespace essaim {
 struct Media;
 struct SlotRunner;
 
-/// A body that may hide a partner from one device: the parts of CircleEntry that do not
-/// depend on the partner, computed once per device.
+/// A body or gripper disc that may hide a partner from one device: the parts of CircleEntry
+/// that do not depend on the partner, computed once per device.
 struct RabOccluder {
   double tangent2;            // m², |offset|² - r²: the squared tangent length from the device
-  double offset_x, offset_y;  // m, body centre minus device
-  int body;
-  int bucket;  // of tangent2, see SortOccluders
+  double offset_x, offset_y;  // m, circle centre minus device
+  int body;                   // the robot it belongs to
+  int bucket;                 // of tangent2, see SortOccluders
 };
 
 /// One thread's working buffers for the devices it routes (sized once, reused).

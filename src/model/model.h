@@ -15,16 +15,18 @@ namespace essaim {
 
 /// Foot-bot constants, as ARGoS's foot-bot entity and its dynamics2d model define them.
 namespace footbot {
-constexpr double kRadius = 0.085036758;            // m
-constexpr double kHeight = 0.146899733;            // m
-constexpr double kMass = 1.6;                      // kg
-constexpr double kAxisLength = 0.14;               // m between the wheels
-constexpr double kMaxForce = 15.0;                 // N
-constexpr double kMaxTorque = 150.0;               // N·m
-constexpr double kRabElevation = 0.1;              // m
-constexpr double kProximityElevation = 0.06;       // m
-constexpr double kScannerElevation = 0.123199866;  // m
-constexpr double kCameraElevation = 0.288699733;   // m
+constexpr double kRadius = 0.085036758;             // m
+constexpr double kHeight = 0.146899733;             // m
+constexpr double kBaseMass = 1.6;                   // kg
+constexpr double kGripperMass = kBaseMass / 20;     // kg, a second body pinned to the base's centre
+constexpr double kMass = kBaseMass + kGripperMass;  // kg, what the wheels' force moves
+constexpr double kAxisLength = 0.14;                // m between the wheels
+constexpr double kMaxForce = 15.0;                  // N
+constexpr double kMaxTorque = 150.0;                // N·m
+constexpr double kRabElevation = 0.1;               // m
+constexpr double kProximityElevation = 0.06;        // m
+constexpr double kScannerElevation = 0.123199866;   // m
+constexpr double kCameraElevation = 0.288699733;    // m
 constexpr int kLedCount = 13;
 }  // namespace footbot
 

@@ -16,6 +16,9 @@ namespace essaim {
 namespace {
 constexpr double kMaxStaticPiece = 1.0;    // m, longest side of one static box fixture
 constexpr double kMaxStaticPieces = 4096;  // fixtures per static box (longer pieces beyond)
+/// m, how far neighbouring pieces of a tiled wall overlap: far above their float rounding
+/// (~6e-8 m at arena scale), far below anything a sensor resolves.
+constexpr double kSeamOverlap = 1e-5;
 
 /// m: the ray grid's cells, a side of about three foot-bot diameters. A scanner's disc
 /// (1.51 m) spans 7 × 7 cells, the proximity ring's (0.19 m) one to four; smaller cells
@@ -24,6 +27,12 @@ constexpr double kRayCellSize = 0.5;
 }  // namespace
 
 namespace {
+/// The friction a fixture holds for ARGoS's coefficient `argos`. A contact's friction is
+/// Chipmunk's product of the two shapes' coefficients in ARGoS (foot-bot on wall 0.7 × 0.1 =
+/// 0.07) and Box2D's square root of the product of the two fixtures'; fixtures holding the
+/// squares give the product in every pair, every region, at no cost per contact.
+float ContactFriction(double argos) { return static_cast<float>(argos * argos); }
+
 /// One Box2D world per region, each with its ground body first.
 void MakeRegionWorlds(size_t count, std::vector<PhysicsWorld::Impl::Region>* regions) {
   regions->resize(count);
@@ -67,14 +76,16 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   b2BodyDef bd;
   bd.type = b2_dynamicBody;
   bd.position.Set(static_cast<float>(r.pose.x), static_cast<float>(r.pose.y));
-  bd.angle = static_cast<float>(r.pose.yaw);
+  // ARGoS turns the start yaw into a quaternion and back (-π..π) before its body takes it:
+  // a robot placed at 300° starts at -60°, and its orientation quaternion says so.
+  bd.angle = static_cast<float>(WrapSigned(r.pose.yaw));
   bd.allowSleep = false;  // ARGoS never sleeps robots; keeps the servo always live
   b2Body* body = w.CreateBody(&bd);
   b2CircleShape circle;
   circle.m_radius = static_cast<float>(footbot::kRadius);
   b2FixtureDef fd;
   fd.shape = &circle;
-  fd.friction = 0.7f;
+  fd.friction = ContactFriction(0.7);
   fd.restitution = 0;
   fd.density = static_cast<float>(footbot::kMass / (kPi * footbot::kRadius * footbot::kRadius));
   fd.userData.pointer = PackTag(BodyKind::Robot, i);
@@ -82,9 +93,11 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   b2MassData md;
   md.mass = static_cast<float>(footbot::kMass);
   md.center.SetZero();
-  // ARGoS quirk 1: I = m (2r)^2 / 2.
-  md.I = static_cast<float>(footbot::kMass * 4 * footbot::kRadius * footbot::kRadius / 2);
+  // ARGoS's base and gripper bodies turn together (a gear joint) and both have the moment of
+  // the base's mass with quirk 1, I = m (2r)^2 / 2: twice that about the centre.
+  md.I = static_cast<float>(2 * footbot::kBaseMass * 4 * footbot::kRadius * footbot::kRadius / 2);
   body->SetMassData(&md);
+  AddGripperDisc(body, i);
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force
@@ -106,6 +119,38 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   impl_->controls.push_back(control);
 }
 
+namespace {
+/// The disc ahead of the turret at rotation `turret`, in the robot's frame.
+b2Vec2 GripperDiscCentre(double turret) {
+  return b2Vec2(static_cast<float>(footbot::kRadius * std::cos(turret)),
+                static_cast<float>(footbot::kRadius * std::sin(turret)));
+}
+
+/// Robot `body`'s gripper disc (it has one fixture of kind Gripper), or null.
+b2Fixture* GripperDisc(b2Body* body) {
+  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
+    if (TagKind(f->GetUserData().pointer) == BodyKind::Gripper) return f;
+  return nullptr;
+}
+}  // namespace
+
+void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
+  // A fixture on the robot's own body rather than ARGoS's second body pinned to it: the two
+  // move as one there, and a fixture costs no joint. A sensor that collides with nothing
+  // (ARGoS marks the gripper shape a sensor: robots still touch walls with their body), of
+  // density 0: the body's mass set above stays as it is.
+  b2CircleShape disc;
+  disc.m_radius = static_cast<float>(kGripperRadius);
+  disc.m_p = GripperDiscCentre(0);
+  b2FixtureDef fd;
+  fd.shape = &disc;
+  fd.density = 0;
+  fd.isSensor = true;
+  fd.filter.maskBits = 0;  // no contact is ever made for it, not even a sensor's
+  fd.userData.pointer = PackTag(BodyKind::Gripper, index);
+  AsBody(robot_body)->CreateFixture(&fd);
+}
+
 int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }
 
 int PhysicsWorld::RobotRegion(int robot) const { return impl_->RegionOfBody(AsBody(robots_[robot])); }
@@ -114,20 +159,41 @@ namespace {
 /// A long static wall's bounding box overlaps most of the tree and makes every ray cast
 /// visit it (measured: 1.67 µs per ray with four 32 m walls, 0.46 µs split). Tiled into
 /// pieces of at most kMaxStaticPiece, same body and tag: same hits, same distances. At
-/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures.
+/// most kMaxStaticPieces pieces: a 1 km square would be a million fixtures. Neighbouring
+/// pieces overlap by kSeamOverlap: their float vertices, rounded apart, left gaps of ~6e-8 m
+/// that a ray along a seam went through into the wall (the outer faces do not move).
 void TileStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
   double piece = kMaxStaticPiece;
   while (std::ceil(o.size_x / piece) * std::ceil(o.size_y / piece) > kMaxStaticPieces) piece *= 2;
-  int nx = static_cast<int>(std::ceil(o.size_x / piece));
-  int ny = static_cast<int>(std::ceil(o.size_y / piece));
-  float hx = static_cast<float>(o.size_x / nx / 2), hy = static_cast<float>(o.size_y / ny / 2);
+  const int nx = static_cast<int>(std::ceil(o.size_x / piece));
+  const int ny = static_cast<int>(std::ceil(o.size_y / piece));
+  // Piece k of n along a side of length `size`: its [lo, hi], inner ends widened.
+  auto span = [](double size, int n, int k, double* lo, double* hi) {
+    *lo = -size / 2 + size * k / n - (k > 0 ? kSeamOverlap : 0);
+    *hi = -size / 2 + size * (k + 1) / n + (k + 1 < n ? kSeamOverlap : 0);
+  };
   for (int ix = 0; ix < nx; ++ix)
     for (int iy = 0; iy < ny; ++iy) {
-      b2Vec2 c(static_cast<float>(-o.size_x / 2 + (2 * ix + 1) * hx),
-               static_cast<float>(-o.size_y / 2 + (2 * iy + 1) * hy));
-      poly->SetAsBox(hx, hy, c, 0);
+      double x0, x1, y0, y1;
+      span(o.size_x, nx, ix, &x0, &x1);
+      span(o.size_y, ny, iy, &y0, &y1);
+      poly->SetAsBox(static_cast<float>((x1 - x0) / 2), static_cast<float>((y1 - y0) / 2),
+                     b2Vec2(static_cast<float>((x0 + x1) / 2), static_cast<float>((y0 + y1) / 2)), 0);
       body->CreateFixture(fd);
     }
+}
+
+/// A long static box as two sets of fixtures: the whole box collides, tagged None (queries
+/// and rays pass it by), and its pieces, sensors that collide with nothing, are what rays and
+/// queries meet. Robots pressed on a wall overlap it a little, as ARGoS's do (1-2 mm); against
+/// pieces they caught on the next piece's corner at each seam, where ARGoS's slide on.
+void AddLongStaticBox(const ObstacleDef& o, b2Body* body, b2FixtureDef* fd, b2PolygonShape* poly) {
+  b2FixtureDef whole = *fd;
+  whole.userData.pointer = PackTag(BodyKind::None, 0);
+  body->CreateFixture(&whole);
+  fd->isSensor = true;
+  fd->filter.maskBits = 0;  // no contact is ever made for a piece
+  TileStaticBox(o, body, fd, poly);
 }
 
 /// The obstacle's box or circle fixture(s) on `body`, tagged with its index.
@@ -138,6 +204,12 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   double area;
   if (o.kind == ShapeKind::Box) {
     poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
+    // Box2D wraps polygons in a 1 cm skin (b2_polygonRadius) that collides but that rays do
+    // not see: a robot placed within 5 mm of a static box was pushed off it at the first
+    // step, where ARGoS leaves it. Without the skin a static box collides at its true
+    // faces, as ARGoS's does (its pieces too: TileStaticBox copies this shape). Movable
+    // boxes keep theirs: the issue was static ones, and box-on-box stacking relies on it.
+    if (!o.movable) poly.m_radius = 0;
     fd.shape = &poly;
     area = o.size_x * o.size_y;
   } else {
@@ -146,12 +218,12 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
     area = kPi * o.radius * o.radius;
   }
   // ARGoS: static friction 0.1, movable 0.7, no bounce.
-  fd.friction = o.movable ? 0.7f : 0.1f;
+  fd.friction = ContactFriction(o.movable ? 0.7 : 0.1);
   fd.restitution = 0;
   fd.density = o.movable ? static_cast<float>(o.mass / area) : 0.0f;
   fd.userData.pointer = PackTag(BodyKind::Obstacle, index);
   if (o.kind == ShapeKind::Box && !o.movable && std::max(o.size_x, o.size_y) > kMaxStaticPiece)
-    TileStaticBox(o, body, &fd, &poly);
+    AddLongStaticBox(o, body, &fd, &poly);
   else
     body->CreateFixture(&fd);
 }
@@ -217,7 +289,8 @@ void PhysicsWorld::RemoveObstacle(int index) {
   // Fixture tags carry the index: those after the removed one move down by one.
   for (size_t k = index; k < obstacles_.size(); ++k)
     for (b2Fixture* f = AsBody(obstacles_[k])->GetFixtureList(); f; f = f->GetNext())
-      f->GetUserData().pointer = PackTag(BodyKind::Obstacle, static_cast<int>(k));
+      if (TagKind(f->GetUserData().pointer) == BodyKind::Obstacle)  // not a long box's whole
+        f->GetUserData().pointer = PackTag(BodyKind::Obstacle, static_cast<int>(k));
 }
 
 void PhysicsWorld::SetObstaclePose(int index, const Pose2& pose) {
@@ -261,14 +334,43 @@ void StepRegion(void* ctx, int region) {
 }
 }  // namespace
 
+namespace {
+/// Moves a moving dynamic body by `h` seconds at its velocity (h < 0: back).
+void ShiftAlongVelocity(void* p, float h) {
+  b2Body* body = AsBody(p);
+  const b2Vec2 v = body->GetLinearVelocity();
+  const float w = body->GetAngularVelocity();
+  if (body->GetType() != b2_dynamicBody || (v.x == 0 && v.y == 0 && w == 0)) return;
+  body->SetTransform(body->GetPosition() + h * v, body->GetAngle() + h * w);
+}
+}  // namespace
+
+// ARGoS's engine (Chipmunk) moves each body at the start of a sub-step with the velocity the
+// sub-step before solved, then solves velocities; Box2D solves, then moves. So Box2D's pose
+// after a sub-step is Chipmunk's after the next one's move, and the two engines meet the same
+// contacts at the same places when Box2D's bodies are one sub-step ahead along their velocity.
+// Between ticks the bodies hold ARGoS's poses, which everything else reads (sensors, the
+// wheels' heading, loop functions); a tick shifts them ahead, steps, and shifts them back.
+void PhysicsWorld::ShiftDynamicBodies(float h) {
+  for (void* body : robots_) ShiftAlongVelocity(body, h);
+  for (void* body : obstacles_) ShiftAlongVelocity(body, h);
+}
+
 void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
-  const int regions = impl_->RegionCount();
-  if (regions == 1) {
-    RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), substeps};
+  const float h = static_cast<float>(dt / substeps);
+  ShiftDynamicBodies(h);
+  if (impl_->RegionCount() == 1) {
+    RegionSteps steps{&impl_->regions, h, substeps};
     StepRegion(&steps, 0);
-    ++impl_->shapes_moved;
-    return;
+  } else {
+    StepRegions(dt, substeps, runner);
   }
+  ShiftDynamicBodies(-h);
+  ++impl_->shapes_moved;
+}
+
+void PhysicsWorld::StepRegions(double dt, int substeps, const PhysicsRunner& runner) {
+  const int regions = impl_->RegionCount();
   SyncRegions(dt, runner);
   // The regions step one sub-step at a time, the ghosts following their bodies in between:
   // a ghost moves at its body's velocity of the sub-step's start, never a tick's.
@@ -281,7 +383,6 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
     else
       for (int r = 0; r < regions; ++r) StepRegion(&steps, r);
   }
-  ++impl_->shapes_moved;
 }
 
 Pose2 PhysicsWorld::RobotPose(int robot) const {
@@ -300,8 +401,9 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   ++impl_->shapes_moved;
   b2Body* b = AsBody(robots_[robot]);
   const b2Transform before = b->GetTransform();
-  const float turn = static_cast<float>(pose.yaw) - b->GetAngle();
-  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), static_cast<float>(pose.yaw));
+  const float yaw = static_cast<float>(WrapSigned(pose.yaw));  // as a start yaw (AddRobot)
+  const float turn = yaw - b->GetAngle();
+  b->SetTransform(b2Vec2(static_cast<float>(pose.x), static_cast<float>(pose.y)), yaw);
   b->SetLinearVelocity(b2Vec2(0, 0));
   b->SetAngularVelocity(0);
   // A held object moves with the robot instead of being dragged across the arena.
@@ -325,7 +427,7 @@ namespace {
 /// A shape's vertical extent (m): a robot's is the foot-bot's body, an obstacle's its own.
 void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const std::vector<double>& bottoms,
                 double* bottom, double* top) {
-  if (kind == BodyKind::Robot) {
+  if (kind == BodyKind::Robot || kind == BodyKind::Gripper) {
     *bottom = 0;
     *top = footbot::kHeight;
   } else {
@@ -338,7 +440,7 @@ void HeightSpan(BodyKind kind, int index, const std::vector<double>& tops, const
 /// obstacle, whose vertical extent contains z.
 bool ReachesHeight(BodyKind kind, int index, double z, int exclude_robot, const std::vector<double>& tops,
                    const std::vector<double>& bottoms) {
-  if (kind == BodyKind::None || (kind == BodyKind::Robot && index == exclude_robot)) return false;
+  if (kind == BodyKind::None || (kind != BodyKind::Obstacle && index == exclude_robot)) return false;
   double bottom, top;
   HeightSpan(kind, index, tops, bottoms, &bottom, &top);
   return z >= bottom && z <= top;
@@ -379,7 +481,8 @@ class GripQuery : public b2QueryCallback {
     uintptr_t tag = f->GetUserData().pointer;
     BodyKind kind = TagKind(tag);
     int index = TagIndex(tag);
-    if (kind == BodyKind::Robot && index == self_) return true;
+    if ((kind == BodyKind::Robot && index == self_) || kind == BodyKind::Gripper)
+      return true;                                                                         // grippers: not grippable
     if (kind == BodyKind::None || f->GetBody()->GetType() != b2_dynamicBody) return true;  // static: not grippable
     b2DistanceInput in;
     in.proxyA.Set(&centre_, 1, 0.0f);
@@ -494,7 +597,7 @@ void FileRayCircles(Impl* im) {
         c.r += kCircleSlack;
         if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
         const int index = TagIndex(tag);
-        if (kind == BodyKind::Robot) c.robot = index;
+        if (kind != BodyKind::Obstacle) c.robot = index;  // a robot's body or gripper disc
         HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
         c.fixture = f;
         circles.push_back(c);
@@ -716,6 +819,13 @@ Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
   return {b->GetPosition().x + footbot::kRadius * std::cos(a), b->GetPosition().y + footbot::kRadius * std::sin(a)};
 }
 
+Vec2 PhysicsWorld::GripperDiscPoint(int robot) const {
+  b2Body* b = AsBody(robots_[robot]);
+  const b2Fixture* disc = GripperDisc(b);
+  const b2Vec2 p = b2Mul(b->GetTransform(), static_cast<const b2CircleShape*>(disc->GetShape())->m_p);
+  return {p.x, p.y};
+}
+
 bool PhysicsWorld::TryGrip(int robot, double turret) {
   Impl::Grip& g = impl_->grips[robot];
   if (g.joint) return true;
@@ -753,6 +863,12 @@ void PhysicsWorld::Release(int robot) {
 }
 
 void PhysicsWorld::SetGripTurret(int robot, double turret) {
+  if (b2Fixture* disc = GripperDisc(AsBody(robots_[robot]))) {
+    // The broad-phase box follows at the next step (robots are always awake); the ray grid
+    // is refiled at the next query.
+    static_cast<b2CircleShape*>(disc->GetShape())->m_p = GripperDiscCentre(turret);
+    ++impl_->shapes_moved;
+  }
   Impl::Grip& g = impl_->grips[robot];
   if (!g.joint || turret == g.turret) return;
   g.turned += WrapSigned(turret - g.turret);  // unwrapped: a turret in speed mode may turn many times

@@ -11,7 +11,9 @@
 namespace essaim {
 
 /// What a ray or query touched.
-enum class BodyKind : int { None = 0, Robot = 1, Obstacle = 2 };
+/// Gripper: a foot-bot's gripper disc (index: its robot), which rays meet but nothing
+/// collides with (ARGoS's dynamics2d makes it a sensor shape).
+enum class BodyKind : int { None = 0, Robot = 1, Obstacle = 2, Gripper = 3 };
 
 /// What a robot's gripper holds (kind None: nothing).
 struct GripTarget {
@@ -20,8 +22,10 @@ struct GripTarget {
   bool Holding() const { return kind != BodyKind::None; }
 };
 
-/// Radius of the foot-bot gripper's contact disc, centred at the body radius in front of
-/// the turret (ARGoS's dynamics2d gripper sensor shape).
+/// Radius of the foot-bot gripper's disc, centred at the body radius in front of the
+/// turret, as tall as the body (ARGoS's dynamics2d gripper shape). Other robots' rays meet
+/// it (proximity, scanner, light, camera and range-and-bearing lines); it collides with
+/// nothing and has no mass of its own.
 constexpr double kGripperRadius = 0.01;  // m
 
 struct RayHit {
@@ -128,6 +132,8 @@ class PhysicsWorld {
   // robot state kept by devices/turret.cpp; physics only holds the joint.
   /// Centre of the gripper disc: body radius in direction yaw + turret.
   Vec2 GripperPoint(int robot, double turret) const;
+  /// Centre of the robot's gripper disc as the rays see it now (the turret last applied).
+  Vec2 GripperDiscPoint(int robot) const;
   /// If the robot holds nothing, grips the grippable shape (movable box or cylinder,
   /// another robot) overlapping its gripper disc — the deepest if several — with a joint
   /// that keeps it where it is relative to the turret, force and torque capped by
@@ -136,7 +142,8 @@ class PhysicsWorld {
   bool TryGrip(int robot, double turret);
   /// Lets go of what the robot holds (no-op if nothing).
   void Release(int robot);
-  /// Carries the held object round the robot's centre as the turret turns.
+  /// Turns the gripper disc with the turret, and carries the held object round the robot's
+  /// centre with it.
   void SetGripTurret(int robot, double turret);
   GripTarget Gripped(int robot) const;
 
@@ -149,6 +156,10 @@ class PhysicsWorld {
   /// Several regions, before a step: each body (with what it grips or is gripped by) moves
   /// to the region holding its centre, then ghosts are made, moved or dropped.
   void SyncRegions(double dt, const PhysicsRunner& runner);
+  /// Several regions, one tick: the sync, then each sub-step on every region at once.
+  void StepRegions(double dt, int substeps, const PhysicsRunner& runner);
+  /// Every moving dynamic body moved `h` seconds along its velocity (see Step).
+  void ShiftDynamicBodies(float h);
   /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
   void FollowGhosts(const PhysicsRunner& runner);
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
@@ -156,6 +167,8 @@ class PhysicsWorld {
   void* MoveGripGroupVoid(const GripTarget& t, int region);
   /// Robot `index`'s body and its servo, in the region holding its pose.
   void AddRobot(const RobotDef& robot, int index);
+  /// The gripper disc (kGripperRadius) on robot `index`'s body (a b2Body*), turret at 0.
+  static void AddGripperDisc(void* robot_body, int index);
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*
   std::vector<void*> obstacles_;  // b2Body*

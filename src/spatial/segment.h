@@ -27,4 +27,11 @@ inline double CircleEntry(const Vec2& from, const Vec2& to, const Vec2& center, 
 /// Same for a box of half sizes (hx, hy), yaw (cos, sin) = cs (Box2D's polygon ray cast).
 double BoxEntry(const Vec2& from, const Vec2& to, const Vec2& center, const Vec2& cs, double hx, double hy);
 
+/// The part of segment from -> to that lies inside a circle: its fractions [*t0, *t1]
+/// within [0, 1] (a segment starting or ending inside included); false when there is none.
+bool CircleSpan(const Vec2& from, const Vec2& to, const Vec2& center, double radius, double* t0, double* t1);
+/// Same for a box of half sizes (hx, hy), yaw (cos, sin) = cs.
+bool BoxSpan(const Vec2& from, const Vec2& to, const Vec2& center, const Vec2& cs, double hx, double hy, double* t0,
+             double* t1);
+
 }  // namespace essaim

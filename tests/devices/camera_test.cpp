@@ -111,20 +111,26 @@ TEST(Camera, BoxLedsAndLights) {
       "medium=\"leds\"/>"
       "<light id=\"l1\" position=\"-0.3,-0.2,0.2\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" "
       "medium=\"other\"/>"
-      "<light id=\"l2\" position=\"0.3,0.3,0.5\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" medium=\"leds\"/>";
+      "<light id=\"l2\" position=\"0.3,0.3,0.5\" orientation=\"0,0,0\" color=\"red\" intensity=\"1\" medium=\"leds\"/>"
+      "<light id=\"l3\" position=\"-0.3,0.3,0.6\" orientation=\"0,0,0\" color=\"green\" intensity=\"1\" "
+      "medium=\"leds\"/>";
   Scene s = Load(d, CamExperiment(Bot("cam", 0, 0, 0, "look") + box + lights, CamController("look", "look.lua")));
   ASSERT_TRUE(s.ok()) << s.error;
   Step(*s.world);
-  // The box LED (on its own top face: not hidden by it), then the light l0. The black LED,
-  // the light of another medium and the light above the camera (0.5 m > 0.289 m) are not
-  // seen. Box LEDs come before lights.
-  ASSERT_EQ(Blobs(s).size(), 2u);
+  // The box LED (on its own top face: not hidden by it), then the lights l0 and l2: ARGoS
+  // sees an LED less than the camera's height above the camera (0.5 m - 0.289 m < 0.289 m),
+  // not l3 (0.6 m). The black LED and the light of another medium are not seen. Box LEDs
+  // come before lights.
+  ASSERT_EQ(Blobs(s).size(), 3u);
   EXPECT_NEAR(Blobs(s)[0].distance, 56.56854249, 1e-4);
   EXPECT_NEAR(Blobs(s)[0].angle, -kPi / 4, 1e-6);
   EXPECT_TRUE(Rgb(Blobs(s)[0].color, 0, 0, 255));
   EXPECT_NEAR(Blobs(s)[1].distance, 36.05551275, 1e-4);
   EXPECT_NEAR(Blobs(s)[1].angle, 2.55359005004, 1e-6);
   EXPECT_TRUE(Rgb(Blobs(s)[1].color, 255, 255, 0));
+  EXPECT_NEAR(Blobs(s)[2].distance, 42.42640687, 1e-4);
+  EXPECT_NEAR(Blobs(s)[2].angle, kPi / 4, 1e-6);
+  EXPECT_TRUE(Rgb(Blobs(s)[2].color, 255, 0, 0));
 }
 
 TEST(Camera, SquareFieldOfViewAndOcclusion) {
@@ -259,7 +265,10 @@ TEST(Camera, OcclusionRaysMatchBox2D) {
     const Vec2 from(p.x, p.y);
     const Vec2 to = from + Vec2(rng.Uniform(-1.1, 1.1), rng.Uniform(-1.1, 1.1));
     const double z = k % 3 == 0 ? 0.085 : k % 3 == 1 ? 0.174249733 : 0.3;
-    const bool ours = CameraRayBlocked(w.model, w.media, from, to, z, self, -1);
+    // A level segment: ARGoS's 3D rule then reduces to CastRay's (a shape is hit where the
+    // ray enters it if its heights span z), gripper discs included on both sides.
+    const bool ours =
+        CameraRayBlocked(w.model, w.media, Vec3(from.x(), from.y(), z), Vec3(to.x(), to.y(), z), self, -1);
     const bool box2d = w.physics.CastRay(from, to, z, self).Hit();
     ASSERT_EQ(ours, box2d) << "ray " << k << " from robot " << self << " to " << to.transpose() << " z " << z;
     (ours ? blocked : clear)++;

@@ -138,12 +138,17 @@ PairRay RayBetween(const MediaState& m, int a, int b) {
   r.from = m.body_xy[r.lo];
   r.to = m.body_xy[r.hi];
   const double len = (r.to - r.from).norm();
-  r.t_b = std::max(0.0, len - footbot::kRadius) / len;
+  // The partner's first shape: its body, or its gripper disc where that faces the device.
+  r.t_b = std::min(std::max(0.0, len - footbot::kRadius) / len,
+                   CircleEntry(r.from, r.to, m.gripper_xy[r.hi], kGripperRadius));
   return r;
 }
 bool HiddenByABody(const MediaState& m, const PairRay& r, int robots) {
-  for (int c = 0; c < robots; ++c)
-    if (c != r.lo && c != r.hi && CircleEntry(r.from, r.to, m.body_xy[c], footbot::kRadius) < r.t_b) return true;
+  for (int c = 0; c < robots; ++c) {
+    if (c == r.lo || c == r.hi) continue;
+    if (CircleEntry(r.from, r.to, m.body_xy[c], footbot::kRadius) < r.t_b) return true;
+    if (CircleEntry(r.from, r.to, m.gripper_xy[c], kGripperRadius) < r.t_b) return true;
+  }
   return false;
 }
 bool HiddenByAnObstacle(const Model& model, const MediaState& m, const PairRay& r) {

@@ -544,7 +544,9 @@ TEST(RangeAndBearing, OcclusionMatchesOneRayPerPair) {
       Pose2 pk = s.world->physics.RobotPose(k);
       if (std::hypot(pk.x - pr.x, pk.y - pr.y) >= 2) continue;
       RayHit hit = s.world->physics.CastRay(Vec2(pr.x, pr.y), Vec2(pk.x, pk.y), 0.1, r);
-      if (hit.Hit() && !(hit.kind == BodyKind::Robot && hit.index == k)) {
+      // The partner's body or gripper disc is the partner (ARGoS: the same entity).
+      const bool partner = (hit.kind == BodyKind::Robot || hit.kind == BodyKind::Gripper) && hit.index == k;
+      if (hit.Hit() && !partner) {
         ++hidden;
         continue;
       }
@@ -609,8 +611,9 @@ namespace {
 using namespace essaim::testing;
 
 /// Inboxes by brute force on the media's own positions: every pair of members in range,
-/// hidden when any other body's circle is entered before the partner's (CircleEntry over
-/// all bodies, from the lower index as the media does): no grid, cut-off or probe.
+/// hidden when any other robot's body or gripper disc is entered before the partner's first
+/// shape (CircleEntry over all of them, from the lower index as the media does): no grid,
+/// cut-off or probe.
 std::vector<std::vector<int>> BruteForceInboxes(const Model& model, const Media& m) {
   const int n = static_cast<int>(m.rab_pos.size());
   std::vector<std::vector<int>> inbox(n);
@@ -622,10 +625,13 @@ std::vector<std::vector<int>> BruteForceInboxes(const Model& model, const Media&
       if (!lo_hears && !hi_hears) continue;
       const Vec2 a = m.rab_pos[lo].head<2>(), b = m.rab_pos[hi].head<2>();
       const double len = (b - a).norm();
-      const double t_b = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+      const double t_body = len > 0 ? std::max(0.0, len - footbot::kRadius) / len : 0.0;
+      const double t_b = std::min(t_body, CircleEntry(a, b, m.gripper_xy[hi], kGripperRadius));
       bool hidden = false;
       for (int c = 0; c < n && !hidden; ++c)
-        hidden = c != lo && c != hi && CircleEntry(a, b, m.body_xy[c], footbot::kRadius) < t_b;
+        hidden = c != lo && c != hi &&
+                 (CircleEntry(a, b, m.body_xy[c], footbot::kRadius) < t_b ||
+                  CircleEntry(a, b, m.gripper_xy[c], kGripperRadius) < t_b);
       if (hidden) continue;
       if (lo_hears) inbox[lo].push_back(hi);
       if (hi_hears) inbox[hi].push_back(lo);

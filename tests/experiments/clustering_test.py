@@ -2,10 +2,14 @@
 
 Foot-bots grip red LED cylinders that the loop functions scattered with add_entity and carry
 them into the black zone; the loop functions turn those that arrived blue (set_led_color) and
-count them into metrics.json. At the file's seed, all 12 arrive well within 1000 ticks (tick 818
-when this test was written); the test asks for 10, so that a harmless change in the dynamics
-does not fail it, and checks the mechanisms: recolouring shows in the recording, the robots'
-own counters read through r:lua_global reach the metrics, and threads change nothing.
+count them into metrics.json. The count depends much on the seed: after 1000 ticks, over seeds
+1-24, it ranged 5-12 (mean 9.1) on main b6d1799, 1-12 (mean 8.7) with the sensors made ARGoS's
+(issue 38) and 5-12 (mean 9.1) with the motion made ARGoS's too (issue 41); at the file's seed
+it went 12, 9, 5 (cylinders left in the zone can be pushed out again). After 2000 ticks it
+ranges 7-12 (mean 11.0) and the file's seed has 11: the test asks for 10 in 2000 ticks, so
+that a harmless change in the dynamics does not fail it, and checks the mechanisms:
+recolouring shows in the recording, the robots' own counters read through r:lua_global reach
+the metrics, and threads change nothing.
 
 The runs need the binary: set ESSAIM to its path (ctest does); without it they are skipped.
 """
@@ -20,7 +24,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 ARENA = ROOT / "arenas" / "clustering.argos"
-TICKS = 1000
+TICKS = 2000
 BLUE565, RED565 = 0x001F, 0xF800
 
 

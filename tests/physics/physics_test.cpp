@@ -30,8 +30,9 @@ TEST_P(Physics, StraightDriveCoversVT) {
   ASSERT_TRUE(s.ok()) << s.error;
   RunTicks(*s.world, 100);  // 10 s
   Pose2 p = s.world->physics.RobotPose(0);
-  // 1 m, less a few mm of acceleration in the first tick (15 N on 1.6 kg).
-  EXPECT_NEAR(p.x, -1.0, 0.005);
+  // 1 m, less one sub-step's travel (ARGoS's engine moves bodies before it solves: the wheels
+  // take effect one sub-step late) and ~0.1 mm of acceleration (15 N on 1.68 kg).
+  EXPECT_NEAR(p.x, -1.0 - 0.1 * (0.1 / GetParam()), 5e-4);
   EXPECT_NEAR(p.y, 0.0, 1e-4);
   EXPECT_NEAR(p.yaw, 0.0, 1e-4);
 }

@@ -363,9 +363,9 @@ TEST(RayCandidates, ExcludedRobotAndShapesBelowTheRayAreNotCandidates) {
   ASSERT_TRUE(s.ok()) << s.error;
   RayCandidates c;
   s.world->physics.GatherRayCandidates({0, 0}, 0.5, 0.06, 0, &c);
-  ASSERT_EQ(c.items.size(), 1u);  // fb1 only: not fb0 itself, not the 3 cm box
+  ASSERT_EQ(c.items.size(), 2u);  // fb1's body and gripper disc only: not fb0's, not the 3 cm box
   s.world->physics.GatherRayCandidates({0, 0}, 0.5, 0.02, 0, &c);
-  EXPECT_EQ(c.items.size(), 2u);  // the low box too
+  EXPECT_EQ(c.items.size(), 3u);  // the low box too
   s.world->physics.GatherRayCandidates({0, 0}, 0.1, 0.06, 0, &c);
   EXPECT_TRUE(c.items.empty());  // fb1's body starts at 0.215 m
   const RayHit h = s.world->physics.CastRay(RayCandidates(), {0, 0}, {1, 0});
