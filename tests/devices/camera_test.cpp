@@ -165,7 +165,7 @@ TEST(Camera, BlackLedsAndDisabledCameraSeeNothing) {
           "n = 0\nfunction init() robot.colored_blob_omnidirectional_camera.enable() end\n"
           "function step() n = n + 1; local cam = robot.colored_blob_omnidirectional_camera\n"
           "  local b = cam[1]\n"
-          "  log(#cam, b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. "
+          "  print(#cam, b and (b.color.red .. ',' .. b.color.green .. ',' .. b.color.blue .. ' ' .. "
           "math.type(b.color.green)) or 'nil')\n"
           "  if n == 2 then cam.disable() end end\n");
   d.Write("look.lua", kLook);

@@ -94,7 +94,7 @@ TEST(Leds, LoopFunctionsReadAppliedColours) {
   TempDir d;
   d.Write("c.lua", "function init() robot.leds.set_single_color(3, 'cyan') end\nfunction step() end\n");
   d.Write("lf.lua",
-          "function post_step() local r, g, b = experiment.robots[1]:led(3); log(r, g, b, math.type(r)) end\n");
+          "function post_step() local r, g, b = experiment.robots[1]:led(3); print(r, g, b, math.type(r)) end\n");
   std::string xml = LedExperiment(FootBot("fb0", 0, 0, 0, "c"), LedController("c", "c.lua"));
   xml.replace(xml.find("</argos-configuration>"), 0, "<loop_functions script=\"lf.lua\"/>\n");
   auto l = LoadLogged(d, xml);

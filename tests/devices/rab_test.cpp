@@ -69,7 +69,7 @@ function step()
     local b = robot.range_and_bearing[i].data[1]
     if b > have then have = b end
   end
-  if have == 42 and not told then told = true; log(robot.id, "has it at step", n) end
+  if have == 42 and not told then told = true; print(robot.id, "has it at step", n) end
   robot.range_and_bearing.set_data(1, have)
 end
 )");
@@ -108,7 +108,7 @@ function step()
     local key = b.color.red .. "," .. b.color.green .. "," .. b.color.blue
     if not seen and key == "255,0,255" then
       seen = true
-      log("magenta at step", n, "angle", string.format("%.3f", b.angle), "blobs", #robot.colored_blob_omnidirectional_camera)
+      print("magenta at step", n, "angle", string.format("%.3f", b.angle), "blobs", #robot.colored_blob_omnidirectional_camera)
     end
   end
 end

@@ -198,7 +198,7 @@ TEST(RangeAndBearing, ClearDataAndLuaTables) {
   d.Write("recv.lua",
           "function init() end\n"
           "function step() local m = robot.range_and_bearing[1]\n"
-          "  log(#robot.range_and_bearing, #m.data, math.type(m.data[1]), table.concat(m.data, ','),\n"
+          "  print(#robot.range_and_bearing, #m.data, math.type(m.data[1]), table.concat(m.data, ','),\n"
           "      math.type(m.range)) end\n");
   auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
                                         RabController("send", "send.lua") + RabController("recv", "recv.lua")));
@@ -228,7 +228,7 @@ function step()
   if kept then
     local keys = 0
     for _ in pairs(kept) do keys = keys + 1 end
-    log(tostring(kept ~= m), tostring(kept_data ~= m.data), kept.data[1], kept_data[1],
+    print(tostring(kept ~= m), tostring(kept_data ~= m.data), kept.data[1], kept_data[1],
         tostring(kept.range == kept_range), tostring(getmetatable(kept)), tostring(getmetatable(kept.data)),
         keys, #kept.data, m.data[1], m.data[2])
   end
@@ -269,7 +269,7 @@ function step()
     checked = checked + 1
     if kept[k].data[1] ~= first[k] or kept[k].data[2] ~= second[k] or #kept[k].data ~= 10 then wrong = wrong + 1 end
   end
-  if #kept == 150 then log(checked, wrong, tostring(kept[1] ~= kept[2]), tostring(kept[1].data ~= kept[2].data)) end
+  if #kept == 150 then print(checked, wrong, tostring(kept[1] ~= kept[2]), tostring(kept[1].data ~= kept[2].data)) end
 end
 )");
   auto ls = LoadLogged(d, RabExperiment(Bot("s", 0, 0, 0, "send") + Bot("r", 0.5, 0, 0, "recv"),
@@ -327,11 +327,11 @@ function init()
   local proxy = setmetatable({}, {__index = function(_, i) reads = reads + 1; return 3 * i end,
                                   __len = function() return 10 end})
   rab.set_data(proxy)
-  log(reads, math.type(2^53 + 1), math.type(9007199254740993))
+  print(reads, math.type(2^53 + 1), math.type(9007199254740993))
   rab.set_data({2147483647, -2147483647, 2147483647.5, -2147483647.5, 255.0, -0.5, 1e9, 2^30, -300, 44.7})
   for _, huge in ipairs({9007199254740993, math.mininteger, 1e300, 2^31, -2^31}) do
     local ok, err = pcall(rab.set_data, {1, 2, 3, 4, 5, 6, 7, 8, 9, huge})
-    log(ok, err:match('element #10 %S+ is out of range') or err)
+    print(ok, err:match('element #10 %S+ is out of range') or err)
   end
 end
 function step() end
@@ -340,9 +340,9 @@ function step() end
   ASSERT_TRUE(ls->s.ok()) << ls->s.error;
   EXPECT_EQ(ls->lines,
             std::vector<std::string>(
-                {"10\tfloat\tinteger", "0\telement #10 9.0072e+15 is out of range",
-                 "0\telement #10 -9.22337e+18 is out of range", "0\telement #10 1e+300 is out of range",
-                 "0\telement #10 2.14748e+09 is out of range", "0\telement #10 -2.14748e+09 is out of range"}));
+                {"10\tfloat\tinteger", "false\telement #10 9.0072e+15 is out of range",
+                 "false\telement #10 -9.22337e+18 is out of range", "false\telement #10 1e+300 is out of range",
+                 "false\telement #10 2.14748e+09 is out of range", "false\telement #10 -2.14748e+09 is out of range"}));
   const double as_read[] = {2147483647.0, -2147483647.0, 2147483647.5, -2147483647.5, 255.0,
                             -0.5,         1e9,           1073741824.0, -300.0,        44.7};
   std::vector<int> want;
@@ -390,7 +390,7 @@ TEST(RangeAndBearing, StaleEntriesBecomeNil) {
   d.Write("go.lua", "function init() robot.wheels.set_velocity(20, 20) end\nfunction step() end\n");
   d.Write("recv.lua",
           "function init() end\n"
-          "function step() log(#robot.range_and_bearing, tostring(robot.range_and_bearing[2] == nil)) end\n");
+          "function step() print(#robot.range_and_bearing, tostring(robot.range_and_bearing[2] == nil)) end\n");
   // r hears a (still) and b, which drives away at 20 cm/s from 0.9 m: out of 1 m in < 1 s.
   auto ls = LoadLogged(
       d,

@@ -30,7 +30,8 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         assert int(row["robots"]) == robots  # the scenario scaled to the size asked
         cost = float(row["us/r-step"])
         parts = [float(row[k]) for k in ("phys", "sense", "ctrl")]
-        assert float(row["setup-s"]) > 0 and cost > 0 and all(p > 0 for p in parts)
+        # A hundred robots may be made in under 5 ms, printed 0.00.
+        assert float(row["setup-s"]) >= 0 and cost > 0 and all(p > 0 for p in parts)
         # Freeing a few hundred robots takes far less than making them (printed to 0.01 s).
         assert 0 <= float(row["down-s"]) <= float(row["setup-s"]) + 0.01
         # The stages and the rest add up to the whole (rounded to 0.01 each).
