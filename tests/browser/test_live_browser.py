@@ -281,7 +281,10 @@ def test_replay_page_charts_the_runs_time_series(essaim, browser, tmp_path):
     assert "wave" in page.text_content("#charts .legend")
     # The legend gives the value at the tick shown.
     page.evaluate("essaimReplay.setFrame(50)")
-    assert page.text_content("#charts .legend b") == str(round(math.sin(5), 3))
+    # The legend is redrawn at the next animation frame, not within setFrame.
+    want = str(round(math.sin(5), 3))
+    page.wait_for_function(f"document.querySelector('#charts .legend b').textContent === '{want}'", timeout=10000)
+    assert page.text_content("#charts .legend b") == want
     assert errors == []
     page.close()
 
