@@ -42,10 +42,10 @@ bool ParseExpectations(const TestSpec& spec, std::vector<Expectation>* out, std:
 }
 
 /// The built-in first row: every run ended with exit 0 and wrote its summary.
-ReportRow FinishedRow(const std::vector<RunOutcome>& runs, const std::string& out) {
+ReportRow FinishedRow(const std::vector<SeedOutcome>& runs, const std::string& out) {
   ReportRow row;
   row.expectation = "every run finishes (exit 0)";
-  for (const RunOutcome& run : runs) {
+  for (const SeedOutcome& run : runs) {
     if (run.failure.empty()) continue;
     row.failed_seeds.push_back(run.seed);
     row.details.push_back("seed " + std::to_string(run.seed) + ": " + run.failure +
@@ -56,10 +56,10 @@ ReportRow FinishedRow(const std::vector<RunOutcome>& runs, const std::string& ou
   return row;
 }
 
-ReportRow GoldenRow(const TestSpec& spec, const std::vector<RunOutcome>& runs, const TestArgs& args) {
+ReportRow GoldenRow(const TestSpec& spec, const std::vector<SeedOutcome>& runs, const TestArgs& args) {
   ReportRow row;
   row.expectation = "golden " + spec.golden + " (seed " + std::to_string(spec.golden_seed) + ")";
-  for (const RunOutcome& run : runs) {
+  for (const SeedOutcome& run : runs) {
     if (run.seed != spec.golden_seed) continue;
     GoldenResult g = CheckGolden(spec.golden, run, SeedRunFolder(args.out, run.seed), args.update);
     row.pass = g.pass;
@@ -71,7 +71,7 @@ ReportRow GoldenRow(const TestSpec& spec, const std::vector<RunOutcome>& runs, c
 }
 
 /// A run's first error, on one line (the traceback is in the run's summary.json and log).
-std::string FirstError(const RunOutcome& run) {
+std::string FirstError(const SeedOutcome& run) {
   const Value* errors = run.summary.Find("controller_errors");
   const Value* first = errors && !errors->list.empty() ? errors->list.front().Find("message") : nullptr;
   if (!first) first = run.summary.Find("failure");
@@ -79,9 +79,9 @@ std::string FirstError(const RunOutcome& run) {
 }
 
 /// Under a failed expectation on `errors`: the runs' first errors, the same one said once.
-std::vector<std::string> ErrorDetails(const Verdict& v, const std::vector<RunOutcome>& runs) {
+std::vector<std::string> ErrorDetails(const Verdict& v, const std::vector<SeedOutcome>& runs) {
   std::vector<std::pair<std::string, std::string>> seeds_by_error;  // in order of first seen
-  for (const RunOutcome& run : runs) {
+  for (const SeedOutcome& run : runs) {
     std::string error = FirstError(run);
     if (error.empty() || std::find(v.failed_seeds.begin(), v.failed_seeds.end(), run.seed) == v.failed_seeds.end())
       continue;
@@ -97,13 +97,13 @@ std::vector<std::string> ErrorDetails(const Verdict& v, const std::vector<RunOut
 }
 
 TestReport Check(const TestSpec& spec, const std::vector<Expectation>& expectations,
-                 const std::vector<RunOutcome>& runs, const TestArgs& args) {
+                 const std::vector<SeedOutcome>& runs, const TestArgs& args) {
   TestReport report;
   report.suite = spec.name;
   report.spec_file = spec.file;
   report.rows.push_back(FinishedRow(runs, args.out));
-  std::vector<RunOutcome> summarised;  // a run that failed but wrote its summary still counts
-  for (const RunOutcome& run : runs)
+  std::vector<SeedOutcome> summarised;  // a run that failed but wrote its summary still counts
+  for (const SeedOutcome& run : runs)
     if (!run.summary.IsNull()) summarised.push_back(run);
   for (const Expectation& e : expectations) {
     Verdict v = Evaluate(e, summarised);
@@ -139,7 +139,7 @@ int Test(TestArgs& args) {
               args.out.c_str());
   std::fflush(stdout);
   auto start = std::chrono::steady_clock::now();
-  std::vector<RunOutcome> runs = RunSeeds(spec, {args.out, jobs, !spec.golden.empty()});
+  std::vector<SeedOutcome> runs = RunSeeds(spec, {args.out, jobs, !spec.golden.empty()});
   TestReport report = Check(spec, expectations, runs, args);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << FormatReport(report);

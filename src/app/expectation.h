@@ -35,7 +35,7 @@ struct Expectation {
 };
 
 /// What one seed's run left: its exit, summary.json and metrics.json (null when absent).
-struct RunOutcome {
+struct SeedOutcome {
   uint64_t seed = 0;
   int exit_code = -1;   // -1: killed by a signal or never started
   std::string failure;  // why the run did not finish ("" when it exited 0)
@@ -53,8 +53,8 @@ struct Verdict {
 /// False with a message naming the part that is wrong.
 bool ParseExpectation(const std::string& text, Expectation* out, std::string* error);
 /// A run's VALUE as a number (booleans 1/0); nothing when absent or not a number.
-std::optional<double> RunValue(const RunOutcome& run, const std::string& name);
+std::optional<double> RunValue(const SeedOutcome& run, const std::string& name);
 /// The expectation over the finished runs (a run that did not finish is checked apart).
-Verdict Evaluate(const Expectation& e, const std::vector<RunOutcome>& runs);
+Verdict Evaluate(const Expectation& e, const std::vector<SeedOutcome>& runs);
 
 }  // namespace essaim

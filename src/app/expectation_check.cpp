@@ -37,7 +37,7 @@ const Value* Lookup(const Value& root, const std::string& dotted) {
 }
 
 /// Controller errors, plus one when the run itself failed (a loop-function error, os.exit...).
-std::optional<double> ErrorCount(const RunOutcome& run) {
+std::optional<double> ErrorCount(const SeedOutcome& run) {
   const Value* errors = run.summary.Find("controller_errors");
   const Value* status = run.summary.Find("status");
   if (!errors || !status) return std::nullopt;
@@ -99,7 +99,7 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
 }
 }  // namespace
 
-std::optional<double> RunValue(const RunOutcome& run, const std::string& name) {
+std::optional<double> RunValue(const SeedOutcome& run, const std::string& name) {
   size_t slash = name.find('/');
   if (slash != std::string::npos) {  // a share: A/B, e.g. trips_per_source.A/trips_total
     std::optional<double> a = RunValue(run, name.substr(0, slash)), b = RunValue(run, name.substr(slash + 1));
@@ -113,10 +113,10 @@ std::optional<double> RunValue(const RunOutcome& run, const std::string& name) {
   return NumberOf(Lookup(run.metrics, name));
 }
 
-Verdict Evaluate(const Expectation& e, const std::vector<RunOutcome>& runs) {
+Verdict Evaluate(const Expectation& e, const std::vector<SeedOutcome>& runs) {
   std::vector<double> values;
   std::vector<uint64_t> seeds, missing;
-  for (const RunOutcome& run : runs) {
+  for (const SeedOutcome& run : runs) {
     std::optional<double> v = RunValue(run, e.value);
     if (v) values.push_back(*v), seeds.push_back(run.seed);
     if (!v) missing.push_back(run.seed);

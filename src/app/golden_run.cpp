@@ -27,7 +27,7 @@ std::string RecordingHash(const std::string& folder) {
   return "fnv1a64:" + h.Hex();
 }
 
-Value GoldenOf(const RunOutcome& run, const std::string& folder) {
+Value GoldenOf(const SeedOutcome& run, const std::string& folder) {
   const Value* ticks = run.summary.Find("ticks");
   return Value::MapOf({{"seed", Value::OfUnsigned(run.seed)},
                        {"ticks", ticks ? *ticks : Value()},
@@ -57,7 +57,7 @@ bool WriteText(const std::string& path, const std::string& text) {
 }
 }  // namespace
 
-GoldenResult CheckGolden(const std::string& golden_file, const RunOutcome& run, const std::string& run_folder,
+GoldenResult CheckGolden(const std::string& golden_file, const SeedOutcome& run, const std::string& run_folder,
                          bool update) {
   GoldenResult result;
   Value now = GoldenOf(run, run_folder);

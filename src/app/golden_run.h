@@ -18,7 +18,7 @@ struct GoldenResult {
 
 /// Compares `run` (its folder holds recording.bin) with `golden_file`; with `update`, writes
 /// the run's values there instead (and reports what changed against the old file).
-GoldenResult CheckGolden(const std::string& golden_file, const RunOutcome& run, const std::string& run_folder,
+GoldenResult CheckGolden(const std::string& golden_file, const SeedOutcome& run, const std::string& run_folder,
                          bool update);
 
 }  // namespace essaim

@@ -80,7 +80,7 @@ std::string LastLogLine(const std::string& folder) {
   return start == std::string::npos ? text : text.substr(start + 1);
 }
 
-void Collect(RunOutcome* run, int status, const std::string& folder) {
+void Collect(SeedOutcome* run, int status, const std::string& folder) {
   if (WIFEXITED(status)) run->exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status))
     run->failure =
@@ -112,9 +112,9 @@ void StopOverdue(const TestSpec& spec, std::map<pid_t, Running>& running) {
 }
 
 /// Starts run `index`; false (with the run marked failed) when it could not start.
-bool Start(const TestSpec& spec, const SeedRunsOptions& o, size_t index, std::vector<RunOutcome>* runs,
+bool Start(const TestSpec& spec, const SeedRunsOptions& o, size_t index, std::vector<SeedOutcome>* runs,
            std::map<pid_t, Running>* running) {
-  RunOutcome& run = (*runs)[index];
+  SeedOutcome& run = (*runs)[index];
   std::string folder = SeedRunFolder(o.out, run.seed);
   std::error_code ec;
   fs::remove_all(folder, ec);  // our own seed-N folder: the run starts from nothing
@@ -134,8 +134,8 @@ std::string SeedRunFolder(const std::string& out, uint64_t seed) {
   return fs::absolute(out).string() + "/seed-" + std::to_string(seed);
 }
 
-std::vector<RunOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& options) {
-  std::vector<RunOutcome> runs(spec.seeds.size());
+std::vector<SeedOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& options) {
+  std::vector<SeedOutcome> runs(spec.seeds.size());
   for (size_t i = 0; i < runs.size(); ++i) runs[i].seed = spec.seeds[i];
   std::map<pid_t, Running> running;
   size_t next = 0;
@@ -153,7 +153,7 @@ std::vector<RunOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& op
     }
     auto it = running.find(pid);
     if (it == running.end()) continue;
-    RunOutcome& run = runs[it->second.index];
+    SeedOutcome& run = runs[it->second.index];
     run.seconds = Seconds(it->second.start);
     Collect(&run, status, SeedRunFolder(options.out, run.seed));
     if (it->second.overdue)

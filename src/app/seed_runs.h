@@ -21,6 +21,6 @@ struct SeedRunsOptions {
 /// The folder of one seed's run.
 std::string SeedRunFolder(const std::string& out, uint64_t seed);
 /// Runs every seed of `spec`; one outcome per seed, in the spec's order.
-std::vector<RunOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& options);
+std::vector<SeedOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& options);
 
 }  // namespace essaim
