@@ -288,9 +288,9 @@ int Report(const ActiveRun& run, StepStatus status, const std::vector<std::strin
   }
   if (!run.args.quiet) {
     const double seconds = run.info.wall_seconds;
-    const double steps = static_cast<double>(world.tick) * run.model.robots.size();
+    const double steps = static_cast<double>(world.robot_steps);
     std::printf("essaim: %llu ticks, %zu robots, %.2f s, %.0f robot-steps/s; %zu controller error(s); output in %s\n",
-                static_cast<unsigned long long>(world.tick), run.model.robots.size(), seconds,
+                static_cast<unsigned long long>(world.tick), world.robots.size(), seconds,
                 seconds > 0 ? steps / seconds : 0.0, world.controller_errors.size(), run.out.c_str());
   }
   return ExitCode(run, status);

@@ -49,6 +49,16 @@ struct ArgosLight {
   std::string medium;
 };
 
+/// A foot-bot to add: CFootBotEntity's constructor arguments.
+struct ArgosRobot {
+  std::string id;
+  std::string controller_id;  // a <lua_controller id> of the .argos file
+  ArgosPose pose;
+  double rab_range = 3;  // m
+  uint64_t rab_data_size = 10;
+  double camera_aperture = 1.2740903539558606;  // rad
+};
+
 class ArgosWorld {
  public:
   virtual ~ArgosWorld() = default;
@@ -79,6 +89,9 @@ class ArgosWorld {
   /// Adds a box, cylinder or light; false with `error` (duplicate id, overlap, limits).
   virtual bool Add(const ArgosBody& body, ArgosRef* added, std::string* error) = 0;
   virtual bool Add(const ArgosLight& light, ArgosRef* added, std::string* error) = 0;
+  /// Adds a foot-bot and makes its controller (script and init() run); false with `error`
+  /// (duplicate id, unknown controller, outside the arena, limits, the script failing).
+  virtual bool Add(const ArgosRobot& robot, ArgosRef* added, std::string* error) = 0;
   virtual bool Remove(const ArgosRef& e) = 0;
   virtual std::string ControllerId(uint32_t robot) const = 0;
   /// The robot's Lua state (kept after its controller failed), null when it has none.

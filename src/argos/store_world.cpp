@@ -183,6 +183,28 @@ bool StoreWorld::Add(const ArgosLight& light, ArgosRef* added, std::string* erro
   return true;
 }
 
+bool StoreWorld::Add(const ArgosRobot& robot, ArgosRef* added, std::string* error) {
+  RobotDef def;
+  def.id = robot.id;
+  def.controller_id = robot.controller_id;
+  for (size_t i = 0; i < model_.controllers.size(); ++i)
+    if (model_.controllers[i].id == def.controller_id) def.controller = static_cast<int>(i);
+  if (def.controller >= 0) def.params = model_.controllers[def.controller].params;
+  def.pose = {robot.pose.x, robot.pose.y, robot.pose.yaw};
+  def.z = robot.pose.z;
+  def.rab_range = robot.rab_range;
+  def.camera_aperture = robot.camera_aperture;
+  def.loc.element = "AddEntity";
+  if (!(def.rab_range >= 0)) *error = "rab_range must be >= 0";
+  if (robot.rab_data_size > 65536) *error = "rab_data_size out of range";
+  if (!error->empty()) return false;
+  def.rab_data_size = static_cast<int>(robot.rab_data_size);
+  EntityRef e;
+  if (!entities_.AddRobot(def, &e, error)) return false;
+  *added = {static_cast<int>(e.kind), e.serial};
+  return true;
+}
+
 // A controller stopped by an error keeps its state, as ARGoS's does: its globals stay readable.
 lua_State* StoreWorld::LuaState(uint32_t robot) {
   if (robot >= controllers_.size() || !controllers_[robot]) return nullptr;

@@ -45,6 +45,7 @@ class StoreWorld : public ArgosWorld {
   void SetLight(const ArgosRef& e, const ArgosLight& light) override;
   bool Add(const ArgosBody& body, ArgosRef* added, std::string* error) override;
   bool Add(const ArgosLight& light, ArgosRef* added, std::string* error) override;
+  bool Add(const ArgosRobot& robot, ArgosRef* added, std::string* error) override;
   bool Remove(const ArgosRef& e) override { return entities_.Remove(Ref(e)); }
   std::string ControllerId(uint32_t robot) const override { return model_.robots[robot].controller_id; }
   lua_State* LuaState(uint32_t robot) override;

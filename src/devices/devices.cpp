@@ -4,6 +4,16 @@
 
 namespace essaim {
 
+void InitRobotState(const Model& model, int index, RobotState& robot, const PhysicsWorld& physics) {
+  const uint64_t seed = model.experiment.seed;
+  const uint64_t i = static_cast<uint64_t>(index);
+  robot.index = index;
+  robot.controller_rng.Seed(DeriveSeed(seed, StreamKind::Controller, i));
+  robot.sensor_rng.Seed(DeriveSeed(seed, StreamKind::SensorNoise, i));
+  robot.actuator_rng.Seed(DeriveSeed(seed, StreamKind::ActuatorNoise, i));
+  InitRobotDevices(model, model.robots[index], robot, physics);
+}
+
 void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics) {
   const ControllerDef& c = model.controllers[def.controller];
   robot.cmd.rab_data.assign(def.rab_data_size, 0);

@@ -16,11 +16,15 @@ struct SenseContext {
   const PhysicsWorld& physics;
   const Media& media;
   const FloorRaster& floor;
-  const std::vector<RobotState>& robots;  // other robots' applied actuator state
+  const RobotStates& robots;  // other robots' applied actuator state
   uint64_t tick = 0;
   double dt = 0.1;
 };
 
+/// Robot `index`'s state made anew (its body already in the physics): its random streams
+/// from the experiment's seed, then InitRobotDevices. At World creation, and for a robot
+/// that loop functions add during the run.
+void InitRobotState(const Model& model, int index, RobotState& robot, const PhysicsWorld& physics);
 /// Called once when the World is built (noise biases, buffers, initial readings).
 void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot, const PhysicsWorld& physics);
 /// Act stage for one robot, part one: the actuators that write only the robot's own state

@@ -1,8 +1,11 @@
 #include "devices/entity_store.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
+#include "core/strings.h"
+#include "devices/devices.h"
 #include "model/distribute.h"
 #include "model/limits.h"
 
@@ -24,7 +27,7 @@ bool ParseEntityKind(const char* name, EntityKind* kind) {
   return false;
 }
 
-void EntityStore::Init(Model* scene, PhysicsWorld* physics, std::vector<RobotState>* robots) {
+void EntityStore::Init(Model* scene, PhysicsWorld* physics, RobotStates* robots) {
   scene_ = scene;
   physics_ = physics;
   robots_ = robots;
@@ -77,6 +80,37 @@ EntityRef EntityStore::AddObstacle(const ObstacleDef& def) {
   added_.push_back(e);
   MarkChanged(true);
   return e;
+}
+
+std::string EntityStore::RobotProblemNow(const RobotDef& def) const {
+  if (!joiner_) return "foot-bots can be added from the loop functions' init() on";
+  if (HasId(def.id)) return "id '" + def.id + "' is already used";
+  if (def.controller < 0 || def.controller >= static_cast<int>(scene_->controllers.size()))
+    return "no controller with id '" + def.controller_id + "'";
+  const Vec2 p(def.pose.x, def.pose.y), lo = scene_->arena.Min(), hi = scene_->arena.Max();
+  if (!std::isfinite(def.pose.yaw) || !(p.array() >= lo.array()).all() || !(p.array() <= hi.array()).all())
+    return "position (" + FormatDouble(p.x()) + ", " + FormatDouble(p.y()) + ") is outside the arena";
+  return RoomProblem(true);
+}
+
+bool EntityStore::AddRobot(const RobotDef& def, EntityRef* added, std::string* error) {
+  *error = RobotProblemNow(def);
+  if (!error->empty()) return false;
+  scene_->robots.push_back(def);
+  const int index = physics_->AddRobot(def);
+  robots_->emplace_back();
+  InitRobotState(*scene_, index, robots_->back(), *physics_);
+  if (!joiner_->Join(index, error)) {
+    robots_->pop_back();
+    physics_->RemoveLastRobot();
+    scene_->robots.pop_back();
+    return false;
+  }
+  *added = {EntityKind::FootBot, static_cast<uint32_t>(index)};
+  order_.push_back(*added);
+  added_.push_back(*added);
+  MarkChanged(true);  // the media size their per-robot buffers anew
+  return true;
 }
 
 EntityRef EntityStore::AddLight(const LightDef& def) {

@@ -26,11 +26,23 @@ struct EntityRef {
   uint32_t serial = 0;  // robots: their index; boxes/cylinders and lights: own counters
 };
 
+/// What the layers above the store do when a foot-bot joins during a run: make its
+/// controller (a Lua state, its top-level chunk and init() run) for robot `index`, whose
+/// def, state and body exist. False with `error` when the robot cannot run: the store then
+/// takes it back out. The World installs one once its controllers are made.
+class RobotJoiner {
+ public:
+  virtual ~RobotJoiner() = default;
+  virtual bool Join(int index, std::string* error) = 0;
+};
+
 class EntityStore {
  public:
   /// Registers the scene's robots, obstacles and lights. `scene`, `physics` and `robots`
   /// (filled later, one per scene robot) outlive it.
-  void Init(Model* scene, PhysicsWorld* physics, std::vector<RobotState>* robots);
+  void Init(Model* scene, PhysicsWorld* physics, RobotStates* robots);
+  /// Who makes the controllers of foot-bots added later (null: none can be added yet).
+  void SetRobotJoiner(RobotJoiner* joiner) { joiner_ = joiner; }
 
   /// Every live entity, creation order (the model's robots, obstacles, lights, then added ones).
   const std::vector<EntityRef>& All() const { return order_; }
@@ -89,10 +101,19 @@ class EntityStore {
   /// Why one entity more (a foot-bot when `robot`) is over the experiment's limit, or "".
   std::string RoomProblem(bool robot) const;
 
+  /// Why foot-bot `def` cannot be added now (no controller can be made yet, an id taken,
+  /// its controller or place outside the arena, over the limits), or "". Overlaps are
+  /// allowed, as in ARGoS, whose loop functions add a robot and then move it somewhere free.
+  std::string RobotProblemNow(const RobotDef& def) const;
+  /// Adds a foot-bot (controller index, pose, devices from `def`) to the scene, the
+  /// physics and the robots' states, then has the joiner make its controller. False with
+  /// `error` (and nothing added) when RobotProblemNow or the joiner says no.
+  bool AddRobot(const RobotDef& def, EntityRef* added, std::string* error);
   /// Adds a box or cylinder (kind from `def.kind`) to the scene and the physics.
   EntityRef AddObstacle(const ObstacleDef& def);
   EntityRef AddLight(const LightDef& def);
-  /// Removes a box, cylinder or light (robots cannot be removed). False if already gone.
+  /// Removes a box, cylinder or light (robots cannot be removed: indices into every
+  /// per-robot array stay put). False if already gone.
   bool Remove(const EntityRef& e);
   void SetObstaclePose(int index, const Pose2& pose);
 
@@ -105,7 +126,8 @@ class EntityStore {
   void MarkChanged(bool layout) { changed_ = true, layout_changed_ |= layout; }
   Model* scene_ = nullptr;
   PhysicsWorld* physics_ = nullptr;
-  std::vector<RobotState>* robots_ = nullptr;
+  RobotStates* robots_ = nullptr;
+  RobotJoiner* joiner_ = nullptr;
   std::vector<EntityRef> order_;
   std::vector<EntityRef> added_;
   std::vector<uint32_t> obstacle_serial_, light_serial_;  // by current index

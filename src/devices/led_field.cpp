@@ -20,7 +20,7 @@ namespace {
 /// ARGoS compares colours with alpha: only (0,0,0,255) is "black", i.e. off.
 bool LedOff(const Color& c) { return c == Color(); }
 
-void ListRobotLeds(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
+void ListRobotLeds(const Model& model, const PhysicsWorld& physics, const RobotStates& robots, Media* m) {
   for (int i = 0; i < static_cast<int>(robots.size()); ++i) {
     if (m->led_medium[i] < 0 || !robots[i].alive) continue;
     const RobotState& r = robots[i];
@@ -100,7 +100,7 @@ void InitLedField(const Model& model, Media* m) {
   m->led_grid.Reserve(capacity, capacity);
 }
 
-void UpdateLedField(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m) {
+void UpdateLedField(const Model& model, const PhysicsWorld& physics, const RobotStates& robots, Media* m) {
   m->leds.clear();
   if (!m->any_camera) return;  // nobody looks: skip the index entirely
   ListRobotLeds(model, physics, robots, m);

@@ -84,7 +84,7 @@ void InitMedia(const Model& model, Media* m) {
   m->ready = true;
 }
 
-void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m,
+void UpdateMedia(const Model& model, const PhysicsWorld& physics, const RobotStates& robots, Media* m,
                  const SlotRunner& runner) {
   if (!m->ready) InitMedia(model, m);
   if (m->rab_devices >= 2 || m->any_camera) ReadPoses(model, physics, m);

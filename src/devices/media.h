@@ -78,7 +78,7 @@ struct SlotRunner {
 };
 /// Media stage: rebuilds routing from the robots' positions after physics. The per-device
 /// RAB work is spread over the runner's slots; inboxes do not depend on their number.
-void UpdateMedia(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* media,
+void UpdateMedia(const Model& model, const PhysicsWorld& physics, const RobotStates& robots, Media* media,
                  const SlotRunner& runner = SlotRunner());
 
 /// Whether a shape hides the 3D segment from -> to, by ARGoS's ray rule (its entry point's
@@ -109,7 +109,7 @@ bool ObstacleSpan(const ObstacleDef& o, const Media& m, int k, const Vec2& a, co
 void CoverObstacles(const Vec2& lo, const Vec2& hi, double cell, double slack_cells, const Media& m, UniformGrid* g);
 /// Sizes the LED field (InitMedia); UpdateLedField lists this tick's lit LEDs.
 void InitLedField(const Model& model, Media* m);
-void UpdateLedField(const Model& model, const PhysicsWorld& physics, const std::vector<RobotState>& robots, Media* m);
+void UpdateLedField(const Model& model, const PhysicsWorld& physics, const RobotStates& robots, Media* m);
 /// Sizes the cameras' occlusion grids (InitMedia, after the LED field); FileCameraOccluders
 /// files this tick's bodies and obstacles in them.
 void InitCameraOcclusion(const Model& model, Media* m);

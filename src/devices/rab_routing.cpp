@@ -50,7 +50,7 @@ bool BoxesMiss(const Media& m, int k, const Vec2& lo, const Vec2& hi) {
 }
 
 /// Serial part before the devices: members, grids. False when nobody can hear anybody.
-bool Begin(const std::vector<RobotState>& robots, Media* m) {
+bool Begin(const RobotStates& robots, Media* m) {
   const int n = static_cast<int>(robots.size());
   int count = 0;
   for (int i = 0; i < n; ++i) {
@@ -370,7 +370,7 @@ void InitRabRouting(const Model& model, Media* m) {
   CoverObstacles(lo, hi, near / 4, 0.5, *m, &m->rab_obstacle_grid);
 }
 
-void RouteRab(const Model& model, const std::vector<RobotState>& robots, Media* m, const SlotRunner& runner) {
+void RouteRab(const Model& model, const RobotStates& robots, Media* m, const SlotRunner& runner) {
   if (m->rab_devices < 2 || !Begin(robots, m)) return;
   // A few devices are not worth waking the threads for (the result is the same).
   const int slots = runner.run && m->rab_devices >= 64 ? std::max(1, runner.slots) : 1;

@@ -51,6 +51,6 @@ constexpr int kCrowd = 16;
 void InitRabRouting(const Model& model, Media* media);
 /// Fills media->rab_inbox from this tick's positions (body_xy, rab_pos, obstacles): the
 /// per-device work on the runner's slots, inboxes identical at any slot count.
-void RouteRab(const Model& model, const std::vector<RobotState>& robots, Media* media, const SlotRunner& runner);
+void RouteRab(const Model& model, const RobotStates& robots, Media* media, const SlotRunner& runner);
 
 }  // namespace essaim

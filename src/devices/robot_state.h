@@ -4,6 +4,7 @@
 // (what lets robots run on several threads without locks).
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "core/math.h"
@@ -112,5 +113,10 @@ struct RobotState {
   RayCandidates scanner_candidates;  // speed mode: within the short sensors' reach only
   RayCandidates scanner_wedge;       // near the sector a long sensor sweeps (distance_scanner.cpp)
 };
+
+/// Every robot's state, by index. A deque: robots that loop functions add during a run
+/// join at the end while every other robot's state stays where it is (controllers' Lua
+/// closures and robot.random hold pointers into their own robot's state).
+using RobotStates = std::deque<RobotState>;
 
 }  // namespace essaim

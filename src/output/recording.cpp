@@ -426,6 +426,7 @@ void RecordingWriter::RecordLate(const World& w, const Vec2& center, double unit
     const EntityRef& ref = added[added_seen_];
     const int k = w.entities.IndexOf(ref);
     if (k < 0) continue;  // added and removed between two frames: never seen
+    if (ref.kind == EntityKind::FootBot) continue;  // not recorded yet
     if (ref.kind == EntityKind::Light) {
       const LightDef& l = w.model.lights[k];
       late_lights_.push_back({l.id, l.position, l.color, l.intensity});

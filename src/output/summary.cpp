@@ -59,7 +59,7 @@ Value UnreadParams(const std::vector<UnreadParam>& unread) {
 
 // How long the run took: in all, per robot-step, per stage.
 void AddTimes(Value& s, const World& w, const RunInfo& info) {
-  double steps = static_cast<double>(w.tick) * static_cast<double>(w.robots.size());
+  const double steps = static_cast<double>(w.robot_steps);
   s.Set("wall_seconds", Value::OfNumber(info.wall_seconds));
   s.Set("robot_steps_per_second", Value::OfNumber(info.wall_seconds > 0 ? steps / info.wall_seconds : 0.0));
   s.Set("us_per_robot_step", Value::OfNumber(steps > 0 ? info.wall_seconds * 1e6 / steps : 0.0));

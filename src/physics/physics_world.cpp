@@ -68,10 +68,10 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->controls.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
-  for (size_t i = 0; i < model.robots.size(); ++i) AddRobot(model.robots[i], static_cast<int>(i));
+  for (size_t i = 0; i < model.robots.size(); ++i) AddRobotBody(model.robots[i], static_cast<int>(i));
 }
 
-void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
+void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   b2World& w = *impl_->regions[RegionOf(impl_->region_defs, {r.pose.x, r.pose.y}, 0)].world;
   b2BodyDef bd;
   bd.type = b2_dynamicBody;
@@ -117,6 +117,26 @@ void PhysicsWorld::AddRobot(const RobotDef& r, int i) {
   w.CreateJoint(&jd);
   robots_.push_back(body);
   impl_->controls.push_back(control);
+}
+
+int PhysicsWorld::AddRobot(const RobotDef& robot) {
+  const int index = RobotCount();
+  impl_->grips.emplace_back();
+  if (RegionCount() > 1) impl_->robot_ghosts.emplace_back(RegionCount(), nullptr);
+  AddRobotBody(robot, index);
+  ++impl_->shapes_moved;  // the ray grid files the new circles
+  return index;
+}
+
+void PhysicsWorld::RemoveLastRobot() {
+  b2Body* body = AsBody(robots_.back());
+  body->GetWorld()->DestroyBody(impl_->controls.back());  // and the servo joint with it
+  body->GetWorld()->DestroyBody(body);
+  robots_.pop_back();
+  impl_->controls.pop_back();
+  impl_->grips.pop_back();
+  if (RegionCount() > 1) impl_->robot_ghosts.pop_back();
+  ++impl_->shapes_moved;
 }
 
 namespace {

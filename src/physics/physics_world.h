@@ -102,6 +102,11 @@ class PhysicsWorld {
   int AddObstacle(const ObstacleDef& obstacle);
   /// Destroys obstacle `index` (grips on it released); later obstacles move down one index.
   void RemoveObstacle(int index);
+  /// A foot-bot added during a run (loop functions), as the model describes it; returns
+  /// its index (the next one). No overlap check: ARGoS adds where it is told.
+  int AddRobot(const RobotDef& robot);
+  /// Undoes the last AddRobot (its controller could not be made).
+  void RemoveLastRobot();
   /// Teleports an obstacle (velocity zeroed), static ones included.
   void SetObstaclePose(int index, const Pose2& pose);
   /// The body of a dead robot stays (an obstacle others bump into) but is braked.
@@ -166,7 +171,7 @@ class PhysicsWorld {
   /// region `region`; returns the target's body there.
   void* MoveGripGroupVoid(const GripTarget& t, int region);
   /// Robot `index`'s body and its servo, in the region holding its pose.
-  void AddRobot(const RobotDef& robot, int index);
+  void AddRobotBody(const RobotDef& robot, int index);
   /// The gripper disc (kGripperRadius) on robot `index`'s body (a b2Body*), turret at 0.
   static void AddGripperDisc(void* robot_body, int index);
   std::unique_ptr<Impl> impl_;

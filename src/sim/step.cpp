@@ -52,6 +52,7 @@ bool LoopCall(World& w, const char* hook) {
 
 void BeginTick(World& w) {
   ++w.tick;
+  w.robot_steps += w.robots.size();
   SetLoopTick(w);
 }
 

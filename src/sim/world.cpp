@@ -7,6 +7,7 @@
 #include "devices/devices.h"
 #include "sim/error_groups.h"
 #include "sim/loop_hooks.h"
+#include "sim/robot_joining.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -74,19 +75,11 @@ namespace {
 // (bodies in the physics world), then the media's buffers and the thread pool.
 void MakeRobots(World& w, const SimOptions& options) {
   const Model& model = w.model;
-  const uint64_t seed = model.experiment.seed;
   const size_t n = model.robots.size();
   w.robots.resize(n);
   w.pending_errors.resize(n);
   w.chunk_times.resize(n + 1);
-  for (size_t i = 0; i < n; ++i) {
-    RobotState& r = w.robots[i];
-    r.index = static_cast<int>(i);
-    r.controller_rng.Seed(DeriveSeed(seed, StreamKind::Controller, i));
-    r.sensor_rng.Seed(DeriveSeed(seed, StreamKind::SensorNoise, i));
-    r.actuator_rng.Seed(DeriveSeed(seed, StreamKind::ActuatorNoise, i));
-    InitRobotDevices(model, model.robots[i], r, w.physics);
-  }
+  for (size_t i = 0; i < n; ++i) InitRobotState(model, static_cast<int>(i), w.robots[i], w.physics);
   InitMedia(model, &w.media);  // buffers sized once, by who is in which medium
   w.threads = options.threads >= 0 ? options.threads : model.experiment.threads;
   if (w.threads < 1) w.threads = 1;
@@ -124,7 +117,10 @@ bool MakeLuaStates(World& w, std::string* error) {
     if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
   }
   if (!BuildFloor(w, error)) return false;
-  return MakeControllerStates(w, error);
+  if (!MakeControllerStates(w, error)) return false;
+  w.robot_joiner = std::make_unique<WorldRobotJoiner>(w);
+  w.entities.SetRobotJoiner(w.robot_joiner.get());
+  return true;
 }
 
 // Every controller's init() on the pool, then their errors in robot order. A serial loop

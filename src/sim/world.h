@@ -101,6 +101,8 @@ class World {
   /// the states, so that it outlives them.
   std::unique_ptr<Watchdog> own_watchdog;
   uint64_t tick = 0;
+  /// Robots stepped, summed over the ticks (robots added during the run count from then).
+  uint64_t robot_steps = 0;
   /// Every file the run read, modules loaded by `require` included. Before the Lua states,
   /// whose `require` adds to it, so that it outlives them.
   std::shared_ptr<InputFiles> inputs;
@@ -108,11 +110,14 @@ class World {
   CompiledScripts scripts;
   PhysicsWorld physics;
   EntityStore entities;
-  std::vector<RobotState> robots;
+  RobotStates robots;
   std::vector<std::unique_ptr<LuaController>> controllers;
   LoopFunctions loop_functions;
   /// C++ loop functions (<loop_functions library/label>), when the model names them.
   CppLoopFunctions cpp_loop_functions;
+  /// Makes the controllers of foot-bots the loop functions add (sim/robot_joining.h), once
+  /// the .argos file's robots have theirs.
+  std::unique_ptr<RobotJoiner> robot_joiner;
   Media media;
   FloorRaster floor;
   StageTimes times;

@@ -10,6 +10,8 @@
 
 namespace argos {
 
+class CFootBotEntity;
+
 struct CSpace::SWorldEntities {
   /// Wrappers by (kind, serial): the world's own entities, and those AddEntity adopted.
   std::map<std::pair<int, UInt32>, std::unique_ptr<CEntity>> wrappers;
@@ -36,6 +38,8 @@ struct SEntityBinding {
   /// As Find, and the entity must still be live; throws naming `what` otherwise.
   static essaim::ArgosRef Require(const CEntity& c_entity, const char* what);
   static CSpace::SWorldEntities& Entities(CSpace& c_space) { return *c_space.m_psEntities; }
+  /// What AddEntity asks the world for, from a CFootBotEntity's constructor arguments.
+  static essaim::ArgosRobot RobotSpec(const CFootBotEntity& c_robot);
   /// The wrapper of world entity `ref`, made at its first use.
   static CEntity& Wrapper(CSpace& c_space, const essaim::ArgosRef& ref);
 };

@@ -65,16 +65,31 @@ bool AddLight(essaim::ArgosWorld& world, CLightEntity& light, essaim::ArgosRef* 
   spec.medium = light.GetMediumId();
   return world.Add(spec, ref, error);
 }
+bool AddFootBot(essaim::ArgosWorld& world, CFootBotEntity& robot, essaim::ArgosRef* ref, std::string* error) {
+  if (!world.Add(SEntityBinding::RobotSpec(robot), ref, error)) return false;
+  for (int k = 0; k < world.LedCount(*ref); ++k) robot.GetLEDEquippedEntity().AddLED(CVector3());
+  return true;
+}
 }  // namespace
+
+essaim::ArgosRobot SEntityBinding::RobotSpec(const CFootBotEntity& c_robot) {
+  essaim::ArgosRobot spec;
+  spec.id = c_robot.GetId();
+  spec.controller_id = c_robot.m_strControllerId;
+  const SAnchor& anchor = c_robot.m_cEmbodied.GetOriginAnchor();
+  spec.pose = {anchor.Position.GetX(), anchor.Position.GetY(), anchor.Position.GetZ(), YawOf(anchor.Orientation)};
+  spec.rab_range = c_robot.m_fRabRange;
+  spec.rab_data_size = c_robot.m_unRabDataSize;
+  spec.camera_aperture = c_robot.m_cOmnicamAperture.GetValue();
+  return spec;
+}
 
 bool AddToWorld(essaim::ArgosWorld& world, CEntity& c_entity, essaim::ArgosRef* ref, std::string* error) {
   if (auto* box = dynamic_cast<CBoxEntity*>(&c_entity)) return AddBox(world, *box, ref, error);
   if (auto* cylinder = dynamic_cast<CCylinderEntity*>(&c_entity)) return AddCylinder(world, *cylinder, ref, error);
   if (auto* light = dynamic_cast<CLightEntity*>(&c_entity)) return AddLight(world, *light, ref, error);
-  if (dynamic_cast<CFootBotEntity*>(&c_entity))
-    *error = "essaim cannot add foot-bots during a run: declare them in the .argos file (<foot-bot>, <distribute>)";
-  else
-    *error = "essaim adds boxes, cylinders and lights only, not a " + c_entity.GetTypeDescription();
+  if (auto* robot = dynamic_cast<CFootBotEntity*>(&c_entity)) return AddFootBot(world, *robot, ref, error);
+  *error = "essaim adds foot-bots, boxes, cylinders and lights only, not a " + c_entity.GetTypeDescription();
   return false;
 }
 

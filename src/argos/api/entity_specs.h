@@ -15,7 +15,7 @@ namespace argos {
 Real YawOf(const CQuaternion& c_orientation);
 CQuaternion FromYaw(Real f_yaw);
 
-/// Adds `c_entity` (a box, cylinder or light) to `world`; false with `error`.
+/// Adds `c_entity` (a foot-bot, box, cylinder or light) to `world`; false with `error`.
 bool AddToWorld(essaim::ArgosWorld& world, CEntity& c_entity, essaim::ArgosRef* ref, std::string* error);
 /// A wrapper of world entity `ref`, bound to it.
 std::unique_ptr<CEntity> MakeWrapper(essaim::ArgosWorld& world, const essaim::ArgosRef& ref);

@@ -180,6 +180,28 @@ void ParseObstacle(lua_State* L, LoopContext* ctx, EntityKind kind, int line) {
   RaiseIf(L, ctx->entities->ObstacleProblemNow(o));
 }
 
+// A foot-bot as <foot-bot> declares one: the controller by its <lua_controller id>, its
+// <params> with it, the rab_* attributes; battery and dynamics as the XML's defaults.
+void ParseFootBot(lua_State* L, LoopContext* ctx, int line) {
+  RobotDef& r = ctx->robot_spec;
+  r = RobotDef();
+  r.loc = {ctx->script, line, "add_entity"};
+  if (Field(L, "position") == LUA_TNIL) luaL_error(L, "add_entity: spec needs 'position'");
+  const Vec3 p = Triple(L, "position", 2);
+  r.pose = {p.x(), p.y(), DegToRad(Number(L, "orientation", 0, false))};
+  r.z = p.z();
+  SetString(L, "controller", &r.controller_id, true);
+  const std::vector<ControllerDef>& controllers = ctx->model->controllers;
+  for (size_t i = 0; i < controllers.size(); ++i)
+    if (controllers[i].id == r.controller_id) r.controller = static_cast<int>(i), r.params = controllers[i].params;
+  r.rab_range = Number(L, "rab_range", 3.0, false);
+  if (r.rab_range < 0) luaL_error(L, "add_entity: 'rab_range' must be >= 0");
+  const double data_size = Number(L, "rab_data_size", 10, false);
+  if (data_size < 0 || data_size > 65536 || data_size != std::floor(data_size))
+    luaL_error(L, "add_entity: 'rab_data_size' must be a whole number of bytes, 0 to 65536");
+  r.rab_data_size = static_cast<int>(data_size);
+}
+
 /// The spec's id, or one made of the kind and a counter, skipping any taken.
 void AssignId(lua_State* L, const EntityStore& store, const char* kind_name, std::string* id) {
   SetString(L, "id", id, false);
@@ -193,6 +215,19 @@ void AssignId(lua_State* L, const EntityStore& store, const char* kind_name, std
   }
 }
 
+// The robot's controller runs its script and init() before this returns, as in ARGoS.
+int AddFootBot(lua_State* L, LoopContext* ctx, int line) {
+  ParseFootBot(L, ctx, line);
+  AssignId(L, *ctx->entities, "fb", &ctx->robot_spec.id);
+  EntityRef e;
+  if (!ctx->entities->AddRobot(ctx->robot_spec, &e, &ctx->add_error)) RaiseIf(L, std::move(ctx->add_error));
+  PushEntityHandle(L, e, ctx->entities->IdOf(e).c_str());
+  lua_rawgetp(L, LUA_REGISTRYINDEX, &kRobotListKey);  // experiment.robots[index + 1] = the handle
+  lua_pushvalue(L, -2);
+  lua_rawseti(L, -2, static_cast<lua_Integer>(e.serial) + 1);
+  lua_pop(L, 1);
+  return 1;
+}
 }  // namespace
 
 int AddEntity(lua_State* L) {
@@ -200,13 +235,12 @@ int AddEntity(lua_State* L) {
   EntityKind kind;
   const char* kind_name = luaL_checkstring(L, 1);
   if (!ParseEntityKind(kind_name, &kind))
-    return luaL_error(L, "add_entity: unknown kind '%s' (box, cylinder or light)", kind_name);
-  if (kind == EntityKind::FootBot)
-    return luaL_error(L, "add_entity: adding foot-bots is not supported (declare them in the .argos file)");
+    return luaL_error(L, "add_entity: unknown kind '%s' (foot-bot, box, cylinder or light)", kind_name);
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 2);
   lua_Debug ar;
   const int line = lua_getstack(L, 1, &ar) && lua_getinfo(L, "l", &ar) ? ar.currentline : 0;
+  if (kind == EntityKind::FootBot) return AddFootBot(L, ctx, line);
   const bool light = kind == EntityKind::Light;
   if (light)
     ParseLight(L, ctx, line);

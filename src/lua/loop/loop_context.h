@@ -35,6 +35,8 @@ struct LoopContext {
   // copy (C++ locals with destructors must not live across a Lua error).
   ObstacleDef obstacle_spec;
   LightDef light_spec;
+  RobotDef robot_spec;
+  std::string add_error;
   LuaTape tape;
 };
 

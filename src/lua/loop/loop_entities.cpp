@@ -16,7 +16,7 @@
 
 namespace essaim {
 
-const char kHandleMetaKey = 0, kHandleCacheKey = 0;
+const char kHandleMetaKey = 0, kHandleCacheKey = 0, kRobotListKey = 0;
 
 namespace {
 lua_Integer CacheKey(const EntityRef& e) {

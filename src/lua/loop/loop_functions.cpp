@@ -111,6 +111,8 @@ void PushRobotHandles(lua_State* L, const Model& model) {
     PushEntityHandle(L, {EntityKind::FootBot, static_cast<uint32_t>(i)}, model.robots[i].id.c_str());
     lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
   }
+  lua_pushvalue(L, -1);
+  lua_rawsetp(L, LUA_REGISTRYINDEX, &kRobotListKey);
 }
 }  // namespace
 

@@ -12,8 +12,8 @@ struct EntityHandle {
   EntityRef ref;
 };
 
-/// Registry keys (by address).
-extern const char kHandleMetaKey, kHandleCacheKey;
+/// Registry keys (by address). kRobotListKey: experiment.robots, which add_entity extends.
+extern const char kHandleMetaKey, kHandleCacheKey, kRobotListKey;
 
 /// Pushes the handle of `e`, creating it (with `id`) on first use.
 void PushEntityHandle(lua_State* L, const EntityRef& e, const char* id);

@@ -79,7 +79,7 @@ LuaController::~LuaController() { CloseGuardedState(&guard_); }
 bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* robot, uint64_t experiment_seed,
                          const LuaOptions& options, std::string* error) {
   robot_ = robot;
-  def_ = &def;
+  robot_id_ = def.id;
   controller_ = &model.controllers[def.controller];
   guard_.name = "robot " + def.id;
   guard_.io_opened = RouteIoWrite;
@@ -157,14 +157,13 @@ void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotSta
 bool LuaController::RunChunk(const LuaOptions& options, std::string* error) {
   lua_State* L = L_;
   const std::string& script = controller_->script;
-  const RobotDef& def = *def_;
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
   // The sandbox takes no bytecode from files: the script is read as text.
   const int loaded = options.scripts ? options.scripts->Load(L, script, options.sandbox)
                                      : luaL_loadfilex(L, script.c_str(), options.sandbox ? "t" : nullptr);
   if (loaded != LUA_OK) {
-    *error = "robot " + def.id + ": " + lua_tostring(L, -1);
+    *error = "robot " + robot_id_ + ": " + lua_tostring(L, -1);
     lua_settop(L, 0);
     return false;
   }
@@ -172,7 +171,7 @@ bool LuaController::RunChunk(const LuaOptions& options, std::string* error) {
   const int status = lua_pcall(L, 0, 0, base);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
-    *error = "robot " + def.id + ": " +
+    *error = "robot " + robot_id_ + ": " +
              (stopped.empty() ? lua_tostring(L, -1) : (StopNamesItsLine(guard_) ? "" : script + ": ") + stopped);
     lua_settop(L, 0);
     return false;
@@ -243,7 +242,7 @@ bool LuaController::Call(const char* fn, bool required, CallKind kind, std::stri
   lua_State* L = L_;
   if (controller_->script.empty()) return true;
   if (!L) {
-    *error = "robot " + def_->id + ": its Lua state was closed after an earlier error (in " + fn + ")";
+    *error = "robot " + robot_id_ + ": its Lua state was closed after an earlier error (in " + fn + ")";
     return false;
   }
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
@@ -251,7 +250,7 @@ bool LuaController::Call(const char* fn, bool required, CallKind kind, std::stri
   if (lua_getglobal(L, fn) != LUA_TFUNCTION) {
     lua_settop(L, 0);
     if (!required) return true;
-    *error = "robot " + def_->id + ": " + controller_->script + ": no global function '" + fn + "'";
+    *error = "robot " + robot_id_ + ": " + controller_->script + ": no global function '" + fn + "'";
     return false;
   }
   BeginGuardedCall(&guard_, kind);
@@ -267,7 +266,7 @@ bool LuaController::Finish(int status, const char* where, const char* name, std:
     const char* msg = lua_tostring(L, -1);
     // The limits name the script, unless their message names its line already.
     const std::string script = StopNamesItsLine(guard_) ? "" : controller_->script + ": ";
-    *error = "robot " + def_->id + ": " +
+    *error = "robot " + robot_id_ + ": " +
              (!stopped.empty() ? script + stopped
               : msg            ? msg
                                : "error") +

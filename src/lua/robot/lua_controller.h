@@ -67,8 +67,8 @@ class LuaController {
 
   ::lua_State* L_ = nullptr;
   LuaGuard guard_;
-  RobotState* robot_ = nullptr;
-  const RobotDef* def_ = nullptr;
+  RobotState* robot_ = nullptr;  // a RobotStates element: it stays put while robots join
+  std::string robot_id_;         // not the RobotDef: the scene's list grows during a run
   const ControllerDef* controller_ = nullptr;
   std::string log_;
   std::string write_;  // io.write's open line

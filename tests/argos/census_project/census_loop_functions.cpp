@@ -154,12 +154,34 @@ class CCensusLoopFunctions : public CLoopFunctions {
     Record("added_led_green", pcCylinder->GetLEDEquippedEntity().GetLED(0).GetColor() == CColor::GREEN);
     RemoveEntity(*pcBox);
     Record("boxes_after_remove", GetSpace().GetEntitiesByType("box").size());
-    CFootBotEntity* pcRobot = new CFootBotEntity("fb9", "student", CVector3(1.5, -1.5, 0));
+    AddFootBots();
+  }
+
+  // ARGoS's custom-distribution example: a robot added at the origin (over fb0), then moved
+  // somewhere free; its controller ran init() during AddEntity.
+  void AddFootBots() {
+    CFootBotEntity* pcRobot = new CFootBotEntity("fb9", "student");
+    AddEntity(*pcRobot);
+    Record("foot_bots_after_add", GetSpace().GetEntitiesByType("foot-bot").size());
+    Record("added_robot_moved", MoveEntity(pcRobot->GetEmbodiedEntity(), CVector3(1.5, -1.5, 0), CQuaternion()));
+    Record("added_robot_x", pcRobot->GetEmbodiedEntity().GetOriginAnchor().Position.GetX());
+    Record("added_robot_leds", pcRobot->GetLEDEquippedEntity().GetLEDs().size());
+    lua_State* L = dynamic_cast<CLuaController&>(pcRobot->GetControllableEntity().GetController()).GetLuaState();
+    lua_getglobal(L, "counter");
+    Record("added_robot_counter", lua_tonumber(L, -1));
+    lua_pop(L, 1);
+    Record("add_unknown_controller_throws", AddThrows(new CFootBotEntity("fb10", "nobody", CVector3(-1.5, -1.5, 0))));
+    Record("add_duplicate_id_throws", AddThrows(new CFootBotEntity("fb0", "student", CVector3(-1.5, -1.5, 0))));
+  }
+
+  /// Whether AddEntity refuses `pc_robot` (then still the caller's, deleted here).
+  bool AddThrows(CFootBotEntity* pc_robot) {
     try {
-      AddEntity(*pcRobot);
+      AddEntity(*pc_robot);
+      return false;
     } catch (CARGoSException& ex) {
-      Record("add_foot_bot_throws", 1);
-      delete pcRobot;
+      delete pc_robot;
+      return true;
     }
   }
 

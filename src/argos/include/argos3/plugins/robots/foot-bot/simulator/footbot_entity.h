@@ -10,7 +10,10 @@ namespace argos {
 
 class CFootBotEntity : public CComposableEntity {
  public:
-  /// ARGoS's constructor; essaim cannot add foot-bots during a run (AddEntity throws).
+  /// ARGoS's constructor. AddEntity puts the robot in the space and makes its controller
+  /// (`str_controller_id`, a <lua_controller> of the .argos file), which runs its script and
+  /// init() then. The battery model and the perspective camera are not modelled: a robot
+  /// made here has no <battery> (never depletes) and no perspective camera.
   CFootBotEntity(const std::string& str_id, const std::string& str_controller_id,
                  const CVector3& c_position = CVector3(), const CQuaternion& c_orientation = CQuaternion(),
                  Real f_rab_range = 3.0, size_t un_rab_data_size = 10, const std::string& str_bat_model = "",
@@ -18,8 +21,12 @@ class CFootBotEntity : public CComposableEntity {
       : CComposableEntity(str_id),
         m_cEmbodied(this, str_id + ".body", c_position, c_orientation, true),
         m_cControllable(this, str_id + ".controller", str_controller_id),
-        m_cLEDs(this, str_id + ".leds") {
-    (void)f_rab_range, (void)un_rab_data_size, (void)str_bat_model, (void)c_omnicam_aperture, (void)f_perspcam_range;
+        m_cLEDs(this, str_id + ".leds"),
+        m_strControllerId(str_controller_id),
+        m_fRabRange(f_rab_range),
+        m_unRabDataSize(un_rab_data_size),
+        m_cOmnicamAperture(c_omnicam_aperture) {
+    (void)str_bat_model, (void)f_perspcam_range;
   }
   std::string GetTypeDescription() const override { return "foot-bot"; }
   CEmbodiedEntity& GetEmbodiedEntity() { return m_cEmbodied; }
@@ -31,6 +38,11 @@ class CFootBotEntity : public CComposableEntity {
   CEmbodiedEntity m_cEmbodied;
   CControllableEntity m_cControllable;
   CLEDEquippedEntity m_cLEDs;
+  friend struct SEntityBinding;  // essaim's: AddEntity reads the constructor's arguments
+  std::string m_strControllerId;
+  Real m_fRabRange;
+  size_t m_unRabDataSize;
+  CRadians m_cOmnicamAperture;
 };
 
 }  // namespace argos
