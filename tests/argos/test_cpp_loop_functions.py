@@ -36,8 +36,11 @@ def test_course_project_runs_unmodified(course, tmp_path):
     assert done.returncode == 0, done.stderr
     assert "warning" not in done.stderr  # every attribute of the file is read
     assert "course: 3 objects placed" in done.stdout and "course: done" in done.stdout
+    assert "course: 5 robots" in done.stdout  # two in the file, three added and placed by Init
     rows, last = score_rows(course)
     assert [t for t, robot, _, _ in rows if robot == "fb0"] == list(range(1, 31))  # the end: tick 30
+    added = ["student0", "student1", "student2"]
+    assert all([t for t, robot, _, _ in rows if robot == r] == list(range(1, 31)) for r in added)
     assert all(steps == t for t, _, steps, _ in rows)  # the controllers' `steps`, read from their Lua state
     # fb0 starts on white; the floor turns black at tick 10 (SetChanged), and its sensor sees it at once.
     assert [ground for t, robot, _, ground in rows if robot == "fb0"] == [1.0] * 9 + [0.0] * 21

@@ -13,6 +13,7 @@ void CCourseLoopFunctions::Init(TConfigurationNode& t_tree) {
   GetNodeAttribute(tParams, "flip_tick", m_unFlipTick);
   GetNodeAttributeOrDefault(tParams, "stop_tick", m_unStopTick, m_unStopTick);
   GetNodeAttribute(tParams, "cylinders", m_unCylinders);
+  GetNodeAttributeOrDefault(tParams, "robots", m_unRobots, m_unRobots);
   m_cOutput.open(m_strOutput.c_str(), std::ios_base::trunc | std::ios_base::out);
   m_cOutput << "# tick\trobot\tsteps\tground" << std::endl;
   m_pcRNG = CRandom::CreateRNG("argos");
@@ -29,7 +30,27 @@ void CCourseLoopFunctions::Init(TConfigurationNode& t_tree) {
   CLightEntity* pcLight = new CLightEntity("beacon", CVector3(-1.5, 1.5, 0.5), CColor::YELLOW, 3.0);
   pcLight->AddToMedium(cLEDs);
   AddEntity(*pcLight);
+  PlaceRobots();
   LOG << "course: " << GetSpace().GetEntitiesByType("cylinder").size() << " objects placed" << std::endl;
+}
+
+/* The students' robots, placed as ARGoS's custom distribution example does: added at the
+   origin, then moved to random places until one is free. */
+void CCourseLoopFunctions::PlaceRobots() {
+  for (UInt32 i = 0; i < m_unRobots; ++i) {
+    CFootBotEntity* pcFB = new CFootBotEntity("student" + ToString(i), "student");
+    AddEntity(*pcFB);
+    UInt32 unTrials = 0;
+    bool bDone = false;
+    do {
+      CVector3 cPos(m_pcRNG->Uniform(CRange<Real>(-1.5, -0.5)), m_pcRNG->Uniform(CRange<Real>(-1.5, 1.5)), 0);
+      CQuaternion cOrient;
+      cOrient.FromEulerAngles(m_pcRNG->Uniform(CRadians::UNSIGNED_RANGE), CRadians::ZERO, CRadians::ZERO);
+      bDone = MoveEntity(pcFB->GetEmbodiedEntity(), cPos, cOrient);
+    } while (!bDone && ++unTrials < 100);
+    if (!bDone) THROW_ARGOSEXCEPTION("Can't place robot " << pcFB->GetId());
+  }
+  LOG << "course: " << GetSpace().GetEntitiesByType("foot-bot").size() << " robots" << std::endl;
 }
 
 void CCourseLoopFunctions::Reset() { m_cOutput.close(); }

@@ -23,6 +23,7 @@ class CCourseLoopFunctions : public CLoopFunctions {
 
  private:
   Real ReadRobotNumber(CFootBotEntity& c_robot, const char* str_field);
+  void PlaceRobots();
   std::string m_strOutput;
   std::ofstream m_cOutput;
   CRandom::CRNG* m_pcRNG = nullptr;
@@ -31,6 +32,7 @@ class CCourseLoopFunctions : public CLoopFunctions {
   UInt32 m_unFlipTick = 10;
   UInt32 m_unStopTick = 30;
   UInt32 m_unCylinders = 3;
+  UInt32 m_unRobots = 0;
   UInt32 m_unMoves = 0, m_unMovesRefused = 0;
 };
 
