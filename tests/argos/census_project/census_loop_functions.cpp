@@ -51,7 +51,14 @@ class CCensusLoopFunctions : public CLoopFunctions {
     Record("lua_missing_is_nil", lua_isnil(L, -1));
     lua_pop(L, 3);
   }
-  void PostStep() override { Record("post_step", GetSpace().GetSimulationClock()); }
+  void PostStep() override {
+    Record("post_step", GetSpace().GetSimulationClock());
+    if (GetSpace().GetSimulationClock() != 2) return;
+    CFootBotEntity* pcLate = new CFootBotEntity("fb_late", "student", CVector3(-1.5, 1.5, 0));
+    AddEntity(*pcLate);  // after Init too: its init() runs now, its step() from the next tick
+    Record("late_robot_ok", dynamic_cast<CLuaController&>(pcLate->GetControllableEntity().GetController()).IsOK());
+    Record("foot_bots_after_late_add", GetSpace().GetEntitiesByType("foot-bot").size());
+  }
   bool IsExperimentFinished() override { return GetSpace().GetSimulationClock() >= 3; }
   void PostExperiment() override { Record("post_experiment", GetSpace().GetSimulationClock()); }
   void Destroy() override {
