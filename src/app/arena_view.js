@@ -1,8 +1,10 @@
 // essaim's arena drawing, shared by the replay page and the live page (`essaim serve`):
 // both embed this file. A scene S = {minX, minY, sizeX, sizeY, radius, obstacles: [{cylinder,
 // movable, x, y, yaw, sx, sy, r, led}], lights: [{x, y, r, g, b}]}; a frame F = {count,
-// robot(i) -> {x, y, yaw, color, alive, controllerOk}, obstacle(j) -> pose {x, y, yaw, led,
-// gone} or null (it has not moved), trail: [[x, y], ...] or null, ids: [...] or null}.
+// robot(i) -> {x, y, yaw, color, alive, controllerOk, present (false: added later, not
+// drawn; absent: true)}, obstacle(j) -> pose {x, y, yaw, led, gone} or null (it has not
+// moved), trail: [[x, y], ...] or null, ids: [...] or null}. The robot count may grow from
+// one frame to the next (the loop functions add foot-bots); a robot keeps its index.
 function EssaimArenaView(canvas, onSelect) {
   "use strict";
   const ctx = canvas.getContext("2d");
@@ -92,7 +94,9 @@ function EssaimArenaView(canvas, onSelect) {
     const r = Math.max(2, S.radius * s);
     let drawn = 0, alive = 0;
     for (let i = 0; i < F.count; i++) {
-      const b = F.robot(i), x = toX(b.x), y = toY(b.y);
+      const b = F.robot(i);
+      if (b.present === false) continue;  // added by the loop functions in a later frame
+      const x = toX(b.x), y = toY(b.y);
       ctx.beginPath(); ctx.arc(x, y, r, 0, TAU);
       ctx.globalAlpha = b.alive ? 1 : 0.75;
       ctx.fillStyle = !b.alive ? DEAD : b.color ? rgb(b.color) : BODY;
@@ -142,7 +146,7 @@ function EssaimArenaView(canvas, onSelect) {
     const pick = Math.max(S.radius * view.scale, 6) + 3;
     for (let i = 0; i < F.count; i++) {
       const b = F.robot(i), d = Math.hypot(toX(b.x) - px, toY(b.y) - py);
-      if (d < bestD) { bestD = d; best = i; }
+      if (d < bestD && b.present !== false) { bestD = d; best = i; }
     }
     return bestD <= pick ? best : -1;
   }

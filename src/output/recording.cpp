@@ -274,6 +274,28 @@ void PutMovable(uint8_t* p, const World& w, const EntityRef& ref, const Vec2& ce
   Put16(p + 4, QuantiseYaw(pose.yaw));
   Put16(p + 6, PackRgb565(ObstacleLed(w.model.obstacles[k])));  // loop functions may recolour it
 }
+
+void PutRobot(uint8_t* p, const World& w, int i, const Vec2& center, double unit) {
+  const RobotState& r = w.robots[i];
+  Pose2 pose = w.physics.RobotPose(i);
+  Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
+  Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
+  Put16(p + 4, QuantiseYaw(pose.yaw));
+  Put16(p + 6, PackRgb565(RepresentativeColor(r.leds, footbot::kLedCount)));
+  double full = w.model.robots[i].battery.full_charge;
+  double frac = full > 0 ? r.battery.charge / full : 0;
+  if (!std::isfinite(frac)) frac = 0;
+  p[8] = static_cast<uint8_t>(std::lround(std::clamp(frac, 0.0, 1.0) * 255));
+  p[9] = static_cast<uint8_t>((r.alive ? kRecAlive : 0) | (r.controller_ok ? kRecControllerOk : 0));
+}
+
+// The slot of a robot or obstacle in the frames before it was added: x = kRecGone, the
+// rest zero (so a robot's flags say dead too, for readers that only look at those).
+template <size_t N>
+struct AbsentSlot {
+  uint8_t bytes[N] = {};
+  AbsentSlot() { Put16(bytes, static_cast<uint16_t>(kRecGone)); }
+};
 }  // namespace
 
 RecordingScene SceneOf(const World& w, uint32_t every) {
@@ -326,7 +348,8 @@ bool RecordingWriter::Open(const std::string& path, const World& world, uint32_t
   movable_refs_.clear();
   for (int k : scene_.movable) movable_refs_.push_back(world.entities.ObstacleRef(k));
   added_seen_ = world.entities.Added().size();  // those added in init() are in the scene
-  late_refs_.clear(), late_obstacles_.clear(), late_lights_.clear(), late_bytes_.clear(), late_frame_end_.clear();
+  late_robots_.Clear(), late_movables_.Clear();
+  late_robot_ids_.clear(), late_obstacles_.clear(), late_lights_.clear();
   uint32_t frame_bytes = kFrameTickBytes + kRecordedRobotBytes * static_cast<uint32_t>(scene_.robot_ids.size()) +
                          kRecordedMovableBytes * static_cast<uint32_t>(scene_.movable.size());
   frame_.assign(frame_bytes, 0);
@@ -361,19 +384,7 @@ void RecordingWriter::WriteFrame(const World& w) {
   const Vec2 center = scene_.arena_min + scene_.arena_size / 2;
   const double unit = scene_.position_unit;
   const size_t n = scene_.robot_ids.size();
-  for (size_t i = 0; i < n; ++i, p += kRecordedRobotBytes) {
-    const RobotState& r = w.robots[i];
-    Pose2 pose = w.physics.RobotPose(static_cast<int>(i));
-    Put16(p + 0, static_cast<uint16_t>(QuantisePosition(pose.x, center.x(), unit)));
-    Put16(p + 2, static_cast<uint16_t>(QuantisePosition(pose.y, center.y(), unit)));
-    Put16(p + 4, QuantiseYaw(pose.yaw));
-    Put16(p + 6, PackRgb565(RepresentativeColor(r.leds, footbot::kLedCount)));
-    double full = w.model.robots[i].battery.full_charge;
-    double frac = full > 0 ? r.battery.charge / full : 0;
-    if (!std::isfinite(frac)) frac = 0;
-    p[8] = static_cast<uint8_t>(std::lround(std::clamp(frac, 0.0, 1.0) * 255));
-    p[9] = static_cast<uint8_t>((r.alive ? kRecAlive : 0) | (r.controller_ok ? kRecControllerOk : 0));
-  }
+  for (size_t i = 0; i < n; ++i, p += kRecordedRobotBytes) PutRobot(p, w, static_cast<int>(i), center, unit);
   for (const EntityRef& ref : movable_refs_) {
     PutMovable(p, w, ref, center, unit);
     p += kRecordedMovableBytes;
@@ -401,7 +412,7 @@ bool RecordingWriter::Seal(std::string* error) {
   if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) err = errno ? errno : EIO;
   if (std::fclose(file_) != 0 && !err) err = errno ? errno : EIO;
   file_ = nullptr;
-  if (!err && (!late_obstacles_.empty() || !late_lights_.empty())) {
+  if (!err && (!late_robot_ids_.empty() || !late_obstacles_.empty() || !late_lights_.empty())) {
     std::string rewrite_error;
     if (!RewriteWithLate(&rewrite_error)) {
       failure_ = rewrite_error;
@@ -420,60 +431,103 @@ bool RecordingWriter::Seal(std::string* error) {
   return true;
 }
 
+uint8_t* RecordingWriter::LateSlots::NextFrame(size_t slot_bytes) {
+  const size_t at = bytes.size();
+  bytes.resize(at + slot_bytes * refs.size());
+  frame_end.push_back(bytes.size());
+  return bytes.data() + at;
+}
+
+void RecordingWriter::LateSlots::AppendFrame(uint64_t f, const uint8_t* absent, size_t slot_bytes, size_t* cursor,
+                                             std::string* out) const {
+  size_t have = 0;
+  if (first_frame <= f && f - first_frame < frame_end.size()) {
+    const size_t end = frame_end[f - first_frame];
+    out->append(reinterpret_cast<const char*>(bytes.data()) + *cursor, end - *cursor);
+    have = (end - *cursor) / slot_bytes;
+    *cursor = end;
+  }
+  for (size_t j = have; j < refs.size(); ++j) out->append(reinterpret_cast<const char*>(absent), slot_bytes);
+}
+
+void RecordingWriter::NoteAdded(const World& w, const EntityRef& ref, int index) {
+  if (ref.kind == EntityKind::Light) {
+    const LightDef& l = w.model.lights[index];
+    late_lights_.push_back({l.id, l.position, l.color, l.intensity});
+    return;
+  }
+  const bool robot = ref.kind == EntityKind::FootBot;
+  LateSlots& late = robot ? late_robots_ : late_movables_;
+  if (late.refs.empty()) late.first_frame = frames_;
+  late.refs.push_back(ref);
+  if (robot)
+    late_robot_ids_.push_back(w.model.robots[index].id);
+  else
+    late_obstacles_.push_back(RecordedOf(w.model.obstacles[index]));
+}
+
 void RecordingWriter::RecordLate(const World& w, const Vec2& center, double unit) {
   const std::vector<EntityRef>& added = w.entities.Added();
   for (; added_seen_ < added.size(); ++added_seen_) {
     const EntityRef& ref = added[added_seen_];
     const int k = w.entities.IndexOf(ref);
-    if (k < 0) continue;  // added and removed between two frames: never seen
-    if (ref.kind == EntityKind::FootBot) continue;  // not recorded yet
-    if (ref.kind == EntityKind::Light) {
-      const LightDef& l = w.model.lights[k];
-      late_lights_.push_back({l.id, l.position, l.color, l.intensity});
-    } else {
-      if (late_refs_.empty()) late_first_frame_ = frames_;
-      late_refs_.push_back(ref);
-      late_obstacles_.push_back(RecordedOf(w.model.obstacles[k]));
+    if (k >= 0) NoteAdded(w, ref, k);  // else added and removed between two frames: never seen
+  }
+  // The usual case, nothing added: nothing kept, nothing allocated.
+  if (!late_robots_.refs.empty()) {
+    uint8_t* p = late_robots_.NextFrame(kRecordedRobotBytes);
+    for (const EntityRef& ref : late_robots_.refs) {
+      PutRobot(p, w, w.entities.IndexOf(ref), center, unit);  // robots are never removed
+      p += kRecordedRobotBytes;
     }
   }
-  if (late_refs_.empty()) return;  // the usual case: nothing kept, nothing allocated
-  const size_t at = late_bytes_.size();
-  late_bytes_.resize(at + kRecordedMovableBytes * late_refs_.size());
-  for (size_t j = 0; j < late_refs_.size(); ++j)
-    PutMovable(&late_bytes_[at + kRecordedMovableBytes * j], w, late_refs_[j], center, unit);
-  late_frame_end_.push_back(late_bytes_.size());
+  if (!late_movables_.refs.empty()) {
+    uint8_t* p = late_movables_.NextFrame(kRecordedMovableBytes);
+    for (const EntityRef& ref : late_movables_.refs) {
+      PutMovable(p, w, ref, center, unit);
+      p += kRecordedMovableBytes;
+    }
+  }
 }
+
+namespace {
+/// The scene with what was added after Open appended: robots to the ids, boxes and
+/// cylinders to the obstacles and the movable list, lights to the lights.
+RecordingScene SceneWithLate(RecordingScene s, const std::vector<std::string>& robot_ids,
+                             const std::vector<RecordedObstacle>& obstacles, const std::vector<RecordedLight>& lights) {
+  s.robot_ids.insert(s.robot_ids.end(), robot_ids.begin(), robot_ids.end());
+  for (const RecordedObstacle& o : obstacles) {
+    s.movable.push_back(static_cast<int>(s.obstacles.size()));
+    s.obstacles.push_back(o);
+  }
+  s.lights.insert(s.lights.end(), lights.begin(), lights.end());
+  return s;
+}
+}  // namespace
 
 bool RecordingWriter::RewriteWithLate(std::string* error) {
   // Entities added after the first frame widen every frame by their slots: the whole file
-  // is rewritten once, at the end, with them marked gone in the frames before their arrival.
+  // is rewritten once, at the end, with them marked absent in the frames before their arrival.
   std::string old;
   if (!ReadFile(tmp_, &old) || old.size() < header_bytes_ + frames_ * frame_.size()) {
     *error = "cannot read back " + tmp_;
     return false;
   }
-  RecordingScene s = scene_;
-  for (const RecordedObstacle& o : late_obstacles_) {
-    s.movable.push_back(static_cast<int>(s.obstacles.size()));
-    s.obstacles.push_back(o);
-  }
-  s.lights.insert(s.lights.end(), late_lights_.begin(), late_lights_.end());
-  const size_t late = late_refs_.size(), width = frame_.size();
-  std::string out = SerializeScene(s, static_cast<uint32_t>(width + kRecordedMovableBytes * late));
-  out.reserve(out.size() + frames_ * (width + kRecordedMovableBytes * late));
-  uint8_t gone[kRecordedMovableBytes] = {};
-  Put16(gone, static_cast<uint16_t>(kRecGone));
-  size_t start = 0;
-  for (uint64_t f = 0; f < frames_; ++f) {
-    out.append(old, header_bytes_ + f * width, width);
-    size_t have = 0;
-    if (late_first_frame_ <= f && f - late_first_frame_ < late_frame_end_.size()) {
-      const size_t end = late_frame_end_[f - late_first_frame_];
-      out.append(reinterpret_cast<const char*>(late_bytes_.data()) + start, end - start);
-      have = (end - start) / kRecordedMovableBytes;
-      start = end;
-    }
-    for (size_t j = have; j < late; ++j) out.append(reinterpret_cast<const char*>(gone), kRecordedMovableBytes);
+  const size_t width = frame_.size(), robots_end = kFrameTickBytes + kRecordedRobotBytes * scene_.robot_ids.size();
+  const size_t wide =
+      width + kRecordedRobotBytes * late_robots_.refs.size() + kRecordedMovableBytes * late_movables_.refs.size();
+  std::string out = SerializeScene(SceneWithLate(scene_, late_robot_ids_, late_obstacles_, late_lights_),
+                                   static_cast<uint32_t>(wide));
+  out.reserve(out.size() + frames_ * wide);
+  const AbsentSlot<kRecordedRobotBytes> absent_robot;
+  const AbsentSlot<kRecordedMovableBytes> absent_movable;
+  size_t robot_cursor = 0, movable_cursor = 0;
+  for (uint64_t f = 0; f < frames_; ++f) {  // tick, robots, late robots, movables, late movables
+    const size_t at = header_bytes_ + f * width;
+    out.append(old, at, robots_end);
+    late_robots_.AppendFrame(f, absent_robot.bytes, kRecordedRobotBytes, &robot_cursor, &out);
+    out.append(old, at + robots_end, width - robots_end);
+    late_movables_.AppendFrame(f, absent_movable.bytes, kRecordedMovableBytes, &movable_cursor, &out);
   }
   std::string err;
   if (!WriteFileAtomic(tmp_, out, &err)) {
@@ -687,6 +741,11 @@ RecordedRobot Recording::Robot(size_t frame, size_t robot) const {
                      kFrameTickBytes + robot * kRecordedRobotBytes;
   const Vec2 center = scene_.arena_min + scene_.arena_size / 2;
   RecordedRobot r;
+  if (static_cast<int16_t>(Get16(p)) == kRecGone) {  // not added yet
+    r.battery = 0;
+    r.alive = r.controller_ok = r.present = false;
+    return r;
+  }
   r.x = center.x() + static_cast<int16_t>(Get16(p)) * scene_.position_unit;
   r.y = center.y() + static_cast<int16_t>(Get16(p + 2)) * scene_.position_unit;
   r.yaw = YawOf(Get16(p + 4));

@@ -28,7 +28,8 @@ constexpr uint32_t kFrameTickBytes = 4;        // u32 tick
 constexpr uint8_t kRecAlive = 1;         // not killed by the loop functions / battery
 constexpr uint8_t kRecControllerOk = 2;  // no controller error so far
 
-/// Quantised x of a movable obstacle removed during the run (never a quantised position).
+/// Quantised x of a movable obstacle removed during the run, or of a robot or obstacle in
+/// the frames before the loop functions added it (never a quantised position).
 constexpr int16_t kRecGone = INT16_MIN;
 
 /// The floor raster is downsampled to at most this many pixels per side.
@@ -79,12 +80,15 @@ struct RecordedRobot {
   double battery = 1;            // charge / full charge, 1/255 precision
   bool alive = true;
   bool controller_ok = true;
+  /// False in the frames before the loop functions added it (its other fields are then
+  /// zero, alive false): nothing to draw or count.
+  bool present = true;
 };
 
 /// Streams a run into `path` (via path.tmp.PID). Record() after every Step; Finish() at
 /// the end. The frame buffer and the stdio buffer are allocated by Open(): Record() does
-/// not allocate, unless loop functions added boxes or cylinders during the run (their slots
-/// are kept aside, and Finish() rewrites the file with them).
+/// not allocate, unless loop functions added foot-bots, boxes or cylinders during the run
+/// (their slots are kept aside, and Finish() rewrites the file with them).
 class RecordingWriter {
  public:
   RecordingWriter() = default;
@@ -110,9 +114,23 @@ class RecordingWriter {
   uint64_t FramesWritten() const { return frames_; }
 
  private:
+  /// Frame slots of entities added after Open, one kind's: frames are fixed-size, so their
+  /// slots wait here, frame after frame from the first arrival, until RewriteWithLate.
+  struct LateSlots {
+    std::vector<EntityRef> refs;  // in order of arrival, the order of their slots
+    std::vector<uint8_t> bytes;
+    std::vector<size_t> frame_end;  // end of each frame's slots in `bytes`
+    uint64_t first_frame = 0;
+    void Clear() { refs.clear(), bytes.clear(), frame_end.clear(); }
+    /// Room for this frame's slots (`slot_bytes` each), to be filled by the caller.
+    uint8_t* NextFrame(size_t slot_bytes);
+    /// Frame `f`'s slots onto `out` from `*cursor` on, those not added yet as `absent`.
+    void AppendFrame(uint64_t f, const uint8_t* absent, size_t slot_bytes, size_t* cursor, std::string* out) const;
+  };
   void WriteFrame(const World& world);
-  /// Slots of obstacles added after Open (and lights added then), for RewriteWithLate.
+  /// Slots of robots and obstacles added after Open (and lights added then), for RewriteWithLate.
   void RecordLate(const World& world, const Vec2& center, double unit);
+  void NoteAdded(const World& world, const EntityRef& ref, int index);
   bool RewriteWithLate(std::string* error);
   void Close();
   void Fail(int err);
@@ -123,13 +141,11 @@ class RecordingWriter {
   RecordingScene scene_;
   std::vector<EntityRef> movable_refs_;  // the recorded movable obstacles, found by ref as indices shift
   size_t header_bytes_ = 0;
-  size_t added_seen_ = 0;             // entries of EntityStore::Added() already looked at
-  std::vector<EntityRef> late_refs_;  // obstacles added after Open: extra slots
+  size_t added_seen_ = 0;                  // entries of EntityStore::Added() already looked at
+  LateSlots late_robots_, late_movables_;  // foot-bots, boxes and cylinders added after Open
+  std::vector<std::string> late_robot_ids_;
   std::vector<RecordedObstacle> late_obstacles_;
   std::vector<RecordedLight> late_lights_;
-  std::vector<uint8_t> late_bytes_;     // their slots, frame after frame from late_first_frame_
-  std::vector<size_t> late_frame_end_;  // end of each such frame's slots in late_bytes_
-  uint64_t late_first_frame_ = 0;
   uint64_t last_tick_ = UINT64_MAX;
   uint64_t frames_ = 0;
 };

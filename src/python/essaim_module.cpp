@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -197,7 +198,7 @@ class Simulation {
 
   void Log(const py::object& logger, const LogLine& l) const {
     const int level = l.from.robot == kLogHost ? 40 : l.stream == 'E' ? 30 : 20;
-    std::string who = l.from.robot >= 0                   ? model_->robots[static_cast<size_t>(l.from.robot)].id
+    std::string who = l.from.robot >= 0                   ? world_->model.robots[static_cast<size_t>(l.from.robot)].id
                       : l.from.robot == kLogLoopFunctions ? std::string("loop functions")
                                                           : std::string();
     py::dict extra;
@@ -234,7 +235,7 @@ class Simulation {
 
   py::list RobotIds() const {
     py::list ids;
-    for (const RobotDef& r : model_->robots) ids.append(r.id);
+    for (const RobotDef& r : Robots()) ids.append(r.id);
     return ids;
   }
 
@@ -263,7 +264,7 @@ class Simulation {
     py::array_t<double> a = Vector<double>(w.robots.size());
     auto m = a.mutable_unchecked<1>();
     for (size_t i = 0; i < w.robots.size(); ++i) {
-      double full = model_->robots[i].battery.full_charge;
+      double full = w.model.robots[i].battery.full_charge;
       m(i) = full > 0 ? w.robots[i].battery.charge / full : 0.0;
     }
     return a;
@@ -328,7 +329,7 @@ class Simulation {
     Value value;
     std::string error;
     if (!LuaGlobalToValue(w.controllers[i]->State(), name, &value, &error))
-      throw Error("lua_global: robot '" + model_->robots[i].id + "', '" + name + "': " + error);
+      throw Error("lua_global: robot '" + w.model.robots[i].id + "', '" + name + "': " + error);
     return FromJsonText(ValueJsonText(value));
   }
 
@@ -355,7 +356,7 @@ class Simulation {
 
  private:
   size_t RobotIndex(const py::object& robot) const {
-    const auto& robots = model_->robots;
+    const auto& robots = Robots();
     if (py::isinstance<py::int_>(robot)) {
       const long long i = robot.cast<long long>();
       if (i < 0 || static_cast<size_t>(i) >= robots.size())
@@ -390,6 +391,9 @@ class Simulation {
     return png;
   }
 #endif
+
+  /// The robots as the run has them now: the loaded model's, then those the loop functions added.
+  const std::vector<RobotDef>& Robots() const { return world_ ? world_->model.robots : model_->robots; }
 
   World& Live() const {
     if (!world_) throw Error("this Simulation is closed");
@@ -428,7 +432,8 @@ class Simulation {
 };
 
 /// recording.bin read back (the replay's own parser): per-frame robot poses, alive flags and
-/// battery as numpy arrays, or one long pandas table.
+/// battery as numpy arrays, or one long pandas table. A robot the loop functions added
+/// during the run is absent from the frames before: `present` false, NaN pose and battery.
 class RecordingData {
  public:
   explicit RecordingData(const std::string& path) {
@@ -439,26 +444,30 @@ class RecordingData {
     const auto frames = static_cast<py::ssize_t>(rec.FrameCount()), robots = static_cast<py::ssize_t>(rec.RobotCount());
     std::vector<uint64_t> ticks(static_cast<size_t>(frames));
     py::array_t<double> poses({frames, robots, py::ssize_t{3}}), battery({frames, robots});
-    py::array_t<bool> alive({frames, robots});
+    py::array_t<bool> alive({frames, robots}), present({frames, robots});
     auto p = poses.mutable_unchecked<3>();
     auto b = battery.mutable_unchecked<2>();
     auto a = alive.mutable_unchecked<2>();
+    auto in = present.mutable_unchecked<2>();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     for (py::ssize_t f = 0; f < frames; ++f) {
       ticks[static_cast<size_t>(f)] = rec.Tick(static_cast<size_t>(f));
       for (py::ssize_t r = 0; r < robots; ++r) {
         const RecordedRobot robot = rec.Robot(static_cast<size_t>(f), static_cast<size_t>(r));
-        p(f, r, 0) = robot.x, p(f, r, 1) = robot.y, p(f, r, 2) = WrapYaw(robot.yaw);
-        b(f, r) = robot.battery, a(f, r) = robot.alive;
+        const bool here = robot.present;
+        p(f, r, 0) = here ? robot.x : nan, p(f, r, 1) = here ? robot.y : nan;
+        p(f, r, 2) = here ? WrapYaw(robot.yaw) : nan;
+        b(f, r) = here ? robot.battery : nan, a(f, r) = robot.alive, in(f, r) = here;
       }
     }
     ticks_ = py::module_::import("numpy").attr("array")(py::cast(ticks), "uint64");
-    poses_ = poses, battery_ = battery, alive_ = alive;
+    poses_ = poses, battery_ = battery, alive_ = alive, present_ = present;
     for (const std::string& id : rec.scene().robot_ids) robot_ids_.append(id);
     ticks_per_second_ = rec.scene().ticks_per_second;
     seed_ = rec.scene().seed;
   }
 
-  /// One row per (recorded tick, robot): tick, robot, x, y, yaw, alive, battery.
+  /// One row per (recorded tick, robot present then): tick, robot, x, y, yaw, alive, battery.
   py::object ToPandas() const {
     py::module_ np = py::module_::import("numpy");
     const auto robots = static_cast<py::ssize_t>(py::len(robot_ids_));
@@ -471,10 +480,12 @@ class RecordingData {
       columns[names[k]] = poses[py::make_tuple(py::slice(py::none(), py::none(), py::none()), k)];
     columns["alive"] = alive_.attr("reshape")(-1);
     columns["battery"] = battery_.attr("reshape")(-1);
-    return py::module_::import("pandas").attr("DataFrame")(columns);
+    py::object table = py::module_::import("pandas").attr("DataFrame")(columns);
+    if (present_.attr("all")().cast<bool>()) return table;  // the usual case: no robot added during the run
+    return table[present_.attr("reshape")(-1)].attr("reset_index")(py::arg("drop") = true);
   }
 
-  py::object ticks_, poses_, battery_, alive_;
+  py::object ticks_, poses_, battery_, alive_, present_;
   py::list robot_ids_;
   uint32_t ticks_per_second_ = 0;
   uint64_t seed_ = 0;
@@ -529,11 +540,13 @@ PYBIND11_MODULE(essaim, m) {
       .def_readonly("robot_ids", &RecordingData::robot_ids_)
       .def_readonly("poses", &RecordingData::poses_, "float64 (frames, robots, 3): x, y (m), yaw in (-pi, pi]")
       .def_readonly("alive", &RecordingData::alive_, "bool (frames, robots)")
+      .def_readonly("present", &RecordingData::present_,
+                    "bool (frames, robots): false before the loop functions added that robot (NaN pose)")
       .def_readonly("battery", &RecordingData::battery_, "float64 (frames, robots): charge / full (1/255 steps)")
       .def_readonly("ticks_per_second", &RecordingData::ticks_per_second_)
       .def_readonly("seed", &RecordingData::seed_)
       .def("to_pandas", &RecordingData::ToPandas,
-           "One row per (frame, robot): tick, robot, x, y, yaw, alive, battery.");
+           "One row per (frame, robot present in it): tick, robot, x, y, yaw, alive, battery.");
   m.def(
       "read_recording", [](const std::string& path) { return RecordingData(path); }, py::arg("path"),
       "Reads a run's recording.bin (the file, or the run folder holding it).");

@@ -91,13 +91,13 @@ void DrawTrails(cairo_t* cr, const Recording& rec, size_t frame, int trail_ticks
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (size_t i = 0; i < rec.RobotCount(); ++i) {
-    RecordedRobot start = rec.Robot(first, i);
-    cairo_move_to(cr, start.x, start.y);
-    for (size_t k = first + 1; k <= frame; ++k) {
-      RecordedRobot r = rec.Robot(k, i);
-      cairo_line_to(cr, r.x, r.y);
-    }
     RecordedRobot cur = rec.Robot(frame, i);
+    if (!cur.present) continue;
+    cairo_new_path(cr);
+    for (size_t k = first; k <= frame; ++k) {
+      RecordedRobot r = rec.Robot(k, i);
+      if (r.present) cairo_line_to(cr, r.x, r.y);  // the first present point starts the path
+    }
     if (!cur.alive)
       SetRgb(cr, kDead, 0.5);
     else if (cur.color.IsBlack())
@@ -145,15 +145,18 @@ void DrawLabels(cairo_t* cr, const Recording& rec, size_t frame, double radius, 
   const double font = std::max(10.0, std::min(14.0, height / 50.0));
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   std::vector<std::pair<double, double>> at(rec.RobotCount());
+  std::vector<bool> present(rec.RobotCount());
   for (size_t i = 0; i < rec.RobotCount(); ++i) {  // world to pixels, while the world frame is set
     RecordedRobot r = rec.Robot(frame, i);
     double x = r.x + radius, y = r.y + radius;
     cairo_user_to_device(cr, &x, &y);
     at[i] = {x, y};
+    present[i] = r.present;
   }
   cairo_identity_matrix(cr);
   cairo_set_font_size(cr, font);
-  for (size_t i = 0; i < rec.RobotCount(); ++i) DrawLabel(cr, rec.scene().robot_ids[i], at[i].first, at[i].second);
+  for (size_t i = 0; i < rec.RobotCount(); ++i)
+    if (present[i]) DrawLabel(cr, rec.scene().robot_ids[i], at[i].first, at[i].second);
   const uint64_t tick = rec.Tick(frame);
   char text[64];
   std::snprintf(text, sizeof text, "tick %llu (%.1f s)", static_cast<unsigned long long>(tick),
@@ -215,7 +218,10 @@ bool RenderSnapshotPng(const Recording& rec, size_t frame, const SnapshotOptions
   }
   if (opt.trail_ticks > 0) DrawTrails(cr, rec, frame, opt.trail_ticks, px);
   const double radius = std::max(s.robot_radius, 2 * px);
-  for (size_t i = 0; i < rec.RobotCount(); ++i) DrawRobot(cr, rec.Robot(frame, i), radius, px);
+  for (size_t i = 0; i < rec.RobotCount(); ++i) {
+    const RecordedRobot r = rec.Robot(frame, i);
+    if (r.present) DrawRobot(cr, r, radius, px);  // else added by the loop functions later
+  }
   if (opt.labels) DrawLabels(cr, rec, frame, radius, height);
 
   cairo_destroy(cr);

@@ -68,7 +68,7 @@ struct LiveServer::Impl {
   std::deque<LogLine> log;
   uint64_t log_total = 0;
   std::string scene = "null";
-  std::vector<std::string> robot_ids;  // of the experiment loaded, for log lines
+  std::vector<std::string> robot_ids;  // of the world's robots, for log lines
   std::vector<std::string> series_columns;
   std::vector<std::vector<double>> series_rows;
   uint64_t series_run = 0;
@@ -80,6 +80,7 @@ struct LiveServer::Impl {
   Clock::time_point pace_start;
   uint64_t pace_tick = 0;
   size_t series_copied = 0;
+  size_t robot_ids_copied = 0;
   Clock::time_point last_frame, last_watch;
 
   void AddLog(char stream, const std::string& text, const LogOrigin& from);
@@ -100,6 +101,7 @@ struct LiveServer::Impl {
   bool WatchFiles();
   void StepOnce();
   void CopySeries();
+  void CopyRobotIds();
   void Pace();
   void Publish();
   void Loop(const std::atomic<int>& stop);
@@ -304,14 +306,14 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
     std::lock_guard<std::mutex> lock(mutex);
     scene = std::move(scene_json);
     robot_ids.clear();
-    if (const World* w = experiment->world())
-      for (const RobotDef& r : w->model.robots) robot_ids.push_back(r.id);
     series_columns.clear();
     series_rows.clear();
     series_run = experiment->run();
   }
   series_copied = 0;
   CopySeries();
+  robot_ids_copied = 0;
+  CopyRobotIds();
   if (!experiment->Error().empty())
     Report(experiment->Error());
   else if (experiment->run() > 1)
@@ -346,6 +348,15 @@ void LiveServer::Impl::CopySeries() {
   series_copied = ts.rows.size();
 }
 
+// The loop functions may add foot-bots during a step: their log lines name them too.
+void LiveServer::Impl::CopyRobotIds() {
+  const World* w = experiment->world();
+  if (!w || w->model.robots.size() == robot_ids_copied) return;
+  std::lock_guard<std::mutex> lock(mutex);
+  for (size_t i = robot_ids.size(); i < w->model.robots.size(); ++i) robot_ids.push_back(w->model.robots[i].id);
+  robot_ids_copied = robot_ids.size();
+}
+
 void LiveServer::Impl::StepOnce() {
   StepStatus status = experiment->Step();
   if (ticks_left > 0 && --ticks_left == 0) last_frame = {};  // the last tick of a step is shown
@@ -355,6 +366,7 @@ void LiveServer::Impl::StepOnce() {
     last_frame = {};
   }
   CopySeries();
+  CopyRobotIds();
 }
 
 /// Below max speed, waits until the tick is due (a command cuts the wait short).

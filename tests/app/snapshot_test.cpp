@@ -197,6 +197,54 @@ TEST_F(Snapshot, TrailFollowsThePath) {
   EXPECT_TRUE(Near(shorter.At(1.55, 1.005), 255, 255, 255)) << Str(shorter.At(1.55, 1.005));
 }
 
+/// Non-floor pixels in a box of the image (the floor there is white).
+int InkedPixels(const Image& img, double x0, double y0, double x1, double y1) {
+  int inked = 0;
+  for (double y = y0; y < y1; y += 0.5 / img.px_per_m)
+    for (double x = x0; x < x1; x += 0.5 / img.px_per_m) inked += !Near(img.At(x, y), 255, 255, 255, 8);
+  return inked;
+}
+
+TEST_F(Snapshot, RobotAddedDuringTheRunIsDrawnOnlyOnceThere) {
+  dir_.Write("floor.lua",
+             "function floor_color(x, y) if x < 0 and y < 0 then return 0, 0, 255 end return 255, 255, 255 end\n"
+             "function post_step() if experiment.tick == 10 then\n"
+             "  experiment.add_entity('foot-bot', {id = 'late', controller = 'p', position = {1.5, 0.2}})\n"
+             "end end\n");
+  Scene s = Load(dir_, SnapshotExperiment());
+  ASSERT_TRUE(s.ok()) << s.error;
+  World& w = *s.world;
+  std::string error;
+  RecordingWriter writer;
+  ASSERT_TRUE(writer.Open(dir_.path() + "/recording.bin", w, 1, &error)) << error;
+  for (int t = 1; t <= 30; ++t) {
+    Step(w);
+    if (t == 10) {  // it drives east from where it was added
+      ASSERT_EQ(w.robots.size(), 3u);
+      w.robots[2].cmd.wheel_left = w.robots[2].cmd.wheel_right = 0.2;
+      w.robots[2].cmd.wheels_new = true;
+    }
+    writer.Record(w);
+  }
+  ASSERT_TRUE(writer.Finish(w, &error)) << error;
+  ASSERT_TRUE(Recording::Read(dir_.path() + "/recording.bin", &rec_, &error)) << error;
+  const size_t last = rec_.FrameCount() - 1;
+  ASSERT_FALSE(rec_.Robot(5, 2).present);
+  const RecordedRobot late = rec_.Robot(last, 2);
+  ASSERT_TRUE(late.present);
+  ASSERT_GT(late.x, 1.8) << "it drove";
+
+  const double r = rec_.scene().robot_radius;
+  Image before = Render(5, 100, 400, true);  // not added yet: no body, no label, no trail
+  EXPECT_EQ(InkedPixels(before, 1.5 - r, 0.2 - r, 1.5 + 5 * r, 0.2 + 2.5 * r), 0);
+  Image after = Render(last, 100, 400, true);
+  EXPECT_TRUE(Near(after.At(late.x, late.y - r / 2), 0xc8, 0xd0, 0xd8)) << Str(after.At(late.x, late.y - r / 2));
+  EXPECT_GT(InkedPixels(after, 1.55, 0.18, 1.65, 0.22), 0) << "its trail, from where it was added";
+  // The trail starts where it was added: nothing drawn from the frames before (had they
+  // been read as poses, a line would come in from far outside the arena on the left).
+  EXPECT_EQ(InkedPixels(after, -0.9, 0.15, 1.3, 0.3), 0);
+}
+
 #else
 
 TEST(Snapshot, SkippedWithoutCairo) { GTEST_SKIP() << "essaim built without Cairo (libcairo2-dev)"; }

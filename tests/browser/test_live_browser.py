@@ -1,7 +1,8 @@
 """`essaim serve`: the HTTP API (token, Host and Origin checks, control commands) and the live
 page in headless Chromium (Playwright): robots move after play, the inspector shows a Lua
 global, saving the controller reloads it (run counter, behaviour), a syntax error shows as
-file:line on the page and a fix clears it, with no page errors.
+file:line on the page and a fix clears it, with no page errors; a foot-bot the loop functions
+add appears on the page and in the API, its log lines under its id.
 
 Needs Python's `playwright` and Debian's chromium, as test_replay_browser.py.
 ESSAIM_DOC_SCREENSHOTS=1 also writes the screenshot docs/live.md shows (docs/img/live.png).
@@ -87,11 +88,10 @@ def save(path: Path, text: str):
     os.replace(tmp, path)
 
 
-@pytest.fixture
-def served(essaim, tmp_path):
+def serve(essaim, tmp_path, loop_text=LOOP):
     ctrl, loop = tmp_path / "ctrl.lua", tmp_path / "loop.lua"
     ctrl.write_text(FORWARD)
-    loop.write_text(LOOP)
+    loop.write_text(loop_text)
     argos = tmp_path / "live.argos"
     argos.write_text(experiment(ctrl, loop))
     proc = subprocess.Popen([essaim, "serve", str(argos), "--port", "0"], stdout=subprocess.PIPE,
@@ -99,10 +99,16 @@ def served(essaim, tmp_path):
     url = proc.stdout.readline().strip()
     assert url.startswith("http://127.0.0.1:") and "/?token=" in url, (url, proc.stderr.read() if proc.poll() else "")
     base, token = url.split("/?token=")
-    yield {"proc": proc, "url": url, "base": base, "token": token, "ctrl": ctrl}
-    if proc.poll() is None:
-        proc.send_signal(signal.SIGINT)
-        proc.wait(timeout=30)
+    return {"proc": proc, "url": url, "base": base, "token": token, "ctrl": ctrl}
+
+
+@pytest.fixture
+def served(essaim, tmp_path):
+    s = serve(essaim, tmp_path)
+    yield s
+    if s["proc"].poll() is None:
+        s["proc"].send_signal(signal.SIGINT)
+        s["proc"].wait(timeout=30)
 
 
 def call(base, path, token=None, body=None, headers=None):
@@ -228,6 +234,47 @@ def test_live_page_plays_inspects_and_reloads_on_save(served, browser, tmp_path)
     page.wait_for_function("document.getElementById('error').textContent === ''", timeout=10000)
     assert errors == []
     page.close()
+
+
+JOINING = LOOP + """
+function pre_step()
+  if experiment.tick == 4 then  -- before the controllers' step: it steps from tick 4 on
+    experiment.add_entity("foot-bot", {id = "newcomer", controller = "c", position = {0, 1.5}, orientation = 90})
+  end
+end
+"""
+
+
+def test_live_view_shows_a_robot_added_during_the_run(essaim, browser, tmp_path):
+    served = serve(essaim, tmp_path, JOINING)
+    try:
+        base, token = served["base"], served["token"]
+        page = browser.new_page(viewport={"width": 1200, "height": 760})
+        errors = []
+        page.on("pageerror", lambda e: errors.append(str(e)))
+        page.goto(served["url"])
+        page.wait_for_function("document.getElementById('view').dataset.robotCount === '5'", timeout=20000)
+        pos = page.evaluate("essaimLive.robotCanvasPosition(4)")  # fb4 selected before the newcomer joins
+        page.click("#view", position={"x": pos["x"], "y": pos["y"]})
+        page.wait_for_function("document.getElementById('inspector').textContent.startsWith('fb4')", timeout=10000)
+        assert call(base, "/api/control", token=token, body='{"cmd": "step", "ticks": 8}')[0] == 200
+        page.wait_for_function("document.getElementById('view').dataset.robotCount === '6'", timeout=20000)
+        state = wait_for(lambda: (s := call(base, "/api/state", token=token)[1])["tick"] == 8 and s)
+        assert [r["id"] for r in state["robots"]] == [f"fb{i}" for i in range(5)] + ["newcomer"]
+        assert state["robots"][5]["y"] > 1.5  # it drove north from where it was added
+        assert page.text_content("#inspector").startswith("fb4")  # the selection stays on its robot
+        status, robot = call(base, "/api/robot?robot=5", token=token)
+        assert status == 200 and robot["id"] == "newcomer" and robot["globals"]["state"]["trips"] == 5
+        lines = call(base, "/api/log?from=0", token=token)[1]["lines"]
+        assert [(l["who"], l["tick"]) for l in lines if l["text"] == "three steps"] == \
+            [(f"fb{i}", 3) for i in range(5)] + [("newcomer", 6)]
+        page.wait_for_function("document.getElementById('log').textContent.includes('newcomer] three steps')",
+                               timeout=10000)
+        assert errors == []
+        page.close()
+    finally:
+        served["proc"].send_signal(signal.SIGINT)
+        served["proc"].wait(timeout=30)
 
 
 def test_run_watch_reruns_on_save_until_ctrl_c(essaim, tmp_path):

@@ -1,6 +1,7 @@
 """Recorded runs end to end: `essaim run --record`, `essaim replay` and `essaim snapshot` from
 the command line, then the replay page in headless Chromium (Playwright): it loads, plays,
-draws every robot, selects a robot by a click, and loads a 30-robot 10000-tick run fast.
+draws every robot, selects a robot by a click, draws a robot the loop functions added only
+from its arrival, and loads a 30-robot 10000-tick run fast.
 
 The browser tests need Python's `playwright` (scripts/requirements.txt; its driver ships in
 the wheel) and Debian's chromium (scripts/setup.sh); `playwright install` is never used.
@@ -65,9 +66,10 @@ def foot_bot(i: int, x: float, y: float, yaw: float) -> str:
             f'<controller config="c"/></foot-bot>')
 
 
-def make_run(essaim, tmp: Path, name: str, robots: str, ticks: int, record="--record", arena=(6, 4)) -> Path:
+def make_run(essaim, tmp: Path, name: str, robots: str, ticks: int, record="--record", arena=(6, 4),
+             loop=LOOP) -> Path:
     (tmp / "ctrl.lua").write_text(CONTROLLER)
-    (tmp / "loop.lua").write_text(LOOP)
+    (tmp / "loop.lua").write_text(loop)
     argos = tmp / f"{name}.argos"
     argos.write_text(experiment(robots, ticks, tmp / "ctrl.lua", tmp / "loop.lua", arena))
     out = tmp / name
@@ -196,6 +198,42 @@ def test_replay_plays_draws_and_selects(essaim, browser, small_run, tmp_path):
     assert page.text_content("#tick") == "150"
     page.screenshot(path=str(tmp_path / "replay.png"))
     assert (tmp_path / "replay.png").stat().st_size > 1000
+    assert errors == []
+
+
+JOINING = LOOP + """
+function post_step()
+  if experiment.tick == 50 then
+    experiment.add_entity("foot-bot", {id = "newcomer", controller = "c", position = {0, 1}, orientation = 90})
+  end
+end
+"""
+
+
+def test_replay_and_snapshot_show_a_robot_added_during_the_run(essaim, browser, tmp_path):
+    run = make_run(essaim, tmp_path, "joined", FIVE, 100, loop=JOINING)
+    for tick in ("10", "100"):  # before and after its arrival
+        snap = subprocess.run([essaim, "snapshot", str(run), "--tick", tick, "--trail", "100", "-o",
+                               str(tmp_path / f"t{tick}.png")], capture_output=True, text=True, timeout=60)
+        assert snap.returncode == 0, snap.stderr
+    subprocess.run([essaim, "replay", str(run)], check=True, capture_output=True, timeout=60)
+    page, errors, _ = open_page(browser, run / "replay.html")
+    assert page.evaluate("window.essaimReplay.error || ''") == ""
+    assert page.evaluate("essaimReplay.ids") == [f"fb{i}" for i in range(5)] + ["newcomer"]
+    assert page.get_attribute("#view", "data-robot-count") == "5"
+    assert page.text_content("#info").endswith("5 robots, 5 alive")
+    assert page.evaluate("essaimReplay.robot(5).present") is False
+    page.evaluate("essaimReplay.setFrame(60)")  # every tick recorded: frame k is tick k
+    assert page.get_attribute("#view", "data-robot-count") == "6"
+    assert page.text_content("#info").endswith("6 robots, 6 alive")
+    pos = page.evaluate("essaimReplay.robotCanvasPosition(5)")
+    page.click("#view", position={"x": pos["x"], "y": pos["y"]})
+    assert page.text_content("#selected").startswith("newcomer  battery"), page.text_content("#selected")
+    page.evaluate("essaimReplay.setFrame(20)")  # selected, but not there yet: said, not drawn
+    assert page.text_content("#selected") == "newcomer  not added yet"
+    assert page.get_attribute("#view", "data-robot-count") == "5"
+    page.evaluate("essaimReplay.setFrame(100)")  # its trail starts where it was added
+    assert page.text_content("#selected").startswith("newcomer  battery")
     assert errors == []
 
 

@@ -3,6 +3,7 @@
 // controller's Lua globals, <loop_functions> children, the legacy <led position=...>.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 #include "core/json.h"
@@ -230,6 +231,56 @@ end
   EXPECT_NEAR(r.Movable(30, 0).x, s.world->physics.ObstaclePose(0).x, 1e-3);  // earlier slots intact
   ASSERT_EQ(r.scene().lights.size(), 1u);
   EXPECT_EQ(r.scene().lights[0].id, "lamp");
+}
+
+TEST(LoopEntities, AddedFootBotsAreRecorded) {
+  TempDir d;
+  d.Write("c.lua", "function step() robot.wheels.set_velocity(10, 12) end");
+  d.Write("loop.lua", R"(
+function init()  -- before the recording opens: in its scene from the start
+  experiment.add_entity("foot-bot", {id = "early", controller = "c", position = {0, 1}, orientation = 90})
+end
+function post_step()
+  if experiment.tick == 7 then experiment.add_entity("box", {id = "crate", position = {-1, -1}, size = {0.2, 0.2, 0.2}}) end
+  if experiment.tick == 12 then
+    experiment.add_entity("foot-bot", {id = "late", controller = "c", position = {1, -1}, orientation = 180})
+  end
+end
+)");
+  Scene s = Load(d, LoopExperiment(FootBot("fb0", 0, 0, 0, "c"), WheelsController("c", "c.lua")));
+  ASSERT_TRUE(s.ok()) << s.error;
+  RecordingWriter rec;
+  std::string err;
+  ASSERT_TRUE(rec.Open(d.path() + "/rec.bin", *s.world, 1, &err)) << err;
+  std::vector<std::vector<Pose2>> physics(1);  // per tick, per robot, as the physics had them
+  for (int i = 0; i < 2; ++i) physics[0].push_back(s.world->physics.RobotPose(i));
+  for (int t = 1; t <= 30; ++t) {
+    ASSERT_EQ(Step(*s.world), StepStatus::Running) << s.world->failure;
+    rec.Record(*s.world);
+    physics.emplace_back();
+    for (int i = 0; i < s.world->physics.RobotCount(); ++i) physics.back().push_back(s.world->physics.RobotPose(i));
+  }
+  ASSERT_TRUE(rec.Finish(*s.world, &err)) << err;
+  Recording r;
+  ASSERT_TRUE(Recording::Read(d.path() + "/rec.bin", &r, &err)) << err;
+  ASSERT_EQ(r.scene().robot_ids, (std::vector<std::string>{"fb0", "early", "late"}));
+  ASSERT_EQ(r.FrameCount(), 31u);
+  EXPECT_EQ(r.FrameBytes(), 4u + 3 * 10u + 8u);  // three robots, one late box
+  for (size_t k = 0; k < r.FrameCount(); ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    for (size_t i = 0; i < 3; ++i) {
+      const RecordedRobot robot = r.Robot(k, i);
+      ASSERT_EQ(robot.present, i < 2 || k >= 12) << r.scene().robot_ids[i];
+      EXPECT_EQ(robot.alive, robot.present);
+      if (!robot.present) continue;
+      EXPECT_NEAR(robot.x, physics[k][i].x, 0.5e-3 + 1e-9) << r.scene().robot_ids[i];
+      EXPECT_NEAR(robot.y, physics[k][i].y, 0.5e-3 + 1e-9) << r.scene().robot_ids[i];
+    }
+    EXPECT_EQ(r.MovablePresent(k, 0), k >= 7);  // the box's slot after the late robot's
+  }
+  EXPECT_NEAR(r.Robot(12, 2).x, 1, 1e-3);                                   // where it was added
+  EXPECT_GT(std::hypot(r.Robot(30, 2).x - 1, r.Robot(30, 2).y + 1), 0.05);  // and it drove on
+  EXPECT_NEAR(r.Movable(30, 0).x, -1, 1e-3);
 }
 
 TEST(LoopEntities, RemovingAHeldCylinderReleasesTheGripAndShiftsNoOtherHold) {

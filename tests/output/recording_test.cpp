@@ -1,7 +1,8 @@
 // Recordings (docs/recording.md): a run recorded and read back matches the run's own trace
 // within the quantisation (1 mm, 2π/65536 rad, 1/255 of battery); every=N keeps ticks
 // 0, N, 2N… and the last; dead flags, battery, LED colour, movable obstacles, the scene and
-// the floor are stored; the file appears only when the recording is finished.
+// the floor are stored; robots the loop functions add during the run are absent from the
+// frames before their arrival; the file appears only when the recording is finished.
 #include "output/recording.h"
 
 #include <gtest/gtest.h>
@@ -174,6 +175,49 @@ TEST(Recording, DeadFlagBatteryAndLedColour) {
       EXPECT_TRUE(c.IsBlack());
     EXPECT_TRUE(rec.Robot(k, 1).color.IsBlack());
   }
+}
+
+TEST(Recording, RobotsAddedDuringTheRunAreAbsentBeforeTheirArrival) {
+  TempDir d;
+  // Two foot-bots join in post_step of tick 7 (between the frames of ticks 5 and 10), one
+  // more at tick 21 (after the last multiple of 5, before the last frame, tick 23).
+  d.Write("lf.lua",
+          "function post_step()\n"
+          "  local t = experiment.tick\n"
+          "  if t == 7 then\n"
+          "    experiment.add_entity('foot-bot', {id = 'd', controller = 'p', position = {-2, 1}})\n"
+          "    experiment.add_entity('foot-bot', {id = 'e', controller = 'p', position = {-2, 2}, orientation = 45})\n"
+          "  end\n"
+          "  if t == 21 then experiment.add_entity('foot-bot', {id = 'f', controller = 'p', position = {3, 3}}) end\n"
+          "end\n");
+  std::string arena = FootBot("a", -1, -1, 0, "p") + FootBot("b", 1, 0.5, 90, "p") + FootBot("c", 0, 2, 200, "p");
+  Scene s = Load(d, Experiment(arena, kPlainController, 100, 1, "<loop_functions script=\"lf.lua\"/>\n"));
+  ASSERT_TRUE(s.ok()) << s.error;
+  Wheels(s.world->robots[0], 0.10, 0.15);
+  const std::string path = d.path() + "/recording.bin";
+  Trace trace = RecordRun(*s.world, path, 5, 23);
+  ASSERT_EQ(s.world->robots.size(), 6u);
+
+  Recording rec;
+  std::string error;
+  ASSERT_TRUE(Recording::Read(path, &rec, &error)) << error;
+  EXPECT_EQ(rec.scene().robot_ids, (std::vector<std::string>{"a", "b", "c", "d", "e", "f"}));
+  EXPECT_EQ(rec.FrameBytes(), 4u + 6 * 10u);
+  ASSERT_EQ(rec.FrameCount(), 6u);  // ticks 0, 5, 10, 15, 20, 23
+  for (size_t k = 0; k < rec.FrameCount(); ++k) {
+    const uint64_t tick = rec.Tick(k);
+    SCOPED_TRACE("tick " + std::to_string(tick));
+    const std::vector<Pose2>& poses = trace.poses[tick];
+    ASSERT_EQ(poses.size(), tick < 7 ? 3u : tick < 21 ? 5u : 6u);
+    ExpectFrameMatches(rec, k, poses);  // those present, where the physics had them
+    for (size_t i = 0; i < 6; ++i) EXPECT_EQ(rec.Robot(k, i).present, i < poses.size()) << "robot " << i;
+  }
+  const RecordedRobot absent = rec.Robot(1, 3);
+  EXPECT_FALSE(absent.alive);
+  EXPECT_EQ(absent.x, 0.0);
+  EXPECT_NEAR(rec.Robot(2, 4).yaw, DegToRad(45), 1e-4);
+  EXPECT_NEAR(rec.Robot(5, 5).x, 3, 1e-3);
+  EXPECT_TRUE(rec.Robot(5, 5).alive);
 }
 
 TEST(Recording, SceneMovableObstaclesAndFloor) {

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "output/recording.h"
 #include "support/scene.h"
 
 namespace {
@@ -106,6 +107,31 @@ TEST(Allocations, AStepMakesNoCppAllocationAfterWarmUp) {
     EXPECT_EQ(g_news.load() - before, 0) << "threads=" << threads;
     EXPECT_TRUE(s.world->controller_errors.empty()) << s.world->controller_errors[0].message;
   }
+}
+
+// The recorder copies a frame into the buffer Open() made; it keeps slots aside (and
+// allocates) only for robots and obstacles the loop functions add during the run.
+TEST(Allocations, RecordingAFrameMakesNoCppAllocation) {
+  TempDir d;
+  d.Write("c.lua", kController);
+  d.Write("loop.lua", kLoop);
+  Scene s = Load(d, Busy());
+  ASSERT_TRUE(s.ok()) << s.error << s.errors.Format();
+  RecordingWriter rec;
+  std::string error;
+  ASSERT_TRUE(rec.Open(d.path() + "/recording.bin", *s.world, 1, &error)) << error;
+  auto record = [&](int ticks) {
+    for (int t = 0; t < ticks; ++t) {
+      Step(*s.world);
+      rec.Record(*s.world);
+    }
+  };
+  record(50);
+  long before = g_news.load();
+  record(9);
+  EXPECT_EQ(g_news.load() - before, 0);
+  EXPECT_EQ(rec.FramesWritten(), 60u);
+  EXPECT_TRUE(rec.Finish(*s.world, &error)) << error;
 }
 
 TEST(Allocations, LuaMemoryStaysFlat) {

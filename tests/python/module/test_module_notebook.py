@@ -1,6 +1,7 @@
 """The module as a notebook uses it: controller errors and log() lines through `logging`
 and `Simulation.errors`, strict, summary before finish, reset, a robot's Lua global,
-render() to PNG, yaw in (-pi, pi], and recording.bin read back as numpy/pandas."""
+render() to PNG, yaw in (-pi, pi], recording.bin read back as numpy/pandas, and foot-bots the
+loop functions add during the run (listed, logged, recorded absent before their arrival)."""
 import json
 import logging
 import math
@@ -150,6 +151,69 @@ def test_recording_reader_matches_the_recorded_run(essaim_bin, tmp_path):
     assert last.loc["fb3", "x"] == rec.poses[-1, 3, 0]
     with pytest.raises(essaim.Error):
         essaim.read_recording(str(tmp_path / "nope.bin"))
+
+
+JOINING_ARGOS = """<?xml version="1.0" ?>
+<argos-configuration>
+  <framework><experiment length="0" ticks_per_second="10" random_seed="3"/></framework>
+  <controllers>
+    <lua_controller id="walker">
+      <actuators><differential_steering implementation="default"/></actuators>
+      <sensors><positioning implementation="default"/></sensors>
+      <params script="walker.lua"/>
+    </lua_controller>
+  </controllers>
+  <loop_functions script="loop.lua"/>
+  <arena size="4,4,1" center="0,0,0.5">
+    <foot-bot id="fb0"><body position="0,0,0" orientation="0,0,0"/><controller config="walker"/></foot-bot>
+  </arena>
+  <physics_engines><dynamics2d id="dyn2d"/></physics_engines>
+  <media/>
+</argos-configuration>
+"""
+
+JOINING_LOOP = """
+function init()
+  experiment.add_entity("foot-bot", {id = "early", controller = "walker", position = {1, 0}, orientation = 90})
+end
+function post_step()
+  if experiment.tick == 10 then
+    experiment.add_entity("foot-bot", {id = "late", controller = "walker", position = {-1, 0}})
+  end
+end
+"""
+
+
+def test_robots_added_during_the_run(essaim_bin, tmp_path, caplog):
+    # The loop functions add one foot-bot in init() and one at tick 10; each logs in init().
+    (tmp_path / "walker.lua").write_text('function init() n = 0 log("joined") end\n'
+                                         "function step() n = n + 1 robot.wheels.set_velocity(5, 5) end\n")
+    (tmp_path / "loop.lua").write_text(JOINING_LOOP)
+    argos = tmp_path / "joining.argos"
+    argos.write_text(JOINING_ARGOS)
+    with caplog.at_level(logging.INFO, logger="essaim"):
+        with essaim.Simulation(str(argos)) as sim:
+            assert sim.robot_ids == ["fb0", "early"]
+            sim.step(20)
+            assert sim.robot_ids == ["fb0", "early", "late"]
+            assert sim.battery().shape == sim.alive().shape == (3,) and sim.poses().shape == (3, 3)
+            assert sim.lua_global("late", "n") == 10 and sim.lua_global(2, "n") == 10
+    assert [(r.robot, r.tick) for r in caplog.records if r.getMessage().endswith("joined")] == \
+        [("fb0", 0), ("early", 0), ("late", 10)]
+
+    out = tmp_path / "run"
+    subprocess.run([essaim_bin, "run", str(argos), "--ticks", "20", "--quiet", "--record", "--out", str(out)],
+                   check=True)
+    rec = essaim.read_recording(str(out))
+    assert rec.robot_ids == ["fb0", "early", "late"]
+    assert rec.present[:, :2].all() and not rec.present[:10, 2].any() and rec.present[10:, 2].all()
+    assert np.isnan(rec.poses[:10, 2]).all() and np.isnan(rec.battery[:10, 2]).all()
+    assert not rec.alive[:10, 2].any() and rec.alive[10:].all()
+    assert rec.poses[10, 2, 0] == pytest.approx(-1, abs=0.001)  # where it was added
+    df = rec.to_pandas()
+    assert len(df) == 21 * 3 - 10 and list(df.index) == list(range(len(df)))
+    assert not df.isna().any().any()
+    assert df[df.robot == "late"].tick.tolist() == list(range(10, 21))
 
 
 def test_per_robot_arrays_hold_each_robots_own_value(tmp_path):
