@@ -37,7 +37,7 @@ LogPrinter::LogPrinter(const Model& model, bool prefix, std::string dir) : prefi
 }
 
 std::string LogPrinter::PathOf(size_t slot) const {
-  std::string name = slot < robot_ids_.size() ? FileNameFor(robot_ids_[slot], slot) : "loop_functions";
+  std::string name = slot == 0 ? "loop_functions" : FileNameFor(robot_ids_[slot - 1], slot - 1);
   return JoinPath(dir_, name + ".log");
 }
 
@@ -56,15 +56,26 @@ bool LogPrinter::Prepare(std::string* error) {
 }
 
 std::string LogPrinter::Prefix(const LogOrigin& from) const {
-  std::string who =
-      from.robot >= 0 && static_cast<size_t>(from.robot) < robot_ids_.size() ? robot_ids_[from.robot] : "loop";
+  const std::string who = from.robot_id ? from.robot_id : "loop";
   return "[t=" + std::to_string(from.tick) + " " + who + "] ";
+}
+
+size_t LogPrinter::SlotOf(const LogOrigin& from) {
+  if (from.robot < 0) return 0;
+  const size_t robot = static_cast<size_t>(from.robot);
+  if (robot >= robot_ids_.size()) {
+    robot_ids_.resize(robot + 1);
+    robot_ids_[robot] = from.robot_id ? from.robot_id : "robot" + std::to_string(robot);
+    pending_.resize(robot + 2);
+    started_.resize(robot + 2, false);
+  }
+  return robot + 1;
 }
 
 void LogPrinter::Print(char stream, const std::string& line, const LogOrigin& from) {
   bool from_script = from.robot != kLogHost;
   if (!dir_.empty() && from_script) {
-    size_t slot = from.robot >= 0 ? static_cast<size_t>(from.robot) : robot_ids_.size();
+    const size_t slot = SlotOf(from);
     std::string& p = pending_[slot];
     if (prefix_) p += Prefix(from);
     p += line;

@@ -31,6 +31,9 @@ class LogPrinter {
 
  private:
   std::string Prefix(const LogOrigin& from) const;
+  /// The --log-dir slot of a script's line (0: loop functions; robot i: i + 1), made for a
+  /// robot the loop functions added during the run.
+  size_t SlotOf(const LogOrigin& from);
   bool WriteOut(size_t slot, std::string* error);
   std::string PathOf(size_t slot) const;  // DIR/<robot id>.log, DIR/loop_functions.log
 
@@ -38,7 +41,7 @@ class LogPrinter {
   bool prefix_;
   std::string dir_;
   Progress* progress_ = nullptr;
-  // --log-dir: per robot (last slot: loop functions), lines waiting in memory and whether
+  // --log-dir: per slot (SlotOf), lines waiting in memory and whether
   // the file was started. Written in blocks so a thousand robots need no thousand open files.
   std::vector<std::string> pending_;
   std::vector<bool> started_;

@@ -211,7 +211,7 @@ void FlushLog(World& w, std::string& buffer, int robot) {
   if (buffer.empty()) return;
   if (w.options.log_sink) {
     // Each line is "<stream char><text>\n" (lua_state.cpp's log/logerr/print).
-    const LogOrigin from{w.tick, robot};
+    const LogOrigin from{w.tick, robot, robot >= 0 ? w.model.robots[robot].id.c_str() : nullptr};
     size_t start = 0;
     while (start < buffer.size()) {
       size_t end = buffer.find('\n', start);

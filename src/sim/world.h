@@ -49,6 +49,9 @@ struct ControllerError {
 struct LogOrigin {
   uint64_t tick = 0;
   int robot = -1;
+  /// The robot's id (valid during the call; null when `robot` < 0): robots the loop
+  /// functions add are named before a printer made from the model knows them.
+  const char* robot_id = nullptr;
 };
 constexpr int kLogLoopFunctions = -1;
 constexpr int kLogHost = -2;

@@ -84,3 +84,24 @@ def test_log_dir_keeps_odd_robot_ids_inside_the_folder(tmp_path):
     assert sorted(p.name for p in logs.iterdir()) == [f"_.._fb{i}~{i}.log" for i in range(4)]
     assert (logs / "_.._fb2~2.log").read_text() == "../fb2\n" * 5
     assert not list(tmp_path.glob("fb*.log"))
+
+
+def test_robots_added_during_the_run_have_their_own_log_file_and_prefix(tmp_path):
+    f = experiment(tmp_path)
+    (tmp_path / "logger.lua").write_text('function init() log("hello ", robot.id) end\nfunction step() end\n')
+    (tmp_path / "loop.lua").write_text(
+        'function post_step()\n'
+        '  if experiment.tick == 3 then experiment.add_entity("foot-bot", {id = "late", controller = "ctrl",'
+        ' position = {0, 1.9}}) end\n'
+        'end\n')
+    f.write_text(f.read_text().replace("<arena ", f'<loop_functions script="{tmp_path}/loop.lua"/>\n  <arena '))
+    logs = tmp_path / "logs"
+    r = subprocess.run([ESSAIM, "run", str(f), "--ticks", "5", "--quiet", "--log-dir", str(logs),
+                        "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert (logs / "late.log").read_text() == "hello late\n"
+    assert (logs / "fb3.log").read_text() == "hello fb3\n"
+    r = subprocess.run([ESSAIM, "run", str(f), "--ticks", "5", "--quiet", "--log-prefix",
+                        "--out", str(tmp_path / "p")], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "[t=3 late] hello late"
