@@ -75,7 +75,7 @@ end
   EXPECT_EQ(Global(w, 2, "steps"), 1);  // added in post_step of tick 2: from tick 3
   EXPECT_EQ(Global(w, 0, "heard"), 2);
   EXPECT_EQ(Global(w, 1, "heard"), 1);  // fb0 hides the third from it
-  EXPECT_GT(Global(w, 0, "near"), 0);  // 8 cm apart, face to face
+  EXPECT_GT(Global(w, 0, "near"), 0);   // 8 cm apart, face to face
   EXPECT_GT(Global(w, 1, "near"), 0);
   EXPECT_EQ(Global(w, 2, "near"), 0);
   EXPECT_EQ(w.robot_steps, 2u + 2 + 3);  // robots stepped at ticks 1, 2 and 3
