@@ -30,9 +30,7 @@ std::vector<ArgosRef> StoreWorld::Entities(int kind) const {
 
 // Added() only grows and All() only shrinks when nothing is added: the pair changes on every
 // addition or removal.
-uint64_t StoreWorld::LayoutVersion() const {
-  return (static_cast<uint64_t>(entities_.Added().size()) << 32) | entities_.All().size();
-}
+uint64_t StoreWorld::LayoutVersion() const { return entities_.LayoutVersion(); }
 
 bool StoreWorld::Pose(const ArgosRef& e, ArgosPose* pose) const {
   const int index = entities_.IndexOf(Ref(e));

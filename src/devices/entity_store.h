@@ -62,6 +62,8 @@ class EntityStore {
   const std::string& IdOf(const EntityRef& e) const;
   /// Live entities of every kind.
   size_t Count() const;
+  /// Changes whenever an entity is added or removed (not when one moves or changes colour).
+  uint64_t LayoutVersion() const { return (static_cast<uint64_t>(added_.size()) << 32) | order_.size(); }
 
   // ---- reading and moving an entity `e` that is live at `index` (IndexOf)
   /// x, y from the physics (lights: the scene), z from the scene.

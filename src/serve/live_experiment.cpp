@@ -76,6 +76,7 @@ Value FrameValue(const World& w, const FrameInfo& info) {
   f.Set("obstacles", Value::OfUnsigned(w.model.obstacles.size()));
   f.Set("series_rows", Value::OfUnsigned(info.series_rows));
   f.Set("log_lines", Value::OfUnsigned(info.log_lines));
+  f.Set("scene", Value::OfUnsigned(info.scene));
   return f;
 }
 

@@ -81,6 +81,9 @@ struct LiveServer::Impl {
   uint64_t pace_tick = 0;
   size_t series_copied = 0;
   size_t robot_ids_copied = 0;
+  // /api/scene's version and the entity layout it shows (sim thread only): boxes, cylinders
+  // and lights the loop functions add or remove make a new scene at the next frame.
+  uint64_t scene_version = 0, scene_layout = 0;
   Clock::time_point last_frame, last_watch;
 
   void AddLog(char stream, const std::string& text, const LogOrigin& from);
@@ -102,6 +105,8 @@ struct LiveServer::Impl {
   void StepOnce();
   void CopySeries();
   void CopyRobotIds();
+  /// A new /api/scene when the loop functions added or removed entities since the last.
+  void RefreshScene();
   void Pace();
   void Publish();
   void Loop(const std::atomic<int>& stop);
@@ -302,6 +307,8 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
     return;
   }
   std::string scene_json = experiment->world() ? SceneText(*experiment->world()) : "null";
+  if (experiment->world()) scene_layout = experiment->world()->entities.LayoutVersion();
+  ++scene_version;
   {
     std::lock_guard<std::mutex> lock(mutex);
     scene = std::move(scene_json);
@@ -386,9 +393,21 @@ void LiveServer::Impl::Pace() {
   wake.wait_until(lock, due, [this] { return !commands.empty() || !inspections.empty(); });
 }
 
+void LiveServer::Impl::RefreshScene() {
+  const World* w = experiment->world();
+  if (!w || w->entities.LayoutVersion() == scene_layout) return;
+  std::string text = SceneText(*w);  // once per frame at most: the floor is encoded anew
+  scene_layout = w->entities.LayoutVersion();
+  ++scene_version;
+  std::lock_guard<std::mutex> lock(mutex);
+  scene = std::move(text);
+}
+
 void LiveServer::Impl::Publish() {
   last_frame = Clock::now();
+  RefreshScene();
   FrameInfo info;
+  info.scene = scene_version;
   info.run = experiment->run();
   info.paused = !playing && ticks_left == 0;
   info.speed = speed;

@@ -240,7 +240,10 @@ JOINING = LOOP + """
 function pre_step()
   if experiment.tick == 4 then  -- before the controllers' step: it steps from tick 4 on
     experiment.add_entity("foot-bot", {id = "newcomer", controller = "c", position = {0, 1.5}, orientation = 90})
+    experiment.add_entity("cylinder", {id = "drum", position = {-2, -1.5}, radius = 0.1, height = 0.2,
+                                       movable = true, mass = 0.5})
   end
+  if experiment.tick == 6 then experiment.remove_entity(experiment.entities("box")[1]) end
 end
 """
 
@@ -270,6 +273,11 @@ def test_live_view_shows_a_robot_added_during_the_run(essaim, browser, tmp_path)
             [(f"fb{i}", 3) for i in range(5)] + [("newcomer", 6)]
         page.wait_for_function("document.getElementById('log').textContent.includes('newcomer] three steps')",
                                timeout=10000)
+        # The cylinder added at tick 4 and the crate removed at tick 6 reach the page's scene.
+        scene = call(base, "/api/scene", token=token)[1]
+        assert [o["id"] for o in scene["obstacles"]] == ["drum"] and state["scene"] >= 2
+        assert [m[0] for m in state["movable"]] == [0]  # the drum, by its index in the new scene
+        page.wait_for_function("document.getElementById('view').dataset.obstacles === '1'", timeout=10000)
         assert errors == []
         page.close()
     finally:
