@@ -30,6 +30,7 @@ struct LogLine {
   uint64_t number = 0, tick = 0;
   int robot = -1;
   char stream = 'O';
+  std::string who;  // the robot's id, "loop_functions" or "essaim"
   std::string text;
 };
 
@@ -68,7 +69,6 @@ struct LiveServer::Impl {
   std::deque<LogLine> log;
   uint64_t log_total = 0;
   std::string scene = "null";
-  std::vector<std::string> robot_ids;  // of the world's robots, for log lines
   std::vector<std::string> series_columns;
   std::vector<std::vector<double>> series_rows;
   uint64_t series_run = 0;
@@ -80,7 +80,6 @@ struct LiveServer::Impl {
   Clock::time_point pace_start;
   uint64_t pace_tick = 0;
   size_t series_copied = 0;
-  size_t robot_ids_copied = 0;
   // /api/scene's version and the entity layout it shows (sim thread only): boxes, cylinders
   // and lights the loop functions add or remove make a new scene at the next frame.
   uint64_t scene_version = 0, scene_layout = 0;
@@ -104,7 +103,6 @@ struct LiveServer::Impl {
   bool WatchFiles();
   void StepOnce();
   void CopySeries();
-  void CopyRobotIds();
   /// A new /api/scene when the loop functions added or removed entities since the last.
   void RefreshScene();
   void Pace();
@@ -114,7 +112,8 @@ struct LiveServer::Impl {
 
 void LiveServer::Impl::AddLog(char stream, const std::string& text, const LogOrigin& from) {
   std::lock_guard<std::mutex> lock(mutex);
-  log.push_back({++log_total, from.tick, from.robot, stream, text});
+  const char* who = from.robot_id ? from.robot_id : from.robot == kLogLoopFunctions ? "loop_functions" : "essaim";
+  log.push_back({++log_total, from.tick, from.robot, stream, who, text});
   if (log.size() > kLogKept) log.pop_front();
 }
 
@@ -163,13 +162,10 @@ HttpResponse LiveServer::Impl::Log(const HttpRequest& req) {
   std::lock_guard<std::mutex> lock(mutex);
   for (const LogLine& l : log) {
     if (l.number <= from) continue;
-    std::string who = l.robot >= 0 && static_cast<size_t>(l.robot) < robot_ids.size()
-                          ? robot_ids[l.robot]
-                          : (l.robot == kLogLoopFunctions ? "loop_functions" : "essaim");
     lines.list.push_back(Value::MapOf({{"n", Value::OfUnsigned(l.number)},
                                        {"tick", Value::OfUnsigned(l.tick)},
                                        {"robot", Value::OfInteger(l.robot)},
-                                       {"who", Value::OfString(who)},
+                                       {"who", Value::OfString(l.who)},
                                        {"error", Value::OfBool(l.stream == 'E')},
                                        {"text", Value::OfString(l.text)}}));
   }
@@ -312,15 +308,12 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
   {
     std::lock_guard<std::mutex> lock(mutex);
     scene = std::move(scene_json);
-    robot_ids.clear();
     series_columns.clear();
     series_rows.clear();
     series_run = experiment->run();
   }
   series_copied = 0;
   CopySeries();
-  robot_ids_copied = 0;
-  CopyRobotIds();
   if (!experiment->Error().empty())
     Report(experiment->Error());
   else if (experiment->run() > 1)
@@ -355,15 +348,6 @@ void LiveServer::Impl::CopySeries() {
   series_copied = ts.rows.size();
 }
 
-// The loop functions may add foot-bots during a step: their log lines name them too.
-void LiveServer::Impl::CopyRobotIds() {
-  const World* w = experiment->world();
-  if (!w || w->model.robots.size() == robot_ids_copied) return;
-  std::lock_guard<std::mutex> lock(mutex);
-  for (size_t i = robot_ids.size(); i < w->model.robots.size(); ++i) robot_ids.push_back(w->model.robots[i].id);
-  robot_ids_copied = robot_ids.size();
-}
-
 void LiveServer::Impl::StepOnce() {
   StepStatus status = experiment->Step();
   if (ticks_left > 0 && --ticks_left == 0) last_frame = {};  // the last tick of a step is shown
@@ -373,7 +357,6 @@ void LiveServer::Impl::StepOnce() {
     last_frame = {};
   }
   CopySeries();
-  CopyRobotIds();
 }
 
 /// Below max speed, waits until the tick is due (a command cuts the wait short).
