@@ -185,9 +185,6 @@ bool StoreWorld::Add(const ArgosRobot& robot, ArgosRef* added, std::string* erro
   RobotDef def;
   def.id = robot.id;
   def.controller_id = robot.controller_id;
-  for (size_t i = 0; i < model_.controllers.size(); ++i)
-    if (model_.controllers[i].id == def.controller_id) def.controller = static_cast<int>(i);
-  if (def.controller >= 0) def.params = model_.controllers[def.controller].params;
   def.pose = {robot.pose.x, robot.pose.y, robot.pose.yaw};
   def.z = robot.pose.z;
   def.rab_range = robot.rab_range;

@@ -82,11 +82,16 @@ EntityRef EntityStore::AddObstacle(const ObstacleDef& def) {
   return e;
 }
 
+int EntityStore::ControllerIndex(const std::string& id) const {
+  for (size_t i = 0; i < scene_->controllers.size(); ++i)
+    if (scene_->controllers[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
 std::string EntityStore::RobotProblemNow(const RobotDef& def) const {
   if (!joiner_) return "foot-bots can be added from the loop functions' init() on";
   if (HasId(def.id)) return "id '" + def.id + "' is already used";
-  if (def.controller < 0 || def.controller >= static_cast<int>(scene_->controllers.size()))
-    return "no controller with id '" + def.controller_id + "'";
+  if (ControllerIndex(def.controller_id) < 0) return "no controller with id '" + def.controller_id + "'";
   const Vec2 p(def.pose.x, def.pose.y), lo = scene_->arena.Min(), hi = scene_->arena.Max();
   if (!std::isfinite(def.pose.yaw) || !(p.array() >= lo.array()).all() || !(p.array() <= hi.array()).all())
     return "position (" + FormatDouble(p.x()) + ", " + FormatDouble(p.y()) + ") is outside the arena";
@@ -97,7 +102,10 @@ bool EntityStore::AddRobot(const RobotDef& def, EntityRef* added, std::string* e
   *error = RobotProblemNow(def);
   if (!error->empty()) return false;
   scene_->robots.push_back(def);
-  const int index = physics_->AddRobot(def);
+  RobotDef& bound = scene_->robots.back();  // bound to its controller, as the loader binds
+  bound.controller = ControllerIndex(def.controller_id);
+  bound.params = scene_->controllers[bound.controller].params;
+  const int index = physics_->AddRobot(bound);
   robots_->emplace_back();
   InitRobotState(*scene_, index, robots_->back(), *physics_);
   if (!joiner_->Join(index, error)) {

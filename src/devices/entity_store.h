@@ -107,7 +107,8 @@ class EntityStore {
   /// its controller or place outside the arena, over the limits), or "". Overlaps are
   /// allowed, as in ARGoS, whose loop functions add a robot and then move it somewhere free.
   std::string RobotProblemNow(const RobotDef& def) const;
-  /// Adds a foot-bot (controller index, pose, devices from `def`) to the scene, the
+  /// Adds a foot-bot (pose, devices from `def`; the controller named by `def.controller_id`,
+  /// whose index and <params> it takes) to the scene, the
   /// physics and the robots' states, then has the joiner make its controller. False with
   /// `error` (and nothing added) when RobotProblemNow or the joiner says no.
   bool AddRobot(const RobotDef& def, EntityRef* added, std::string* error);
@@ -125,6 +126,8 @@ class EntityStore {
   void ClearChanged() { changed_ = layout_changed_ = false; }
 
  private:
+  /// Index of the <lua_controller> with this id in the scene, or -1.
+  int ControllerIndex(const std::string& id) const;
   void MarkChanged(bool layout) { changed_ = true, layout_changed_ |= layout; }
   Model* scene_ = nullptr;
   PhysicsWorld* physics_ = nullptr;

@@ -180,8 +180,8 @@ void ParseObstacle(lua_State* L, LoopContext* ctx, EntityKind kind, int line) {
   RaiseIf(L, ctx->entities->ObstacleProblemNow(o));
 }
 
-// A foot-bot as <foot-bot> declares one: the controller by its <lua_controller id>, its
-// <params> with it, the rab_* attributes; battery and dynamics as the XML's defaults.
+// A foot-bot as <foot-bot> declares one: the controller by its <lua_controller id> (the
+// store binds it), the rab_* attributes; battery and dynamics as the XML's defaults.
 void ParseFootBot(lua_State* L, LoopContext* ctx, int line) {
   RobotDef& r = ctx->robot_spec;
   r = RobotDef();
@@ -191,9 +191,6 @@ void ParseFootBot(lua_State* L, LoopContext* ctx, int line) {
   r.pose = {p.x(), p.y(), DegToRad(Number(L, "orientation", 0, false))};
   r.z = p.z();
   SetString(L, "controller", &r.controller_id, true);
-  const std::vector<ControllerDef>& controllers = ctx->model->controllers;
-  for (size_t i = 0; i < controllers.size(); ++i)
-    if (controllers[i].id == r.controller_id) r.controller = static_cast<int>(i), r.params = controllers[i].params;
   r.rab_range = Number(L, "rab_range", 3.0, false);
   if (r.rab_range < 0) luaL_error(L, "add_entity: 'rab_range' must be >= 0");
   const double data_size = Number(L, "rab_data_size", 10, false);
