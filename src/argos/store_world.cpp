@@ -190,9 +190,10 @@ bool StoreWorld::Add(const ArgosRobot& robot, ArgosRef* added, std::string* erro
   def.rab_range = robot.rab_range;
   def.camera_aperture = robot.camera_aperture;
   def.loc.element = "AddEntity";
-  if (!(def.rab_range >= 0)) *error = "rab_range must be >= 0";
-  if (robot.rab_data_size > 65536) *error = "rab_data_size out of range";
-  if (!error->empty()) return false;
+  if (robot.rab_data_size > 65536) {
+    *error = "rab_data_size out of range";
+    return false;
+  }
   def.rab_data_size = static_cast<int>(robot.rab_data_size);
   EntityRef e;
   if (!entities_.AddRobot(def, &e, error)) return false;

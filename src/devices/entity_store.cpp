@@ -93,8 +93,14 @@ std::string EntityStore::RobotProblemNow(const RobotDef& def) const {
   if (HasId(def.id)) return "id '" + def.id + "' is already used";
   if (ControllerIndex(def.controller_id) < 0) return "no controller with id '" + def.controller_id + "'";
   const Vec2 p(def.pose.x, def.pose.y), lo = scene_->arena.Min(), hi = scene_->arena.Max();
-  if (!std::isfinite(def.pose.yaw) || !(p.array() >= lo.array()).all() || !(p.array() <= hi.array()).all())
+  if (!(p.array() >= lo.array()).all() || !(p.array() <= hi.array()).all())
     return "position (" + FormatDouble(p.x()) + ", " + FormatDouble(p.y()) + ") is outside the arena";
+  if (!std::isfinite(def.pose.yaw) || !std::isfinite(def.z)) return "its orientation and height must be finite";
+  // C++ loop functions hand these over unchecked: a NaN or infinite range would size the
+  // media's grids from it.
+  if (!(def.rab_range >= 0) || !std::isfinite(def.rab_range)) return "rab_range must be a finite number >= 0";
+  if (!(def.camera_aperture > 0) || !std::isfinite(def.camera_aperture))
+    return "the omnidirectional camera's aperture must be a finite angle > 0";
   return RoomProblem(true);
 }
 

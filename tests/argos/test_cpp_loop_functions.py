@@ -81,6 +81,7 @@ CENSUS_EXPECTED = {
     "lights_after_add": "2", "added_led_green": "1", "boxes_after_remove": "1",
     "foot_bots_after_add": "3", "added_robot_moved": "1", "added_robot_x": "1.5", "added_robot_leds": "13",
     "added_robot_counter": "42", "add_unknown_controller_throws": "1", "add_duplicate_id_throws": "1",
+    "add_outside_throws": "1", "add_bad_rab_range_throws": "1",
     "late_robot_ok": "1", "foot_bots_after_late_add": "4",
     "move_onto_robot": "0", "move_check_only": "1", "crate_x_after_check": "-1", "move_free": "1",
     "crate_y_after_move": "1.5", "crate_led_blue": "1", "lamp_intensity_set": "2.5", "quaternion_yaw": "1.5708",

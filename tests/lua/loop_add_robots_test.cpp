@@ -151,6 +151,7 @@ TEST(LoopAddRobots, BadSpecsAndFailingScriptsAreErrorsNamingTheLine) {
   expect(AddIn("post_step", "{id = 'fb0', controller = 'c', position = {1, 1}}"), "id 'fb0' is already used");
   expect(AddIn("init", "{controller = 'c', position = {9, 1}}"), "position (9, 1) is outside the arena");
   expect(AddIn("init", "{controller = 'c', position = {1, 1}, rab_data_size = 1.5}"), "'rab_data_size' must be");
+  expect(AddIn("init", "{controller = 'c', position = {1, 1}, rab_range = -1}"), "'rab_range' must be >= 0");
   expect(AddIn("init", "{controller = 'bad', position = {1, 1}}"), "add_entity: robot fb_1: ");
   expect(AddIn("init", "{controller = 'bad', position = {1, 1}}"), "bad.lua:1:");
   expect(AddIn("init", "{controller = 'nostep', position = {1, 1}}"),

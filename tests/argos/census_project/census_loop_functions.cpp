@@ -179,6 +179,9 @@ class CCensusLoopFunctions : public CLoopFunctions {
     lua_pop(L, 1);
     Record("add_unknown_controller_throws", AddThrows(new CFootBotEntity("fb10", "nobody", CVector3(-1.5, -1.5, 0))));
     Record("add_duplicate_id_throws", AddThrows(new CFootBotEntity("fb0", "student", CVector3(-1.5, -1.5, 0))));
+    Record("add_outside_throws", AddThrows(new CFootBotEntity("fb11", "student", CVector3(9, 0, 0))));
+    Record("add_bad_rab_range_throws",
+           AddThrows(new CFootBotEntity("fb12", "student", CVector3(-1.5, -1.5, 0), CQuaternion(), -1)));
   }
 
   /// Whether AddEntity refuses `pc_robot` (then still the caller's, deleted here).
