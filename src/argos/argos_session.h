@@ -24,6 +24,9 @@ struct ArgosRegistration {
 };
 std::vector<ArgosRegistration> ArgosRegisteredLabels();
 int ArgosApiVersion();
+/// Appends to `into` the LOG/LOGERR lines written outside any hook since the last call
+/// ("<O or E><text>\n" each) and forgets them.
+void ArgosTakeOrphanLog(std::string* into);
 
 class ArgosSession {
  public:
@@ -39,6 +42,8 @@ class ArgosSession {
   bool Run(ArgosHook hook, std::string* error);
   bool IsExperimentFinished(bool* finished, std::string* error);
   bool FloorColor(double x, double y, ArgosRgb* color, std::string* error);
+  /// Whether the last hook that failed threw a configuration error (a bad .argos element).
+  bool LastErrorIsConfiguration() const;
 
   struct State;
 

@@ -2,7 +2,6 @@
 
 #include <argos3/core/utility/configuration/argos_configuration.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -13,23 +12,21 @@
 namespace essaim {
 
 namespace {
-ticpp::Element ToElement(const XmlNode& node) {
+ticpp::Element ToElement(const XmlNode& node, const std::string& file) {
   ticpp::Element element(node.name);
+  element.SetLocation(file, node.line);
   for (const auto& attribute : node.attributes) element.SetAttribute(attribute.first, attribute.second);
   element.SetText(node.text);
-  for (const XmlNode& child : node.children) element.Children().push_back(ToElement(child));
+  for (const XmlNode& child : node.children) element.Children().push_back(ToElement(child, file));
   return element;
 }
 }  // namespace
 
 CppLoopFunctions::CppLoopFunctions() = default;
 
-CppLoopFunctions::~CppLoopFunctions() {
-  if (!session_) return;
-  std::string error;
-  if (!session_->Run(ArgosHook::Destroy, &error)) std::fprintf(stderr, "%s\n", error.c_str());
-  session_.reset();
-}
+// Destroy() ran at the end of the run (sim/run_end), as ARGoS calls it; here the loop
+// functions are only deleted (after an error, as ARGoS, without Destroy()).
+CppLoopFunctions::~CppLoopFunctions() = default;
 
 bool CppLoopFunctions::Load(const Model& model, EntityStore* entities,
                             std::vector<std::unique_ptr<LuaController>>* controllers, std::string* error) {
@@ -52,7 +49,7 @@ void CppLoopFunctions::SetTick(uint64_t tick) { world_->SetTick(tick); }
 
 bool CppLoopFunctions::Call(const char* hook, std::string* error) {
   if (!std::strcmp(hook, "init")) {
-    ticpp::Element tree = ToElement(model_->loop_functions.xml);
+    ticpp::Element tree = ToElement(model_->loop_functions.xml, model_->loop_functions.loc.file);
     return session_->Init(tree, error);
   }
   static const std::pair<const char*, ArgosHook> hooks[] = {{"pre_step", ArgosHook::PreStep},
@@ -77,6 +74,7 @@ bool CppLoopFunctions::FloorColor(double x, double y, Color* out, std::string* e
   return true;
 }
 
+bool CppLoopFunctions::LastErrorIsConfiguration() const { return session_->LastErrorIsConfiguration(); }
 bool CppLoopFunctions::TakeFloorChanged() { return world_->TakeFloorChanged(); }
 std::string& CppLoopFunctions::LogBuffer() { return world_->LogBuffer(); }
 

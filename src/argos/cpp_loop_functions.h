@@ -20,7 +20,7 @@ class StoreWorld;
 class CppLoopFunctions {
  public:
   CppLoopFunctions();
-  ~CppLoopFunctions();  // Destroy(), then the loop functions deleted
+  ~CppLoopFunctions();  // the loop functions deleted (Destroy() is a hook: Call("destroy"))
   CppLoopFunctions(const CppLoopFunctions&) = delete;
   CppLoopFunctions& operator=(const CppLoopFunctions&) = delete;
 
@@ -34,6 +34,9 @@ class CppLoopFunctions {
   /// "init", "pre_step", "post_step", "reset", "destroy", "post_experiment".
   bool Call(const char* hook, std::string* error);
   bool IsExperimentFinished(bool* finished, std::string* error);
+  /// Whether the last hook's error came from reading the .argos element (GetNodeAttribute,
+  /// GetNode): bad input, whose message names the file and line.
+  bool LastErrorIsConfiguration() const;
   bool FloorColor(double x, double y, Color* out, std::string* error);
   /// Whether the floor entity's SetChanged() was called since the last call.
   bool TakeFloorChanged();

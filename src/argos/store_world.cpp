@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "argos/argos_session.h"
 #include "model/distribute.h"
 
 namespace essaim {
@@ -205,6 +206,11 @@ bool StoreWorld::Add(const ArgosRobot& robot, ArgosRef* added, std::string* erro
 lua_State* StoreWorld::LuaState(uint32_t robot) {
   if (robot >= controllers_.size() || !controllers_[robot]) return nullptr;
   return controllers_[robot]->State();
+}
+
+std::string& StoreWorld::LogBuffer() {
+  ArgosTakeOrphanLog(&log_);
+  return log_;
 }
 
 void StoreWorld::Log(bool error, const std::string& line) {

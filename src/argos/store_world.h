@@ -19,8 +19,9 @@ class StoreWorld : public ArgosWorld {
   StoreWorld(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers)
       : model_(model), entities_(*entities), controllers_(*controllers) {}
   void SetTick(uint64_t tick) { tick_ = tick; }
-  /// Lines logged, "<O or E><text>\n" each (sim's FlushLog empties it).
-  std::string& LogBuffer() { return log_; }
+  /// Lines logged, "<O or E><text>\n" each (sim's FlushLog empties it), with those the
+  /// libraries logged outside any hook since (at load, from a thread of their own).
+  std::string& LogBuffer();
   /// Whether SetChanged() was called since the last call.
   bool TakeFloorChanged() { return std::exchange(floor_changed_, false); }
 

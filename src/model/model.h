@@ -146,6 +146,7 @@ struct LedMediumDef {
 /// An XML element as written: C++ loop functions get theirs whole in Init(TConfigurationNode&).
 struct XmlNode {
   std::string name;
+  int line = 0;                                                 // in the model's file
   std::vector<std::pair<std::string, std::string>> attributes;  // in the file's order
   std::string text;
   std::vector<XmlNode> children;

@@ -640,6 +640,7 @@ namespace {
 XmlNode ToXmlNode(const XMLElement* e) {
   XmlNode node;
   node.name = e->Name();
+  node.line = e->GetLineNum();
   for (auto* a = e->FirstAttribute(); a; a = a->Next()) node.attributes.emplace_back(a->Name(), a->Value());
   if (e->GetText()) node.text = e->GetText();
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) node.children.push_back(ToXmlNode(c));

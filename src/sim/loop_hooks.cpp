@@ -44,9 +44,17 @@ bool DrawLoopFloor(World& w, std::string* error) {
 }
 
 bool RedrawFloorIfChanged(World& w, std::string* error) {
-  if (!w.cpp_loop_functions.Loaded() || !w.cpp_loop_functions.TakeFloorChanged()) return true;
-  if (w.model.floor.source != FloorSource::LoopFunctions) return true;
+  const bool changed = w.cpp_loop_functions.Loaded() ? w.cpp_loop_functions.TakeFloorChanged()
+                                                     : w.loop_functions.Loaded() && w.loop_functions.TakeFloorChanged();
+  if (!changed || w.model.floor.source != FloorSource::LoopFunctions) return true;
   return DrawLoopFloor(w, error);
+}
+
+bool DestroyLoopFunctions(World& w, std::string* error) {
+  if (!w.cpp_loop_functions.Loaded() && !w.loop_functions.Loaded()) return true;
+  const bool ok = CallLoopHook(w, "destroy", error);
+  FlushLoopLog(w);
+  return ok;
 }
 
 }  // namespace essaim

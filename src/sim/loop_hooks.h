@@ -18,7 +18,11 @@ void SetLoopTick(World& w);
 void FlushLoopLog(World& w);
 /// Samples the loop functions' floor colour into w.floor (its size already set).
 bool DrawLoopFloor(World& w, std::string* error);
-/// Draws the floor again when C++ loop functions called the floor entity's SetChanged().
+/// Draws the floor again when the loop functions said it changed (C++: the floor entity's
+/// SetChanged(); Lua: experiment.floor_changed()).
 bool RedrawFloorIfChanged(World& w, std::string* error);
+/// The loop functions' destroy() / Destroy(), at the end of a run (as ARGoS's
+/// CSimulator::Destroy, before the space and its controllers go), its log flushed.
+bool DestroyLoopFunctions(World& w, std::string* error);
 
 }  // namespace essaim

@@ -7,6 +7,9 @@ namespace essaim {
 bool FinishRun(World& w, Value* metrics, bool* has_metrics, std::string* error) {
   bool ok = LoopPostExperiment(w, metrics, has_metrics, error);
   FlushLoopLog(w);
+  // ARGoS destroys the loop functions first, then the space with its controllers (and
+  // not at all after an error: its main() catches the exception and returns).
+  if (ok) ok = DestroyLoopFunctions(w, error);
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
     if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err)) {

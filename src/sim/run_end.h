@@ -16,8 +16,9 @@ struct RunOutcome {
 };
 
 /// End of run: loop functions' post_experiment (its table in `metrics`, `has_metrics` false
-/// when it returned none), controllers' destroy. False with `error` when post_experiment
-/// fails, or a controller's destroy calls os.exit.
+/// when it returned none), their destroy, then the controllers' destroy. False with `error`
+/// when post_experiment or the loop functions' destroy fails, or a controller's destroy
+/// calls os.exit.
 bool FinishRun(World& world, Value* metrics, bool* has_metrics, std::string* error);
 
 /// From the last step's status: sets outcome->status and finished_by, then (unless the run

@@ -43,13 +43,23 @@ bool BuildFloor(World& w, std::string* error) {
       return false;
     }
     // Sampled at pixel centres: ground sensors then read a raster, thread-safe and fast.
-    // Lua floors are drawn once; C++ ones again after the floor entity's SetChanged().
+    // Drawn after the loop functions' init() (DrawFloorAfterInit), again after SetChanged().
     f.width = std::max(1, static_cast<int>(m.arena.size.x() * m.floor.pixels_per_meter));
     f.height = std::max(1, static_cast<int>(m.arena.size.y() * m.floor.pixels_per_meter));
     f.pixels.resize(static_cast<size_t>(f.width) * f.height);
-    return DrawLoopFloor(w, error);
   }
   return true;
+}
+
+// ARGoS asks GetFloorColor once the loop functions' Init() has run, so a floor drawn from
+// what Init() read (zones, food) shows from the first tick on.
+bool DrawFloorAfterInit(World& w, std::string* error) {
+  if (w.model.floor.source != FloorSource::LoopFunctions) return true;
+  if (w.cpp_loop_functions.Loaded())
+    w.cpp_loop_functions.TakeFloorChanged();
+  else
+    w.loop_functions.TakeFloorChanged();
+  return DrawLoopFloor(w, error);
 }
 
 // A controller with no step() after init() would stand still all run: the run fails
@@ -107,8 +117,8 @@ bool MakeControllerStates(World& w, std::string* error) {
   return first == failed.end();
 }
 
-// The loop functions' state (first, so the floor exists before anything senses it), then
-// the controllers'; false with `error` when a script fails.
+// The loop functions' state (first: its script defines floor_color), then the
+// controllers'; false with `error` when a script fails.
 bool MakeLuaStates(World& w, std::string* error) {
   if (w.model.loop_functions.Cpp()) {
     if (!w.cpp_loop_functions.Load(w.model, &w.entities, &w.controllers, error)) return false;
@@ -152,7 +162,9 @@ void RunControllerInits(World& w) {
 }
 
 // Every controller's init(), then the loop functions'; errors as World::Create says.
-void RunInits(World& w) {
+// False when the loop functions' init() found their .argos element bad (w.failure says
+// where): bad input, not a run that failed.
+bool RunInits(World& w) {
   const SimOptions& options = w.options;
   RunControllerInits(w);
   for (size_t i = 0; i < w.controllers.size(); ++i) FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
@@ -164,9 +176,14 @@ void RunInits(World& w) {
   // A runtime error in init() is the run failing, not bad input: the World is returned
   // with `failure` set, so the caller can still write a summary (exit 1, docs/cli.md).
   std::string err;
-  if (w.failure.empty() && !CallLoopHook(w, "init", &err)) w.failure = err;
-  if (w.failure.empty() && !RedrawFloorIfChanged(w, &err)) w.failure = err;
+  bool bad_input = false;
+  if (w.failure.empty() && !CallLoopHook(w, "init", &err)) {
+    w.failure = err;
+    bad_input = w.cpp_loop_functions.Loaded() && w.cpp_loop_functions.LastErrorIsConfiguration();
+  }
+  if (w.failure.empty() && !DrawFloorAfterInit(w, &err)) w.failure = err;
   FlushLoopLog(w);
+  return !bad_input;
 }
 }  // namespace
 
@@ -190,7 +207,10 @@ std::unique_ptr<World> World::Create(const Model& source, const SimOptions& opti
   if (!MakeLuaStates(*w, error)) return nullptr;
   w->setup.lua_states = SecondsSince(lua_start);
   const Clock::time_point init_start = Clock::now();
-  RunInits(*w);
+  if (!RunInits(*w)) {
+    *error = w->failure;
+    return nullptr;
+  }
   w->setup.init = SecondsSince(init_start);
   return w;
 }

@@ -32,8 +32,8 @@ struct StageTimes {
 struct SetupTimes {
   double load = 0, placement = 0;
   double world = 0;       // physics bodies, robot states and devices, media, threads
-  double lua_states = 0;  // loop functions' and controllers' states made, scripts run (a loop-function floor drawn)
-  double init = 0;        // controllers' and loop functions' init()
+  double lua_states = 0;  // loop functions' and controllers' states made, scripts run
+  double init = 0;        // controllers' and loop functions' init() (then a loop-function floor drawn)
   double Total() const { return load + placement + world + lua_states + init; }
 };
 
@@ -88,9 +88,9 @@ class ThreadPool;
 class World {
  public:
   /// Builds physics, robot states, Lua controllers (running their init()) and loop
-  /// functions (running theirs). Returns nullptr with `error` when a script fails to load
-  /// (bad input). A runtime error in the loop functions' init(), or in a controller's under
-  /// `strict`, returns the World with `failure` set: it must not be stepped.
+  /// functions (running theirs). Returns nullptr with `error` when a script fails to load,
+  /// or C++ loop functions' Init() finds their .argos element bad (bad input). A runtime error in the loop functions'
+  /// init(), or in a controller's under `strict`, returns the World with `failure` set: it must not be stepped.
   static std::unique_ptr<World> Create(const Model& model, const SimOptions& options, std::string* error);
   ~World();
 

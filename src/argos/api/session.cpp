@@ -32,12 +32,14 @@ std::string Describe(const argos::CARGoSException& e) {
 bool Guarded(ArgosSession::State* state, const char* hook, const std::function<void()>& body, std::string* error) {
   ArgosSession::State* before = current_session;
   current_session = state;
+  state->configuration_error = false;
   bool ok = false;
   try {
     body();
     ok = true;
   } catch (const argos::CARGoSException& e) {
     *error = std::string("loop functions (") + hook + "): " + Describe(e);
+    state->configuration_error = e.IsConfigurationError();
   } catch (const std::exception& e) {
     *error = std::string("loop functions (") + hook + "): " + e.what();
   } catch (...) {
@@ -138,6 +140,8 @@ bool ArgosSession::Run(ArgosHook hook, std::string* error) {
       },
       error);
 }
+
+bool ArgosSession::LastErrorIsConfiguration() const { return state_->configuration_error; }
 
 bool ArgosSession::IsExperimentFinished(bool* finished, std::string* error) {
   return Guarded(

@@ -29,6 +29,7 @@ struct ArgosSession::State {
   std::map<std::string, std::unique_ptr<argos::CLEDMedium>> media;
   std::vector<std::unique_ptr<argos::CRandom::CRNG>> rngs;
   std::unique_ptr<argos::CLoopFunctions> loop_functions;
+  bool configuration_error = false;  // the last hook's exception was a bad .argos element
 };
 
 /// The session whose hook runs on this thread; null outside hooks.

@@ -31,6 +31,7 @@ struct LoopContext {
   std::string log;
   Timeseries series;
   bool warned_nonfinite_row = false;  // timeseries(): NaN/inf is warned about once per run
+  bool floor_changed = false;         // experiment.floor_changed() since the floor was last drawn
   // Scratch that Lua errors may unwind past without leaking: add_entity's spec, lua_global's
   // copy (C++ locals with destructors must not live across a Lua error).
   ObstacleDef obstacle_spec;

@@ -114,6 +114,12 @@ void PushRobotHandles(lua_State* L, const Model& model) {
   lua_pushvalue(L, -1);
   lua_rawsetp(L, LUA_REGISTRYINDEX, &kRobotListKey);
 }
+
+// experiment.floor_changed(): the floor is sampled again before the robots next sense.
+int MarkFloorChanged(lua_State* L) {
+  LoopContextOf(L)->floor_changed = true;
+  return 0;
+}
 }  // namespace
 
 void LoopFunctions::PushExperiment(const Model& model, const std::string& output_dir) {
@@ -141,6 +147,14 @@ void LoopFunctions::PushExperiment(const Model& model, const std::string& output
   lua_setfield(L, -2, "random");
   lua_pushcfunction(L, AppendTimeseriesRow);
   lua_setfield(L, -2, "timeseries");
+  lua_pushcfunction(L, MarkFloorChanged);
+  lua_setfield(L, -2, "floor_changed");
+}
+
+bool LoopFunctions::TakeFloorChanged() {
+  const bool changed = context_.floor_changed;
+  context_.floor_changed = false;
+  return changed;
 }
 
 // `require` finds modules next to the script first, and reads only below the .argos

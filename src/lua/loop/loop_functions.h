@@ -37,6 +37,9 @@ class LoopFunctions {
   bool HasFunction(const char* name);
   /// floor_color(x, y) → colour; false with `error` on a Lua error or bad return.
   bool FloorColor(double x, double y, Color* out, std::string* error);
+  /// Whether experiment.floor_changed() was called since the last call (ARGoS's
+  /// GetFloorEntity().SetChanged()): the floor is then sampled again.
+  bool TakeFloorChanged();
   bool Call(const char* name, std::string* error);  // init, pre_step, post_step, reset, destroy
   bool IsExperimentFinished(bool* finished, std::string* error);
   /// post_experiment(): the returned table as a value tree (`has_metrics` false when nil).

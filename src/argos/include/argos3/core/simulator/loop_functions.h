@@ -12,7 +12,7 @@
 
 /// The version of this API a library is built for; a library built for another one is
 /// refused when it is loaded.
-#define ARGOS_ESSAIM_API_VERSION 2
+#define ARGOS_ESSAIM_API_VERSION 3
 
 namespace argos {
 

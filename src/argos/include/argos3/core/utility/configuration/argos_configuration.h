@@ -32,6 +32,16 @@ class Element {
     m_vecAttributes.emplace_back(str_name, str_value);
   }
   const std::vector<std::pair<std::string, std::string>>& Attributes() const { return m_vecAttributes; }
+  /// The element's line in its file (TinyXML++'s Row()), and the file: errors name them.
+  int Row() const { return m_nRow; }
+  const std::string& File() const { return m_strFile; }
+  void SetLocation(const std::string& str_file, int n_row) { m_strFile = str_file, m_nRow = n_row; }
+  /// Throws the configuration error `str_message` about this element, as "file:row: <name>: message".
+  [[noreturn]] void ThrowError(const std::string& str_message) const {
+    std::ostringstream cWhere;
+    if (!m_strFile.empty()) cWhere << m_strFile << (m_nRow > 0 ? ":" + std::to_string(m_nRow) : "") << ": ";
+    throw argos::CARGoSException::Configuration(cWhere.str() + "<" + m_strValue + ">: " + str_message);
+  }
   std::vector<Element>& Children() { return m_vecChildren; }
   const std::vector<Element>& Children() const { return m_vecChildren; }
   /// The first child named `str_name`, or null.
@@ -47,7 +57,8 @@ class Element {
       if (attribute.first == str_name) return &attribute.second;
     return nullptr;
   }
-  std::string m_strValue, m_strText;
+  std::string m_strValue, m_strText, m_strFile;
+  int m_nRow = 0;
   std::vector<std::pair<std::string, std::string>> m_vecAttributes;
   std::vector<Element> m_vecChildren;
 };
@@ -101,11 +112,10 @@ template <typename T>
 void Element::GetAttribute(const std::string& str_name, T* pt_value, bool b_throw_if_not_found) const {
   const std::string* text = Find(str_name);
   if (!text) {
-    if (b_throw_if_not_found) THROW_ARGOSEXCEPTION("<" << m_strValue << ">: missing attribute '" << str_name << "'");
+    if (b_throw_if_not_found) ThrowError("missing attribute '" + str_name + "'");
     return;
   }
-  if (!internal::ReadValue(*text, pt_value))
-    THROW_ARGOSEXCEPTION("<" << m_strValue << ">: attribute " << str_name << "=\"" << *text << "\" cannot be read");
+  if (!internal::ReadValue(*text, pt_value)) ThrowError("attribute " + str_name + "=\"" + *text + "\" cannot be read");
 }
 
 }  // namespace ticpp
@@ -122,7 +132,7 @@ inline bool NodeExists(TConfigurationNode& t_node, const std::string& str_tag) {
 /// The first child named `str_tag`; throws when there is none.
 inline TConfigurationNode& GetNode(TConfigurationNode& t_node, const std::string& str_tag) {
   TConfigurationNode* child = t_node.FirstChildElement(str_tag);
-  if (!child) THROW_ARGOSEXCEPTION("<" << t_node.Value() << "> has no child <" << str_tag << ">");
+  if (!child) t_node.ThrowError("no child <" + str_tag + ">");
   return *child;
 }
 

@@ -14,16 +14,28 @@ class CARGoSException : public std::exception {
   /// Keeps the cause's message after this one's, as ARGoS prints a nested exception.
   CARGoSException(const std::string& str_what, const std::exception& c_nested, const char* str_file = "",
                   int n_line = 0)
-      : CARGoSException(str_what + "\n[NESTED] " + c_nested.what(), str_file, n_line) {}
+      : CARGoSException(str_what + "\n[NESTED] " + c_nested.what(), str_file, n_line) {
+    const CARGoSException* pcNested = dynamic_cast<const CARGoSException*>(&c_nested);
+    m_bConfiguration = pcNested && pcNested->IsConfigurationError();
+  }
   const char* what() const noexcept override { return m_strWhat.c_str(); }
   /// The source file and line of the THROW_ARGOSEXCEPTION that made it ("" and 0 otherwise).
   const std::string& GetFile() const { return m_strFile; }
   int GetLine() const { return m_nLine; }
+  /// essaim: thrown (or caused, when nested) by the configuration helpers on a bad
+  /// .argos element, whose message names the file and line: bad input, exit 2.
+  bool IsConfigurationError() const { return m_bConfiguration; }
+  static CARGoSException Configuration(const std::string& str_what) {
+    CARGoSException cException(str_what);
+    cException.m_bConfiguration = true;
+    return cException;
+  }
 
  private:
   std::string m_strWhat;
   std::string m_strFile;
   int m_nLine;
+  bool m_bConfiguration = false;
 };
 
 }  // namespace argos
