@@ -77,6 +77,7 @@ def test_beta17_moves_and_init_poses(legacy_runs):
     assert all(near(cpp[t, "fb1"][3:], [-0.5, -1.0, math.pi / 4]) for t in range(21))
     assert near(cpp[0, "beacon"], [1.5, 1.5]) and near(cpp[20, "beacon"], [1.5, 1.5])  # a light moves
     assert cpp[20, "fb0"][:2] != cpp[0, "fb0"][:2]  # the robots drive
+    assert "legacy: post added at 0,-1.6" in done.stdout  # SetPosition before AddEntity: where it is added
 
 
 def test_set_position_is_reported_until_the_physics_updates_the_body(legacy_runs):
@@ -84,6 +85,8 @@ def test_set_position_is_reported_until_the_physics_updates_the_body(legacy_runs
     assert "legacy: fb0 reports 9,9 heading 180 after SetPosition" in done.stdout
     # At the next tick the physics' pose shows again: fb0 did not move to (9, 9).
     assert same(cpp[6, "fb0"], lua[6, "fb0"]) and math.hypot(*cpp[6, "fb0"][:2]) < 2
+    # A static body's physics never updates it: what was set stays reported, the body stays put.
+    assert "legacy: post reports 1.2,1.6, stands at 0,-1.6" in done.stdout
 
 
 def scatter_rows(folder):

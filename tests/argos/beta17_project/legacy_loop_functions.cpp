@@ -16,6 +16,7 @@ void CLegacyLoopFunctions::Init(TConfigurationNode& t_tree) {
   LOG << "legacy: " << m_pcRNG->GetType() << ", seed " << m_cSimulator.GetRandomSeed() << ", clock "
       << m_cSpace.GetSimulationClock() << std::endl;
   PlaceLastRobot();
+  AddPost();
   /* The beacon goes to the far corner: a light is a positional entity too */
   CLightEntity& cLight = *any_cast<CLightEntity*>(m_cSpace.GetEntitiesByType("light")["beacon"]);
   MoveEntity(cLight, CVector3(1.5, 1.5, 0.5), CQuaternion(), false);
@@ -55,11 +56,30 @@ void CLegacyLoopFunctions::WriteRows() {
             << std::endl;
 }
 
+/* A static post, made at the origin and told where to stand before it is added */
+void CLegacyLoopFunctions::AddPost() {
+  m_pcPost = new CCylinderEntity("post", CVector3(), CQuaternion(), false, 0.1, 0.2);
+  m_pcPost->GetEmbodiedEntity().SetPosition(CVector3(0.0, -1.6, 0.0));
+  AddEntity(*m_pcPost);
+  LOG << "legacy: post added at " << m_pcPost->GetEmbodiedEntity().GetPosition().GetX() << ","
+      << m_pcPost->GetEmbodiedEntity().GetPosition().GetY() << std::endl;
+}
+
+/* Told another place, the static post reports it for good, but the physics never moved it */
+void CLegacyLoopFunctions::ReportPost() {
+  const CVector3& cStands = m_pcPost->GetEmbodiedEntity().GetOriginAnchor().Position;
+  LOG << "legacy: post reports " << m_pcPost->GetEmbodiedEntity().GetPosition().GetX() << ","
+      << m_pcPost->GetEmbodiedEntity().GetPosition().GetY() << ", stands at " << cStands.GetX() << "," << cStands.GetY()
+      << std::endl;
+}
+
 /* At the nudge tick, fb0's body is told another pose: it reports it until the physics
    updates it, but does not move */
 void CLegacyLoopFunctions::PostStep() {
   WriteRows();
+  if (m_cSpace.GetSimulationClock() == m_unNudgeTick + 3) ReportPost();
   if (m_cSpace.GetSimulationClock() != m_unNudgeTick) return;
+  m_pcPost->GetEmbodiedEntity().SetPosition(CVector3(1.2, 1.6, 0.0));
   CFootBotEntity& cFB = *any_cast<CFootBotEntity*>(m_cSpace.GetEntitiesByType("foot-bot")["fb0"]);
   cFB.GetEmbodiedEntity().SetPosition(CVector3(9.0, 9.0, 0.0));
   cFB.GetEmbodiedEntity().SetOrientation(CQuaternion(CRadians::PI, CVector3::Z));

@@ -22,6 +22,7 @@ function init()
     start[r.id] = { x, y, r:heading() }
   end
   experiment.robots[4]:set_pose(-1.0, 1.0, math.pi / 2)
+  experiment.add_entity("cylinder", { id = "post", position = { 0, -1.6 }, radius = 0.1, height = 0.2 })
   experiment.entities("light")[1]:set_pose(1.5, 1.5)
   write_rows()
 end
