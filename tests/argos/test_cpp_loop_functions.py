@@ -130,7 +130,7 @@ def test_exception_from_a_hook_ends_the_run_with_its_message(census, tmp_path):
     ("build/libnothing", "census_loop_functions", "library 'build/libnothing' not found"),
     ("build/libcensus_loop_functions", "nope", "no loop functions registered as 'nope'"),
     ("build/libold_api_loop_functions", "old_api_loop_functions",
-     "built for essaim's ARGoS API version 0, this essaim provides version "),
+     "built for essaim's ARGoS API version 0, this essaim provides version 3"),
     ("build/liblua51_headers_loop_functions", "lua51_headers_loop_functions",
      "calls lua_objlen, which Lua 5.4 does not have"),
     ("build/liblua51_linked_loop_functions", "lua51_linked_loop_functions",

@@ -3,6 +3,7 @@
 #include <argos3/core/simulator/entity/controllable_entity.h>
 #include <argos3/core/simulator/entity/embodied_entity.h>
 #include <argos3/core/simulator/entity/floor_entity.h>
+#include <argos3/core/simulator/entity/positional_entity.h>
 #include <argos3/core/wrappers/lua/lua_controller.h>
 #include <argos3/plugins/simulator/entities/led_equipped_entity.h>
 #include <argos3/plugins/simulator/entities/light_entity.h>
@@ -38,12 +39,65 @@ bool CEntity::IsInSpace() const {
   return SEntityBinding::Find(*this, &ref) && World("IsInSpace").Live(ref);
 }
 
+namespace {
+// Whether a pose set at `set_at` still hides the world's: until the physics updates the body
+// (the next tick), never for a static body, which the physics does not update.
+bool SetPoseShows(SInt64 set_at, const essaim::ArgosWorld& world, const essaim::ArgosRef& ref) {
+  if (set_at < 0) return false;
+  return static_cast<UInt64>(set_at) == world.Tick() || !world.Movable(ref);
+}
+
+// The world's pose of the entity `c_entity` stands for; false when it is not in the space.
+bool WorldPose(const CEntity& c_entity, const char* what, essaim::ArgosRef* ref, essaim::ArgosPose* pose) {
+  if (!SEntityBinding::Find(c_entity, ref)) return false;
+  if (!World(what).Pose(*ref, pose))
+    THROW_ARGOSEXCEPTION(what << ": \"" << c_entity.GetRootEntity().GetId() << "\" is not in the space");
+  return true;
+}
+}  // namespace
+
+const CVector3& CPositionalEntity::GetPosition() const {
+  essaim::ArgosRef ref;
+  essaim::ArgosPose pose;
+  if (WorldPose(*this, "GetPosition", &ref, &pose) && !SetPoseShows(m_nPositionSetAt, World("GetPosition"), ref))
+    m_cPosition.Set(pose.x, pose.y, pose.z);
+  return m_cPosition;
+}
+
+const CQuaternion& CPositionalEntity::GetOrientation() const {
+  essaim::ArgosRef ref;
+  essaim::ArgosPose pose;
+  if (WorldPose(*this, "GetOrientation", &ref, &pose) && ref.kind != essaim::kArgosLight &&
+      !SetPoseShows(m_nOrientationSetAt, World("GetOrientation"), ref))
+    m_cOrientation = FromYaw(pose.yaw);
+  return m_cOrientation;
+}
+
+void CPositionalEntity::SetPosition(const CVector3& c_position) {
+  m_cPosition = c_position;
+  essaim::ArgosRef ref;
+  if (!SEntityBinding::Find(*this, &ref)) return;
+  ref = SEntityBinding::Require(*this, "SetPosition");
+  if (ref.kind != essaim::kArgosLight) {  // a body: reported, not moved
+    m_nPositionSetAt = static_cast<SInt64>(World("SetPosition").Tick());
+    return;
+  }
+  essaim::ArgosLight light = World("SetPosition").Light(ref);  // a light has no physics: it moves
+  light.position[0] = c_position.GetX(), light.position[1] = c_position.GetY(), light.position[2] = c_position.GetZ();
+  World("SetPosition").SetLight(ref, light);
+}
+
+void CPositionalEntity::SetOrientation(const CQuaternion& c_orientation) {
+  m_cOrientation = c_orientation;
+  essaim::ArgosRef ref;
+  if (SEntityBinding::Find(*this, &ref) && ref.kind != essaim::kArgosLight)
+    m_nOrientationSetAt = static_cast<SInt64>(World("SetOrientation").Tick());
+}
+
 CEmbodiedEntity::CEmbodiedEntity(CEntity* pc_parent, const std::string& str_id, const CVector3& c_position,
                                  const CQuaternion& c_orientation, bool b_movable)
-    : CEntity(pc_parent, str_id), m_bMovable(b_movable) {
+    : CPositionalEntity(pc_parent, str_id, c_position, c_orientation), m_bMovable(b_movable) {
   m_sOriginAnchor.Id = "origin";
-  m_sOriginAnchor.Position = c_position;
-  m_sOriginAnchor.Orientation = c_orientation;
 }
 
 const SAnchor& CEmbodiedEntity::GetOriginAnchor() const {
@@ -54,6 +108,9 @@ const SAnchor& CEmbodiedEntity::GetOriginAnchor() const {
       THROW_ARGOSEXCEPTION("GetOriginAnchor: \"" << GetRootEntity().GetId() << "\" is not in the space");
     m_sOriginAnchor.Position.Set(pose.x, pose.y, pose.z);
     m_sOriginAnchor.Orientation = FromYaw(pose.yaw);
+  } else {
+    m_sOriginAnchor.Position = GetPosition();
+    m_sOriginAnchor.Orientation = GetOrientation();
   }
   return m_sOriginAnchor;
 }
@@ -67,12 +124,14 @@ bool CEmbodiedEntity::MoveTo(const CVector3& c_position, const CQuaternion& c_or
                              bool b_ignore_collisions) {
   essaim::ArgosRef ref;
   if (!SEntityBinding::Find(*this, &ref)) {  // not in the space yet: where it will be added
-    if (!b_check_only) m_sOriginAnchor.Position = c_position, m_sOriginAnchor.Orientation = c_orientation;
+    if (!b_check_only) SetPosition(c_position), SetOrientation(c_orientation);
     return true;
   }
   ref = SEntityBinding::Require(*this, "MoveEntity");
   const essaim::ArgosPose pose{c_position.GetX(), c_position.GetY(), c_position.GetZ(), YawOf(c_orientation)};
-  return World("MoveEntity").Move(ref, pose, b_check_only, b_ignore_collisions);
+  const bool moved = World("MoveEntity").Move(ref, pose, b_check_only, b_ignore_collisions);
+  if (moved && !b_check_only) ForgetSetPose();
+  return moved;
 }
 
 CLEDEntity::CLEDEntity(CLEDEquippedEntity* pc_parent, UInt32 un_index, const CVector3& c_offset, const CColor& c_color)
@@ -135,13 +194,6 @@ void CLEDEquippedEntity::AddToMedium(CLEDMedium& c_medium) {
     World("AddToMedium").SetMedium(SEntityBinding::Require(*this, "AddToMedium"), m_strMedium);
 }
 
-CVector3 CLightEntity::GetPosition() const {
-  essaim::ArgosRef ref;
-  if (!SEntityBinding::Find(*this, &ref)) return m_cPosition;
-  const essaim::ArgosLight l = World("GetPosition").Light(SEntityBinding::Require(*this, "GetPosition"));
-  return CVector3(l.position[0], l.position[1], l.position[2]);
-}
-
 namespace {
 // Changes a light in the world, or the values it will be added with.
 template <typename Change>
@@ -154,13 +206,6 @@ void ChangeLight(CLightEntity& light, const char* what, Change change) {
   World(what).SetLight(ref, l);
 }
 }  // namespace
-
-void CLightEntity::SetPosition(const CVector3& c) {
-  m_cPosition = c;
-  ChangeLight(*this, "SetPosition", [&](essaim::ArgosLight* l) {
-    l->position[0] = c.GetX(), l->position[1] = c.GetY(), l->position[2] = c.GetZ();
-  });
-}
 
 CColor CLightEntity::GetColor() const {
   essaim::ArgosRef ref;

@@ -105,6 +105,21 @@ UInt32 CSimulator::GetMaxSimulationClock() const {
   return static_cast<UInt32>(essaim::RequireSession("GetMaxSimulationClock").world->LengthTicks());
 }
 
+// The space's wrappers of the world's entities are made now, while every entity of the .argos
+// file stands where it started: GetInitPosition() reports that place.
+CLoopFunctions::CLoopFunctions() : m_cSimulator(CSimulator::GetInstance()), m_cSpace(m_cSimulator.GetSpace()) {
+  for (const essaim::ArgosRef& ref : essaim::RequireSession("CLoopFunctions").world->Entities(-1))
+    SEntityBinding::Wrapper(m_cSpace, ref);
+}
+
+bool CLoopFunctions::MoveEntity(CPositionalEntity& c_entity, const CVector3& c_position,
+                                const CQuaternion& c_orientation, bool b_check_only) {
+  if (auto* body = dynamic_cast<CEmbodiedEntity*>(&c_entity))
+    return body->MoveTo(c_position, c_orientation, b_check_only);
+  if (!b_check_only) c_entity.SetPosition(c_position), c_entity.SetOrientation(c_orientation);
+  return true;
+}
+
 void CLoopFunctions::AddEntity(CEntity& c_entity) {
   essaim::ArgosSession::State& session = essaim::RequireSession("AddEntity");
   if (c_entity.HasParent()) THROW_ARGOSEXCEPTION("AddEntity: \"" << c_entity.GetId() << "\" is a component");

@@ -1,6 +1,9 @@
 // ARGoS's CCI_Controller (argos3/core/control_interface/ci_controller.h): a robot's
 // controller. essaim runs Lua controllers only: each is a CLuaController.
 #pragma once
+#include <argos3/core/utility/configuration/argos_configuration.h>  // ARGoS: through base_configurable_resource.h
+#include <argos3/core/utility/datatypes/datatypes.h>
+
 #include <string>
 
 namespace argos {

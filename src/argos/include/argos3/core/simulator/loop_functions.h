@@ -4,11 +4,17 @@
 // at the points of the tick where Lua loop functions' do.
 #pragma once
 #include <argos3/core/simulator/entity/embodied_entity.h>
+#include <argos3/core/simulator/entity/positional_entity.h>
 #include <argos3/core/simulator/simulator.h>
+#include <argos3/core/simulator/space/space.h>
 #include <argos3/core/utility/configuration/argos_configuration.h>
 #include <argos3/core/utility/datatypes/color.h>
 #include <argos3/core/utility/logging/argos_log.h>
+#include <argos3/core/utility/math/quaternion.h>
 #include <argos3/core/utility/math/vector2.h>
+#include <argos3/core/utility/math/vector3.h>
+
+#include <functional>
 
 /// The version of this API a library is built for; a library built for another one is
 /// refused when it is loaded.
@@ -18,6 +24,8 @@ namespace argos {
 
 class CLoopFunctions {
  public:
+  /// Made while the experiment is current (essaim makes it before Init), as ARGoS's.
+  CLoopFunctions();
   virtual ~CLoopFunctions() = default;
   virtual void Init(TConfigurationNode& t_tree) { (void)t_tree; }
   virtual void Reset() {}
@@ -29,10 +37,10 @@ class CLoopFunctions {
   /// The floor's colour at a point, when the floor is <floor source="loop_functions">.
   virtual CColor GetFloorColor(const CVector2& c_position_on_plane) {
     (void)c_position_on_plane;
-    return CColor::BLACK;
+    return CColor::WHITE;  // ARGoS's since 3.0.0-beta29 (black before)
   }
-  CSimulator& GetSimulator() { return CSimulator::GetInstance(); }
-  CSpace& GetSpace() { return CSimulator::GetInstance().GetSpace(); }
+  CSimulator& GetSimulator() { return m_cSimulator; }
+  CSpace& GetSpace() { return m_cSpace; }
   /// Puts a box, cylinder or light made with `new` into the space, which owns it from then on.
   void AddEntity(CEntity& c_entity);
   /// Removes a box, cylinder or light (the space deletes it).
@@ -43,6 +51,16 @@ class CLoopFunctions {
                   bool b_check_only = false, bool b_ignore_collisions = false) {
     return c_entity.MoveTo(c_position, c_orientation, b_check_only, b_ignore_collisions);
   }
+  /// ARGoS's for any positional entity: a body moves as above, a light always. Until ARGoS
+  /// 3.0.0-beta30 the only MoveEntity, taking `b_check_only` and saying whether it fit.
+  bool MoveEntity(CPositionalEntity& c_entity, const CVector3& c_position, const CQuaternion& c_orientation,
+                  bool b_check_only = false);
+
+ protected:
+  /// ARGoS's until 3.0.0-beta18, when GetSimulator() and GetSpace() took their place; kept
+  /// for the loop functions of that time, which use them directly.
+  CSimulator& m_cSimulator;
+  CSpace& m_cSpace;
 };
 
 typedef CLoopFunctions* (*TLoopFunctionsCreator)();

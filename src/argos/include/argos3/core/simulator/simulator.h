@@ -3,7 +3,10 @@
 #pragma once
 #include <argos3/core/simulator/medium/medium.h>
 #include <argos3/core/simulator/space/space.h>
+#include <argos3/core/utility/configuration/argos_configuration.h>
 #include <argos3/core/utility/configuration/argos_exception.h>
+#include <argos3/core/utility/datatypes/datatypes.h>
+#include <argos3/core/utility/math/rng.h>
 
 #include <string>
 

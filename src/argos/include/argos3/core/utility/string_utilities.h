@@ -1,6 +1,7 @@
 // ARGoS's ToString and FromString (argos3/core/utility/string_utilities.h).
 #pragma once
 #include <argos3/core/utility/configuration/argos_exception.h>
+#include <argos3/core/utility/datatypes/datatypes.h>
 
 #include <sstream>
 #include <string>

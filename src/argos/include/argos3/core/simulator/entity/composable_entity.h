@@ -2,6 +2,7 @@
 // made of components (a body, LEDs, a controller).
 #pragma once
 #include <argos3/core/simulator/entity/entity.h>
+#include <argos3/core/simulator/space/space.h>
 
 namespace argos {
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <argos3/core/control_interface/ci_controller.h>
 #include <argos3/core/simulator/entity/entity.h>
+#include <argos3/core/utility/math/vector3.h>  // ARGoS: through ray3.h
 
 #include <memory>
 

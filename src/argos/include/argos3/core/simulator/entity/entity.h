@@ -2,7 +2,9 @@
 // a type. An entity from the .argos file, or one that AddEntity put in the space, stands
 // for an entity of essaim's world (devices/entity_store.h): reading it reads the world.
 #pragma once
+#include <argos3/core/utility/configuration/argos_configuration.h>
 #include <argos3/core/utility/datatypes/datatypes.h>
+#include <argos3/core/utility/logging/argos_log.h>  // ARGoS: through its plugin factory
 
 #include <string>
 

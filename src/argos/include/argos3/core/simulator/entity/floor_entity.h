@@ -3,6 +3,9 @@
 // GetFloorColor before the robots next sense it.
 #pragma once
 #include <argos3/core/simulator/entity/entity.h>
+#include <argos3/core/utility/datatypes/color.h>
+#include <argos3/core/utility/math/vector2.h>
+#include <argos3/core/utility/math/vector3.h>
 
 namespace argos {
 

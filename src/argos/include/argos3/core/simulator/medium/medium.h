@@ -1,5 +1,8 @@
 // ARGoS's CMedium (argos3/core/simulator/medium/medium.h): one of the experiment's <media>.
 #pragma once
+#include <argos3/core/utility/configuration/argos_configuration.h>
+#include <argos3/core/utility/datatypes/datatypes.h>
+
 #include <string>
 
 namespace argos {

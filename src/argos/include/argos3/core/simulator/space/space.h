@@ -2,7 +2,10 @@
 // GetEntitiesByType("foot-bot" / "box" / "cylinder" / "light") maps each id to a CAny holding
 // the entity's pointer (CFootBotEntity*, ...), ordered by id as ARGoS's std::map is.
 #pragma once
+#include <argos3/core/simulator/entity/controllable_entity.h>
+#include <argos3/core/simulator/entity/embodied_entity.h>
 #include <argos3/core/simulator/entity/floor_entity.h>
+#include <argos3/core/simulator/medium/medium.h>
 #include <argos3/core/utility/datatypes/any.h>
 #include <argos3/core/utility/math/vector3.h>
 

@@ -3,6 +3,7 @@
 // with ticpp's names (ARGoS reads XML with TinyXML++).
 #pragma once
 #include <argos3/core/utility/configuration/argos_exception.h>
+#include <argos3/core/utility/datatypes/datatypes.h>
 #include <argos3/core/utility/string_utilities.h>
 
 #include <sstream>

@@ -1,6 +1,7 @@
 // ARGoS's CColor (argos3/core/utility/datatypes/color.h): RGBA, 0-255 each.
 #pragma once
 #include <argos3/core/utility/datatypes/datatypes.h>
+#include <argos3/core/utility/string_utilities.h>
 
 #include <ostream>
 

@@ -1,6 +1,8 @@
 // ARGoS's LOG and LOGERR (argos3/core/utility/logging/argos_log.h): streams whose lines go
 // to essaim's log, as the Lua loop functions' log() and logerr() do.
 #pragma once
+#include <argos3/core/utility/datatypes/datatypes.h>  // ARGoS: through argos_colored_text.h
+
 #include <sstream>
 #include <string>
 

@@ -1,6 +1,8 @@
 // ARGoS's angles (argos3/core/utility/math/angles.h): CRadians and CDegrees.
 #pragma once
+#include <argos3/core/utility/datatypes/datatypes.h>
 #include <argos3/core/utility/math/general.h>
+#include <argos3/core/utility/math/range.h>
 
 #include <cmath>
 #include <istream>

@@ -1,6 +1,8 @@
 // ARGoS's CRange<T> (argos3/core/utility/math/range.h): an interval [min, max].
 #pragma once
 #include <argos3/core/utility/configuration/argos_exception.h>
+#include <argos3/core/utility/datatypes/datatypes.h>
+#include <argos3/core/utility/string_utilities.h>
 
 #include <istream>
 #include <ostream>

@@ -3,6 +3,8 @@
 // stream the Lua loop functions' experiment.random draws, so a C++ port of Lua loop
 // functions draws the same numbers (docs/loop-functions.md).
 #pragma once
+#include <argos3/core/utility/configuration/argos_exception.h>
+#include <argos3/core/utility/math/angles.h>
 #include <argos3/core/utility/math/range.h>
 #include <argos3/core/utility/math/vector2.h>
 
@@ -27,6 +29,8 @@ class CRandom {
     Real Gaussian(Real f_std_dev, Real f_mean = 0);
     UInt32 Poisson(Real f_mean);
     UInt64 GetSeed() const;
+    /// The generator's type (a GSL name in ARGoS until 3.0.0-beta42): essaim's is a Mersenne Twister.
+    std::string GetType() const { return "mt19937"; }
 
    private:
     friend class CRandom;
@@ -38,6 +42,14 @@ class CRandom {
   /// A new generator of `str_category` ("argos": seeded from the experiment's seed). The
   /// experiment owns it: it is freed when the run ends.
   static CRNG* CreateRNG(const std::string& str_category);
+  /// ARGoS's until 3.0.0-beta42, which let a GSL generator type be chosen; essaim has the
+  /// Mersenne Twister, ARGoS's default, alone.
+  static CRNG* CreateRNG(const std::string& str_category, const std::string& str_type) {
+    if (str_type != "mt19937")
+      THROW_ARGOSEXCEPTION("CRandom::CreateRNG: no generator type \"" << str_type
+                                                                      << "\" (essaim has \"mt19937\" only)");
+    return CreateRNG(str_category);
+  }
   static bool ExistsCategory(const std::string& str_category);
 };
 

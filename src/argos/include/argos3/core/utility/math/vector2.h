@@ -1,6 +1,8 @@
 // ARGoS's CVector2 (argos3/core/utility/math/vector2.h).
 #pragma once
 #include <argos3/core/utility/math/angles.h>
+#include <argos3/core/utility/math/general.h>
+#include <argos3/core/utility/string_utilities.h>
 
 #include <cmath>
 #include <istream>

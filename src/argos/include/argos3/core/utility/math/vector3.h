@@ -1,6 +1,9 @@
 // ARGoS's CVector3 (argos3/core/utility/math/vector3.h).
 #pragma once
+#include <argos3/core/utility/math/angles.h>
+#include <argos3/core/utility/math/general.h>
 #include <argos3/core/utility/math/vector2.h>
+#include <argos3/core/utility/string_utilities.h>
 
 #include <cmath>
 #include <istream>

@@ -10,6 +10,7 @@ extern "C" {
 
 #include <argos3/core/control_interface/ci_controller.h>
 #include <argos3/core/utility/datatypes/datatypes.h>
+#include <argos3/core/utility/math/rng.h>
 
 static_assert(LUA_VERSION_NUM == 504,
               "essaim's controllers run Lua 5.4: compile loop functions that read a controller's state with "

@@ -2,8 +2,11 @@
 // cylinder or a foot-bot.
 #pragma once
 #include <argos3/core/simulator/entity/entity.h>
+#include <argos3/core/simulator/entity/positional_entity.h>
 #include <argos3/core/utility/datatypes/color.h>
 #include <argos3/core/utility/math/vector3.h>
+
+#include <vector>
 
 namespace argos {
 
@@ -11,6 +14,7 @@ class CLEDEquippedEntity;
 
 class CLEDEntity : public CEntity {
  public:
+  typedef std::vector<CLEDEntity*> TList;
   CLEDEntity(CLEDEquippedEntity* pc_parent, UInt32 un_index, const CVector3& c_offset, const CColor& c_color);
   std::string GetTypeDescription() const override { return "led"; }
   /// The colour now (the world's once the entity is in the space).

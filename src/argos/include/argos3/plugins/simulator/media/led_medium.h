@@ -2,6 +2,7 @@
 // cameras see LEDs and lights through.
 #pragma once
 #include <argos3/core/simulator/medium/medium.h>
+#include <argos3/plugins/simulator/entities/led_entity.h>
 
 namespace argos {
 

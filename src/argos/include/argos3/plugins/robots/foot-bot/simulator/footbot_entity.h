@@ -17,7 +17,9 @@ class CFootBotEntity : public CComposableEntity {
   CFootBotEntity(const std::string& str_id, const std::string& str_controller_id,
                  const CVector3& c_position = CVector3(), const CQuaternion& c_orientation = CQuaternion(),
                  Real f_rab_range = 3.0, size_t un_rab_data_size = 10, const std::string& str_bat_model = "",
-                 const CRadians& c_omnicam_aperture = CRadians(1.2740903539558606), Real f_perspcam_range = 2.0)
+                 const CRadians& c_omnicam_aperture = CRadians(1.2740903539558606), bool b_perspcam_front = true,
+                 const CRadians& c_perspcam_aperture = CRadians(0.5235987755982988),
+                 Real f_perspcam_focal_length = 0.035, Real f_perspcam_range = 2.0)
       : CComposableEntity(str_id),
         m_cEmbodied(this, str_id + ".body", c_position, c_orientation, true),
         m_cControllable(this, str_id + ".controller", str_controller_id),
@@ -26,8 +28,23 @@ class CFootBotEntity : public CComposableEntity {
         m_fRabRange(f_rab_range),
         m_unRabDataSize(un_rab_data_size),
         m_cOmnicamAperture(c_omnicam_aperture) {
-    (void)str_bat_model, (void)f_perspcam_range;
+    (void)str_bat_model, (void)b_perspcam_front, (void)c_perspcam_aperture, (void)f_perspcam_focal_length;
+    (void)f_perspcam_range;
   }
+  /// ARGoS 3.0.0-beta35 to beta48's: no battery model, the omnidirectional camera's aperture
+  /// after the RAB data size.
+  CFootBotEntity(const std::string& str_id, const std::string& str_controller_id, const CVector3& c_position,
+                 const CQuaternion& c_orientation, Real f_rab_range, size_t un_rab_data_size,
+                 const CRadians& c_omnicam_aperture, bool b_perspcam_front = true,
+                 const CRadians& c_perspcam_aperture = CRadians(0.5235987755982988),
+                 Real f_perspcam_focal_length = 0.035, Real f_perspcam_range = 2.0)
+      : CFootBotEntity(str_id, str_controller_id, c_position, c_orientation, f_rab_range, un_rab_data_size, "",
+                       c_omnicam_aperture, b_perspcam_front, c_perspcam_aperture, f_perspcam_focal_length,
+                       f_perspcam_range) {}
+  /// ARGoS 3.0.0-beta18 to beta34's: no RAB data size (10 bytes), the camera's aperture last.
+  CFootBotEntity(const std::string& str_id, const std::string& str_controller_id, const CVector3& c_position,
+                 const CQuaternion& c_orientation, Real f_rab_range, const CRadians& c_aperture)
+      : CFootBotEntity(str_id, str_controller_id, c_position, c_orientation, f_rab_range, 10, "", c_aperture) {}
   std::string GetTypeDescription() const override { return "foot-bot"; }
   CEmbodiedEntity& GetEmbodiedEntity() { return m_cEmbodied; }
   CControllableEntity& GetControllableEntity() { return m_cControllable; }
