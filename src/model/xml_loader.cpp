@@ -830,7 +830,7 @@ bool Loader::LoadLight(const XMLElement* e, LightDef* l) {
   l->id = Required(e, "id");
   l->loc = Loc(e);
   l->position = Vector3(e, "position", Vec3::Zero(), true);
-  Vector3(e, "orientation", Vec3::Zero(), true);
+  Vector3(e, "orientation", Vec3::Zero());  // read (so not unknown), optional as in ARGoS's CPositionalEntity
   std::string c = Required(e, "color");
   auto col = ParseColor(c);
   if (!c.empty() && !col) Error(e, "bad colour '" + c + "'");

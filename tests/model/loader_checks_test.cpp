@@ -105,6 +105,16 @@ TEST(UnknownAttributes, ATypoInTheFileIsAWarningAndAnErrorUnderStrict) {
   EXPECT_TRUE(Contains(s.Errors(), "unknown attribute 'intensty'")) << s.Errors();
 }
 
+// ARGoS's positional entity reads a light's orientation with a default (a light has none
+// to speak of): a <light> without it loads, as in ARGoS.
+TEST(Loader, ALightNeedsNoOrientation) {
+  std::string arena = "<light id=\"l\" position=\"1,1,0.5\" color=\"yellow\" intensity=\"1\" medium=\"leds\"/>";
+  std::string xml = Replace(Experiment(arena, kCtrl), "<media/>", "<media><led id=\"leds\"/></media>");
+  Loaded l = LoadWith(xml);
+  ASSERT_TRUE(l.model) << l.Errors();
+  EXPECT_EQ(l.warnings.Size(), 0u) << l.Warnings();
+}
+
 TEST(UnknownAttributes, DeviceAttributeTyposAndIgnoredOnesAreTold) {
   std::string ctrl = kCtrl;
   ctrl = Replace(ctrl, "show_rays", "show_rayz");

@@ -8,36 +8,35 @@
 using namespace argos;
 
 class CLifecycleLoopFunctions : public CLoopFunctions {
-public:
-   /* The constructor's zone lies outside the arena: a floor drawn from it is all white. */
-   CLifecycleLoopFunctions() : m_cZoneCenter(100, 100), m_fZoneRadius(0) {}
+ public:
+  /* The constructor's zone lies outside the arena: a floor drawn from it is all white. */
+  CLifecycleLoopFunctions() : m_cZoneCenter(100, 100), m_fZoneRadius(0) {}
 
-   virtual void Init(TConfigurationNode& t_tree) {
-      TConfigurationNode& tZone = GetNode(t_tree, "zone");
-      GetNodeAttribute(tZone, "center", m_cZoneCenter);
-      GetNodeAttribute(tZone, "radius", m_fZoneRadius);
-      LOG << "lifecycle: zone at " << m_cZoneCenter << " radius " << m_fZoneRadius << std::endl;
-   }
+  virtual void Init(TConfigurationNode& t_tree) {
+    TConfigurationNode& tZone = GetNode(t_tree, "zone");
+    GetNodeAttribute(tZone, "center", m_cZoneCenter);
+    GetNodeAttribute(tZone, "radius", m_fZoneRadius);
+    LOG << "lifecycle: zone at " << m_cZoneCenter << " radius " << m_fZoneRadius << std::endl;
+  }
 
-   virtual CColor GetFloorColor(const CVector2& c_position) {
-      return (c_position - m_cZoneCenter).Length() < m_fZoneRadius ? CColor::BLACK : CColor::WHITE;
-   }
+  virtual CColor GetFloorColor(const CVector2& c_position) {
+    return (c_position - m_cZoneCenter).Length() < m_fZoneRadius ? CColor::BLACK : CColor::WHITE;
+  }
 
-   virtual void Destroy() {
-      CSpace::TMapPerType& cBots = GetSpace().GetEntitiesByType("foot-bot");
-      for(CSpace::TMapPerType::iterator it = cBots.begin(); it != cBots.end(); ++it) {
-         CFootBotEntity& cBot = *any_cast<CFootBotEntity*>(it->second);
-         lua_State* ptState =
-            dynamic_cast<CLuaController&>(cBot.GetControllableEntity().GetController()).GetLuaState();
-         lua_getglobal(ptState, "steps");
-         LOG << "lifecycle: destroy " << cBot.GetId() << " steps " << lua_tonumber(ptState, -1) << std::endl;
-         lua_pop(ptState, 1);
-      }
-   }
+  virtual void Destroy() {
+    CSpace::TMapPerType& cBots = GetSpace().GetEntitiesByType("foot-bot");
+    for (CSpace::TMapPerType::iterator it = cBots.begin(); it != cBots.end(); ++it) {
+      CFootBotEntity& cBot = *any_cast<CFootBotEntity*>(it->second);
+      lua_State* ptState = dynamic_cast<CLuaController&>(cBot.GetControllableEntity().GetController()).GetLuaState();
+      lua_getglobal(ptState, "steps");
+      LOG << "lifecycle: destroy " << cBot.GetId() << " steps " << lua_tonumber(ptState, -1) << std::endl;
+      lua_pop(ptState, 1);
+    }
+  }
 
-private:
-   CVector2 m_cZoneCenter;
-   Real m_fZoneRadius;
+ private:
+  CVector2 m_cZoneCenter;
+  Real m_fZoneRadius;
 };
 
 /* Logged while the library loads, before any experiment hook runs. */
