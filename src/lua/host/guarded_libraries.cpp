@@ -270,8 +270,22 @@ void GuardLibrary(lua_State* L, const char* name, int base_error) {
     Wrap(L, "exit", GuardedExit, nullptr);
   } else if (std::strcmp(name, LUA_LOADLIBNAME) == 0) {
     ReadyPackage(L, *g);
-  } else if (std::strcmp(name, LUA_IOLIBNAME) == 0 && g->io_opened) {
-    g->io_opened(L, g->io_owner);
+  } else if (std::strcmp(name, LUA_IOLIBNAME) == 0) {
+    RouteIoWrites(L);
+  }
+}
+
+void AddSandboxHint(const LuaGuard& g, std::string* message) {
+  if (!g.sandbox) return;
+  const size_t end = std::min(message->find('\n'), message->size());
+  const size_t at = message->rfind("a nil value (", end);
+  if (at == std::string::npos) return;
+  for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
+    const size_t found = message->find(std::string(" '") + name + "')", at);
+    if (found != std::string::npos && found < end) {
+      message->insert(end, ": --sandbox leaves out io, os, debug, dofile and loadfile (docs/sandbox.md)");
+      return;
+    }
   }
 }
 
