@@ -63,10 +63,12 @@ def test_output_by_name_then_stdout_with_log_prefix(tmp_path, threads):
     assert r.stdout.splitlines() == [f"[t=4 fb{i}] closed after 3 rewards" for i in range(3)], r.stdout
 
 
-def test_log_dir_gets_only_what_goes_to_stdout(tmp_path):
+@pytest.mark.parametrize("threads", [1, 2])
+def test_log_dir_gets_only_what_goes_to_stdout(tmp_path, threads):
     experiment(tmp_path, BY_NAME, robots=2)
     logs = tmp_path / "logs"
-    r = essaim("run", "x.argos", "--ticks", "6", "-q", "--log-dir", logs, "--out", "o", cwd=tmp_path)
+    r = essaim("run", "x.argos", "--ticks", "6", "--threads", threads, "-q", "--log-dir", logs, "--out", "o",
+               cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert r.stdout == ""
     for i in range(2):
