@@ -22,7 +22,8 @@ const char* kAlwaysThere =
     "      gaussian(sd [, mean]), exponential(mean), poisson(mean), bernoulli([p])\n"
     "  log(...), logerr(...)  -> one line on stdout / stderr, the arguments joined with no separator\n"
     "      as ARGoS writes them (numbers %g, booleans 1/0); print(...) separates them with tabs;\n"
-    "      print(...) and io.write(...) go the same way (--log-prefix, --log-dir)\n"
+    "      print(...) and io.write(...) to io.stdout go the same way (--log-prefix, --log-dir);\n"
+    "      io.output(file) sends io.write(...) to that file, as in Lua\n"
     "  vector2, vector3, quaternion  -> ARGoS's math types\n"
     "\n";
 

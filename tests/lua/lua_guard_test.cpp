@@ -124,7 +124,7 @@ TEST(LuaWatchdog, ByDefaultCoversCoroutinesToo) {
 }
 
 TEST(LuaWatchdog, GuardedCoroutinesBehaveAsLuas) {
-  std::string e = StepError(R"(
+  std::string e = StepError(R"lua(
 function step()
   local gen = coroutine.wrap(function(a) local b = coroutine.yield(a + 1) return b * 2 end)
   assert(gen(1) == 2 and gen(5) == 10)
@@ -134,8 +134,28 @@ function step()
   local ok2, x, y = coroutine.resume(co, 7)
   assert(ok2 and x == 7 and y == true and coroutine.status(co) == "dead")
   assert(not pcall(coroutine.resume, 42))
+  -- As Lua 5.4's auxwrap: a coroutine that dies by an error has its to-be-closed variables
+  -- closed (an error there replaces the original), a dead one cannot be resumed, and a
+  -- non-function is wrap's bad argument.
+  local closed = false
+  local dies = coroutine.wrap(function()
+    local x <close> = setmetatable({}, {__close = function() closed = true end})
+    error("boom", 0)
+  end)
+  local ok3, err3 = pcall(dies)
+  assert(not ok3 and err3 == "boom" and closed, err3)
+  local ok4, err4 = pcall(dies)
+  assert(not ok4 and err4 == "cannot resume dead coroutine", err4)
+  local replaced = coroutine.wrap(function()
+    local x <close> = setmetatable({}, {__close = function() error("in close", 0) end})
+    error("boom", 0)
+  end)
+  assert(select(2, pcall(replaced)) == "in close")
+  local ok5, err5 = pcall(coroutine.wrap, 1)
+  assert(err5 == "bad argument #1 to 'coroutine.wrap' (function expected, got number)", err5)
+  assert(select(2, pcall(coroutine.wrap)) == "bad argument #1 to 'coroutine.wrap' (function expected, got no value)")
 end
-)",
+)lua",
                             SimOptions());
   EXPECT_EQ(e, "");
 }

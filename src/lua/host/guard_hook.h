@@ -38,9 +38,13 @@ std::string WatchGuard(LuaGuard* g, long long now, bool interrupt);
 long long SteadyNowNs();
 
 /// With a library's fresh table on top of the stack (named `name`, as luaopen_* made it),
-/// closes its escapes from the watchdog (coroutine, os, debug) and lets the owner route io.
+/// closes its escapes from the watchdog (coroutine, os, debug) and routes io's writes to stdout.
 /// `base_error`: the stack index of the base library's own error().
 void GuardLibrary(lua_State* L, const char* name, int base_error);
+
+/// With io's fresh table on top: io.write and the file method write wrapped so that what
+/// reaches the process's stdout goes to the guard's stdout_lines (none set: nothing done).
+void RouteIoWrites(lua_State* L);
 
 /// Under globals (and package.loaded) table, string, package, coroutine, utf8, io, os and
 /// debug (io, os and debug not under the sandbox): empty tables that open their library

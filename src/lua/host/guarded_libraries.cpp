@@ -41,15 +41,35 @@ int GuardedResume(lua_State* L) {
   return lua_gettop(L);
 }
 
-// coroutine.wrap over the guarded resume; errors are re-raised with the caller's position,
-// as the original's.
+// wrap's argument check: nil for a function, else Lua's message (luaL_typeerror's words).
+int NotAFunction(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TFUNCTION) return 0;
+  const char* got = lua_isnone(L, 1)                                   ? "no value"
+                    : luaL_getmetafield(L, 1, "__name") == LUA_TSTRING ? lua_tostring(L, -1)
+                    : lua_type(L, 1) == LUA_TLIGHTUSERDATA             ? "light userdata"
+                                                                       : luaL_typename(L, 1);
+  lua_pushfstring(L, "bad argument #1 to 'coroutine.wrap' (function expected, got %s)", got);
+  return 1;
+}
+
+// coroutine.wrap over the guarded resume, as Lua 5.4's auxwrap: a non-function argument is
+// wrap's bad argument, errors are re-raised with the caller's position, and a coroutine that
+// died by an error has its pending to-be-closed variables closed first (an error there
+// replaces the original).
 const char kGuardedWrap[] = R"(
-local create, resume, error = ...
-return function(f)
-  local co = create(f)
+local create, resume, error, close, status, not_a_function = ...
+return function(...)
+  local bad = not_a_function(...)
+  if bad then error(bad, 2) end
+  local co = create(...)
   local function finish(ok, ...)
-    if not ok then error((...), 2) end
-    return ...
+    if ok then return ... end
+    local err = ...
+    if status(co) == "dead" then
+      local closed, closing_error = close(co)
+      if not closed then err = closing_error end
+    end
+    error(err, 2)
   end
   return function(...) return finish(resume(co, ...)) end
 end
@@ -61,17 +81,21 @@ void GuardCoroutines(lua_State* L, int base_error) {
   lua_getfield(L, -1, "resume");
   lua_pushcclosure(L, GuardedResume, 1);
   lua_setfield(L, -2, "resume");
-  lua_getfield(L, -1, "create");  // the wrap's upvalues: create, resume, error
-  lua_getfield(L, -2, "resume");
+  const int coroutine = lua_gettop(L);
+  // The wrap's upvalues: create, resume, error, close, status, the argument's check.
+  for (const char* name : {"create", "resume"}) lua_getfield(L, coroutine, name);
   lua_pushvalue(L, base_error);
+  for (const char* name : {"close", "status"}) lua_getfield(L, coroutine, name);
+  lua_pushcfunction(L, NotAFunction);
+  constexpr int kUpvalues = 6;
   CompiledScripts* scripts = GuardOf(L)->scripts;
   const int loaded = scripts ? scripts->LoadText(L, "=coroutine.wrap", kGuardedWrap, sizeof kGuardedWrap - 1)
                              : luaL_loadbufferx(L, kGuardedWrap, sizeof kGuardedWrap - 1, "=coroutine.wrap", "t");
-  lua_insert(L, -4);  // the chunk (or the error) under create, resume, error
-  if (loaded == LUA_OK && lua_pcall(L, 3, 1, 0) == LUA_OK)
-    lua_setfield(L, -2, "wrap");
+  lua_insert(L, coroutine + 1);  // the chunk (or the error) under its upvalues
+  if (loaded == LUA_OK && lua_pcall(L, kUpvalues, 1, 0) == LUA_OK)
+    lua_setfield(L, coroutine, "wrap");
   else
-    lua_settop(L, lua_gettop(L) - (loaded == LUA_OK ? 1 : 4));
+    lua_settop(L, coroutine);
 }
 
 int TextOnlyLoad(lua_State* L) {
@@ -270,8 +294,22 @@ void GuardLibrary(lua_State* L, const char* name, int base_error) {
     Wrap(L, "exit", GuardedExit, nullptr);
   } else if (std::strcmp(name, LUA_LOADLIBNAME) == 0) {
     ReadyPackage(L, *g);
-  } else if (std::strcmp(name, LUA_IOLIBNAME) == 0 && g->io_opened) {
-    g->io_opened(L, g->io_owner);
+  } else if (std::strcmp(name, LUA_IOLIBNAME) == 0) {
+    RouteIoWrites(L);
+  }
+}
+
+void AddSandboxHint(const LuaGuard& g, std::string* message) {
+  if (!g.sandbox) return;
+  const size_t end = std::min(message->find('\n'), message->size());
+  const size_t at = message->rfind("a nil value (", end);
+  if (at == std::string::npos) return;
+  for (const char* name : {"io", "os", "debug", "dofile", "loadfile"}) {
+    const size_t found = message->find(std::string(" '") + name + "')", at);
+    if (found != std::string::npos && found < end) {
+      message->insert(end, ": --sandbox leaves out io, os, debug, dofile and loadfile (docs/sandbox.md)");
+      return;
+    }
   }
 }
 

@@ -30,17 +30,6 @@ void AppendArgosLogText(lua_State* L, std::string* out) {
   }
 }
 
-void AppendPrintText(lua_State* L, std::string* out) {
-  const int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
-    if (i > 1) *out += '\t';
-    size_t len = 0;
-    const char* s = luaL_tolstring(L, i, &len);
-    out->append(s, len);
-    lua_pop(L, 1);
-  }
-}
-
 void EndLogEntry(std::string* log, size_t begin) {
   const char stream = (*log)[begin];
   for (size_t i = log->find('\n', begin); i != std::string::npos; i = log->find('\n', i + 2))

@@ -26,6 +26,7 @@ class CompiledScripts;
 class InputFiles;
 class Watchdog;
 struct WatchSlot;
+struct WrittenLines;
 
 /// The watchdog's limits, on by default (--lua-budget, --lua-init-budget, --lua-memory, <system>).
 /// A call running this long gets the count hook (and, after a signal, is interrupted). Short,
@@ -87,15 +88,15 @@ struct LuaGuard {
   bool sandbox = false;
   std::string package_path_prefix;
   InputFiles* module_inputs = nullptr;
-  // Called with the io library's table on top when a script first uses io (the controller
-  // routes io.write to its log), with `io_owner`.
-  void (*io_opened)(lua_State* L, void* owner) = nullptr;
-  void* io_owner = nullptr;
+  // Where print and the io library's writes to the process's stdout go (RouteStdout); null:
+  // to stdout, as Lua's. io.write and the file method write are wrapped when io opens.
+  WrittenLines* stdout_lines = nullptr;
   // Where the libraries' own Lua text is compiled once for the run; null: per state.
   CompiledScripts* scripts = nullptr;
   // The library functions the guarded ones wrap, called directly: kept out of the Lua
   // state, so that debug.getupvalue cannot hand a script the original.
   lua_CFunction original_setmetatable = nullptr, original_debug_setmetatable = nullptr, original_xpcall = nullptr;
+  lua_CFunction original_io_write = nullptr, original_file_write = nullptr;
   // Wall clock: the watchdog thread reads these while the owner's thread runs Lua.
   lua_State* state = nullptr;
   Watchdog* watchdog = nullptr;  // the one that watches this state's calls, or null
@@ -143,6 +144,10 @@ void BeginGuardedCall(LuaGuard* guard, CallKind kind);
 /// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),
 /// else "". `status` is lua_pcall's result.
 std::string EndGuardedCall(LuaGuard* guard, int status);
+
+/// Under the sandbox, an error that met a nil io, os, debug, dofile or loadfile ("attempt
+/// to index a nil value (global 'io')") says why, at the end of its first line.
+void AddSandboxHint(const LuaGuard& g, std::string* message);
 
 /// Whether EndGuardedCall's message already starts with the script's file:line (os.exit,
 /// the memory limit), so the caller need not name the script.

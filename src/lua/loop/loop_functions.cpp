@@ -9,6 +9,7 @@
 #include "core/paths.h"
 #include "lua/host/log_text.h"
 #include "lua/host/lua_require.h"
+#include "lua/host/stdout_lines.h"
 #include "lua/loop/loop_handles.h"
 #include "lua/loop/lua_to_value.h"
 #include "lua/robot/lua_math_types.h"
@@ -34,17 +35,12 @@ int Traceback(lua_State* L) {
   return 1;
 }
 
-// log and logerr as a controller's (ARGoS's text), print as Lua's.
+// log and logerr as a controller's (ARGoS's text).
 int LoopLog(lua_State* L) {
   auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
-  const char kind = static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
   const size_t begin = log->size();
-  *log += kind == 'P' ? 'O' : kind;
-  if (kind == 'P') {
-    AppendPrintText(L, log);
-  } else {
-    AppendArgosLogText(L, log);
-  }
+  *log += static_cast<char>(lua_tointeger(L, lua_upvalueindex(2)));
+  AppendArgosLogText(L, log);
   EndLogEntry(log, begin);
   return 0;
 }
@@ -54,13 +50,16 @@ int LoopLog(lua_State* L) {
 LoopFunctions::~LoopFunctions() { CloseGuardedState(&guard_); }
 
 void LoopFunctions::OpenLogs() {
-  const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}, {"print", 'P'}};
+  const std::pair<const char*, char> logs[] = {{"log", 'O'}, {"logerr", 'E'}};
   for (auto [name, stream] : logs) {
     lua_pushlightuserdata(L_, &context_.log);
     lua_pushinteger(L_, stream);
     lua_pushcclosure(L_, LoopLog, 2);
     lua_setglobal(L_, name);
   }
+  // print as Lua's, and io's writes to stdout: the same buffer, in order with the robots'.
+  stdout_.log = &context_.log;
+  RouteStdout(L_, &stdout_);
 }
 
 // math.random seeded from the experiment, like the controllers'.
@@ -229,6 +228,7 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, CallKind ki
   lua_insert(L, fn);
   BeginGuardedCall(&guard_, kind);
   const int status = lua_pcall(L, nargs, nresults, fn);
+  EndWrittenLine(&stdout_);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
@@ -236,6 +236,7 @@ bool LoopFunctions::PCall(int nargs, int nresults, const char* what, CallKind ki
              (!stopped.empty() ? (StopNamesItsLine(guard_) ? "" : context_.script + ": ") + stopped
               : msg            ? msg
                                : "error");
+    AddSandboxHint(guard_, error);
     lua_settop(L, 0);
     return false;
   }

@@ -8,6 +8,7 @@
 #include "core/value.h"
 #include "devices/entity_store.h"
 #include "lua/host/lua_guard.h"
+#include "lua/host/stdout_lines.h"
 #include "lua/loop/loop_context.h"
 #include "lua/robot/lua_controller.h"
 #include "lua/robot/lua_params.h"
@@ -67,6 +68,7 @@ class LoopFunctions {
   int experiment_ref_ = -1;  // `experiment`, held by the host: scripts may rebind the global
   Rng rng_;
   LoopContext context_;  // what the bindings reach (LoopContextOf)
+  WrittenLines stdout_;  // print's and io.write's lines into context_.log, and the open one
 };
 
 }  // namespace essaim

@@ -11,6 +11,7 @@
 #include "lua/host/log_text.h"
 #include "lua/host/lua_host.h"
 #include "lua/host/lua_require.h"
+#include "lua/host/stdout_lines.h"
 #include "lua/robot/lua_devices.h"
 #include "lua/robot/lua_math_types.h"
 #include "lua/robot/lua_params.h"
@@ -39,39 +40,6 @@ int LogTo(lua_State* L, char stream) {
 }
 int Log(lua_State* L) { return LogTo(L, 'O'); }
 int LogErr(lua_State* L) { return LogTo(L, 'E'); }
-// io.write, routed through the robot's log buffer like print(): whole lines become log
-// lines (robot order, --log-prefix, --log-dir); a line left open is ended with the call.
-// Returns io.stdout, as io.write does.
-int IoWrite(lua_State* L) {
-  auto* self = static_cast<LuaController*>(lua_touserdata(L, lua_upvalueindex(1)));
-  const int n = lua_gettop(L);
-  for (int i = 1; i <= n; ++i) {
-    size_t len = 0;
-    const char* text = luaL_checklstring(L, i, &len);  // numbers as io.write formats them
-    self->WriteText(text, len);
-  }
-  lua_pushvalue(L, lua_upvalueindex(2));
-  return 1;
-}
-
-// With io's table on top, when the script first uses io (the sandbox has none).
-void RouteIoWrite(lua_State* L, void* controller) {
-  lua_pushlightuserdata(L, controller);
-  lua_getfield(L, -2, "stdout");
-  lua_pushcclosure(L, IoWrite, 2);
-  lua_setfield(L, -2, "write");
-}
-
-int Print(lua_State* L) {
-  // Lua's print, routed through the buffer so output keeps robot order under threads.
-  auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
-  const size_t begin = log->size();
-  *log += 'O';
-  AppendPrintText(L, log);
-  EndLogEntry(log, begin);
-  return 0;
-}
-
 }  // namespace
 
 LuaController::~LuaController() { CloseGuardedState(&guard_); }
@@ -82,8 +50,6 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   robot_id_ = def.id;
   controller_ = &model.controllers[def.controller];
   guard_.name = "robot " + def.id;
-  guard_.io_opened = RouteIoWrite;
-  guard_.io_owner = this;
   L_ = NewGuardedState(&guard_, options);
   if (!L_) {
     *error = "robot " + def.id + ": cannot create a Lua state";
@@ -129,11 +95,14 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
 }
 
 void LuaController::OpenGlobals(lua_State* L) {
-  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}, {"print", Print}}) {
+  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}}) {
     lua_pushlightuserdata(L, &log_);
     lua_pushcclosure(L, fn, 1);
     lua_setglobal(L, name);
   }
+  // print and io's writes to stdout: the buffer too, so output keeps robot order under threads.
+  stdout_.log = &log_;
+  RouteStdout(L, &stdout_);
   OpenMathTypes(L);
 }
 
@@ -169,10 +138,12 @@ bool LuaController::RunChunk(const LuaOptions& options, std::string* error) {
   }
   BeginGuardedCall(&guard_, CallKind::Setup);
   const int status = lua_pcall(L, 0, 0, base);
+  EndWrittenLine(&stdout_);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     *error = "robot " + robot_id_ + ": " +
              (stopped.empty() ? lua_tostring(L, -1) : (StopNamesItsLine(guard_) ? "" : script + ": ") + stopped);
+    AddSandboxHint(guard_, error);
     lua_settop(L, 0);
     return false;
   }
@@ -214,23 +185,6 @@ bool LuaController::PushReadings(std::string* error) {
   return Finish(status, "filling its sensor readings", "", error);
 }
 
-void LuaController::WriteText(const char* text, size_t len) {
-  for (size_t i = 0; i < len; ++i) {
-    if (text[i] != '\n') {
-      write_ += text[i];
-      continue;
-    }
-    EndWrittenLine();
-  }
-}
-
-void LuaController::EndWrittenLine() {
-  log_ += 'O';
-  log_ += write_;
-  log_ += '\n';
-  write_.clear();
-}
-
 bool LuaController::HasFunction(const char* name) {
   if (!L_ || controller_->script.empty()) return false;
   const bool found = lua_getglobal(L_, name) == LUA_TFUNCTION;
@@ -260,7 +214,7 @@ bool LuaController::Call(const char* fn, bool required, CallKind kind, std::stri
 
 bool LuaController::Finish(int status, const char* where, const char* name, std::string* error) {
   lua_State* L = L_;
-  if (!write_.empty()) EndWrittenLine();
+  EndWrittenLine(&stdout_);
   std::string stopped = EndGuardedCall(&guard_, status);
   if (status != LUA_OK || !stopped.empty()) {
     const char* msg = lua_tostring(L, -1);
@@ -271,6 +225,7 @@ bool LuaController::Finish(int status, const char* where, const char* name, std:
               : msg            ? msg
                                : "error") +
              " (" + where + name + ")";
+    AddSandboxHint(guard_, error);
     lua_settop(L, 0);
     if (guard_.memory_exceeded) {
       // Free what the runaway took; the robot never runs again.

@@ -8,6 +8,7 @@
 
 #include "devices/robot_state.h"
 #include "lua/host/lua_guard.h"
+#include "lua/host/stdout_lines.h"
 #include "lua/robot/lua_device_refs.h"
 #include "lua/robot/lua_params.h"
 #include "model/model.h"
@@ -36,8 +37,6 @@ class LuaController {
   bool CallInit(std::string* error) { return Call("init", false, CallKind::Setup, error); }
   bool CallStep(std::string* error) { return Call("step", true, CallKind::Step, error); }
   bool CallDestroy(std::string* error) { return Call("destroy", false, CallKind::Setup, error); }
-  /// io.write's text: each completed line goes to the log buffer as a print() line.
-  void WriteText(const char* text, size_t len);
   /// The script defines global function `name` (false without a script or a state).
   bool HasFunction(const char* name);
 
@@ -53,7 +52,8 @@ class LuaController {
 
  private:
   bool Call(const char* fn, bool required, CallKind kind, std::string* error);
-  /// The globals every controller script sees: log, logerr, print, io.write, vector types.
+  /// The globals every controller script sees: log, logerr, print (and io's writes to
+  /// stdout) into the log buffer, vector types.
   void OpenGlobals(::lua_State* L);
   /// The robot table, in ARGoS's order: id, random, actuators, sensors, params.
   void CreateRobotTable(::lua_State* L, const RobotDef& def, RobotState* robot);
@@ -63,7 +63,6 @@ class LuaController {
   /// closed if it ran out of memory; true if the call went through. The error ends with
   /// " (" where name ")", e.g. " (in step)".
   bool Finish(int status, const char* where, const char* name, std::string* error);
-  void EndWrittenLine();
 
   ::lua_State* L_ = nullptr;
   LuaGuard guard_;
@@ -71,7 +70,7 @@ class LuaController {
   std::string robot_id_;         // not the RobotDef: the scene's list grows during a run
   const ControllerDef* controller_ = nullptr;
   std::string log_;
-  std::string write_;  // io.write's open line
+  WrittenLines stdout_;  // print's and io.write's lines into log_, and the open one
   int traceback_ref_ = -1;
   LuaDeviceRefs refs_;    // device tables refreshed each tick
   TrackedParams params_;  // robot.params
