@@ -7,6 +7,7 @@
 
 #include "core/color.h"
 #include "core/paths.h"
+#include "lua/host/field_hint.h"
 #include "lua/host/log_text.h"
 #include "lua/host/lua_require.h"
 #include "lua/host/stdout_lines.h"
@@ -31,6 +32,10 @@ int RawGlobal(lua_State* L, const char* name) {
 
 int Traceback(lua_State* L) {
   const char* msg = lua_tostring(L, 1);
+  if (msg) {
+    const std::string hint = FieldHint(L, msg, "experiment");
+    if (!hint.empty()) msg = lua_pushfstring(L, "%s%s", msg, hint.c_str());
+  }
   luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
   return 1;
 }

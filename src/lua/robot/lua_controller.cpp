@@ -1,5 +1,6 @@
 #include "lua/robot/lua_controller.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <lua.hpp>
@@ -8,6 +9,7 @@
 #include "core/rng.h"
 #include "core/strings.h"
 #include "lua/host/compiled_scripts.h"
+#include "lua/host/field_hint.h"
 #include "lua/host/log_text.h"
 #include "lua/host/lua_host.h"
 #include "lua/host/lua_require.h"
@@ -20,11 +22,33 @@
 namespace essaim {
 
 namespace {
+// robot.<device> keys, each nil unless the controller declares the device: why, for the hint.
+const std::vector<AbsentField>& DeviceFields() {
+  static const std::vector<AbsentField> fields = [] {
+    std::vector<AbsentField> out;
+    for (const DeviceRow& row : kDeviceRows) {
+      const std::string tag =
+          std::string("<") + row.xml_name + "> in its " + (row.is_sensor ? "<sensors>" : "<actuators>");
+      auto same = std::find_if(out.begin(), out.end(), [&](const AbsentField& f) { return f.name == row.lua_key; });
+      if (same != out.end())
+        same->why += " nor " + tag;
+      else
+        out.push_back(
+            {row.lua_key, std::string("robot.") + row.lua_key + " is nil: this controller declares no " + tag});
+    }
+    return out;
+  }();
+  return fields;
+}
+
 int Traceback(lua_State* L) {
   const char* msg = lua_tostring(L, 1);
   if (!msg) {
     if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
     msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  } else {
+    const std::string hint = FieldHint(L, msg, "robot", DeviceFields());
+    if (!hint.empty()) msg = lua_pushfstring(L, "%s%s", msg, hint.c_str());
   }
   luaL_traceback(L, L, msg, 1);
   return 1;
