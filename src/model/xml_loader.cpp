@@ -20,6 +20,7 @@
 #include "model/physics_regions.h"
 #include "model/placement.h"
 #include "model/xml_overrides.h"
+#include "model/xml_syntax.h"
 
 namespace essaim {
 
@@ -256,7 +257,7 @@ std::unique_ptr<Model> Loader::Load(const std::string& text) {
 
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
-    errors_->Add(path_, doc.ErrorLineNum(), "", std::string("malformed XML: ") + doc.ErrorStr());
+    errors_->Add(path_, doc.ErrorLineNum(), "", XmlSyntaxError(doc));
     return nullptr;
   }
   for (const std::string& o : options_.overrides) {

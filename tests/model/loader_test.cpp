@@ -83,6 +83,27 @@ TEST(Loader, MalformedXmlNamesTheLine) {
   EXPECT_NE(e.Format().find("x.argos:2: malformed XML"), std::string::npos) << e.Format();
 }
 
+// tinyxml2's own text ("Error=XML_ERROR_MISMATCHED_ELEMENT ErrorID=14 (0xe) ...") is said
+// for a person: the element, and what it lacks.
+TEST(Loader, MalformedXmlSaysWhatIsWrongInWords) {
+  TempDir d;
+  const std::pair<const char*, const char*> cases[] = {
+      {"<argos-configuration>\n<framework>\n  <output>\n</framework>\n</argos-configuration>\n",
+       "x.argos:3: malformed XML: <output> opened on this line is not closed where it should be: its </output> is "
+       "missing"},
+      {"<argos-configuration>\n<framework x=\"1>\n</argos-configuration>\n",
+       "x.argos:2: malformed XML: an attribute of <framework> cannot be read (write each as name=\"value\""},
+      {"<argos-configuration>\n<!-- no end\n</argos-configuration>\n",
+       "malformed XML: a comment '<!--' is not closed with '-->'"},
+      {"", "the file is empty: an experiment is an XML file with an <argos-configuration> element"}};
+  for (const auto& [text, message] : cases) {
+    ErrorList e;
+    EXPECT_FALSE(LoadText(d, text, &e));
+    EXPECT_NE(e.Format().find(message), std::string::npos) << e.Format();
+    EXPECT_EQ(e.Format().find("ErrorID"), std::string::npos) << e.Format();
+  }
+}
+
 TEST(Loader, CppLoopFunctionsLibraryIsFoundBesideTheFileWithOrWithoutSo) {
   TempDir d;
   d.Write("c.lua", "");

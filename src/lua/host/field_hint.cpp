@@ -1,8 +1,7 @@
 #include "lua/host/field_hint.h"
 
-#include <lua.hpp>
-
 #include <cstring>
+#include <lua.hpp>
 
 #include "core/strings.h"
 
