@@ -199,7 +199,10 @@ std::string LuaLanguageServerDefs() {
   std::string out =
       "---@meta\n"
       "-- essaim's Lua API for the Lua language server, made by `essaim devices --lua-defs` from the device\n"
-      "-- table of essaim " ESSAIM_VERSION ": regenerate it after an upgrade rather than editing it.\n\n";
+      "-- table of essaim " ESSAIM_VERSION
+      ": regenerate it after an upgrade rather than editing it.\n"
+      "-- luacheck: ignore\n"
+      "-- (declarations, not a script: `luacheck .` in a project holding this file skips it)\n\n";
   out += kAlwaysThere;
   out += kReadingClasses;
   for (const DeviceAnnotation& a : kAnnotations)

@@ -130,7 +130,8 @@ const char* kLuarc = R"({
   "$schema": "https://raw.githubusercontent.com/LuaLS/vscode-lua/master/setting/schema.json",
   "runtime.version": "Lua 5.4",
   "workspace.library": ["types"],
-  "diagnostics.globals": ["init", "step", "reset", "destroy", "post_experiment"]
+  "diagnostics.globals": ["init", "step", "reset", "destroy", "pre_step", "post_step", "is_experiment_finished",
+                          "post_experiment", "floor_color"]
 }
 )";
 

@@ -1,6 +1,7 @@
 """Editor support made from the device table (docs/testing.md): `essaim devices --lua-defs`
 (Lua language server annotations) covers every device row, loads as Lua, and `--luacheck`
 passes every shipped controller and loop-function script."""
+import json
 import re
 import shutil
 import subprocess
@@ -60,3 +61,22 @@ def test_luacheck_passes_every_shipped_script(tmp_path):
     r = subprocess.run([LUACHECK, "--no-color", "--config", str(config), *scripts], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout
+
+
+@pytest.mark.skipif(not LUACHECK, reason="luacheck is not installed (Debian lua-check; scripts/setup.sh)")
+def test_the_docs_recipe_lints_clean_with_the_definitions_beside(tmp_path):
+    """docs/testing.md's two commands in a project folder, then `luacheck .`: the definitions
+    file is declarations, not a script, and is skipped."""
+    (tmp_path / "essaim.d.lua").write_text(essaim("devices", "--lua-defs").stdout)
+    (tmp_path / ".luacheckrc").write_text(essaim("devices", "--luacheck").stdout)
+    (tmp_path / "c.lua").write_text("function step() robot.wheels.set_velocity(1, 1) end\n")
+    r = subprocess.run([LUACHECK, "--no-color", "."], cwd=tmp_path, capture_output=True, text=True)
+    assert r.returncode == 0 and "0 warnings" in r.stdout, r.stdout
+
+
+def test_luarc_and_luacheckrc_declare_the_same_hooks(tmp_path):
+    assert essaim("new", "demo", cwd=tmp_path).returncode == 0
+    luarc = json.loads((tmp_path / "demo" / ".luarc.json").read_text())["diagnostics.globals"]
+    config = essaim("devices", "--luacheck").stdout
+    hooks = config.split("globals = {", 1)[1].split("}", 1)[0]
+    assert sorted(luarc) == sorted(h.strip().strip('"') for h in hooks.split(",")), (luarc, hooks)
