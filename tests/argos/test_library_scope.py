@@ -2,7 +2,8 @@
 loop functions", "Libraries"): every library name ARGoS installs links to essaim's API, whose
 soname is essaim's own, so an ARGoS on LD_LIBRARY_PATH is never loaded; one experiment's
 libraries see each other's symbols, a later experiment's never do; a label is looked up among
-the experiment's libraries, and registered twice in one of them is refused."""
+the experiment's libraries (the last one's when several register it), and registered twice in
+one of them is refused."""
 import os
 import subprocess
 import sys
@@ -124,14 +125,27 @@ def test_a_library_uses_what_another_library_of_the_experiment_defines(scope, tm
     assert done.returncode == 2 and "undefined symbol: TwinHelperWord" in done.stderr
 
 
-def test_a_label_is_looked_up_in_the_experiments_libraries_only(scope, second, tmp_path):
-    """Label alone, ARGOS_PLUGIN_PATH naming the second build: its class, not the first's."""
+def label_alone(scope):
     argos = scope / "by_label.argos"
     argos.write_text((scope / "scope.argos").read_text().replace('library="build/libtwin_loop_functions.so" ', ""))
+    return argos
+
+
+def test_a_label_is_looked_up_in_the_experiments_libraries_only(scope, second, tmp_path):
+    """Label alone, ARGOS_PLUGIN_PATH naming the second build: its class, not the first's."""
     plugin_path = str(second / "build" / "libtwin_loop_functions.so")
-    done = run(argos, "--out", str(tmp_path / "out"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
+    done = run(label_alone(scope), "--out", str(tmp_path / "out"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
     assert done.returncode == 0, done.stderr
     assert (scope / "twin.txt").read_text() == "second\n"
+
+
+@pytest.mark.parametrize("order, word", [(["twin", "rival"], "rival"), (["rival", "twin"], "first")])
+def test_a_label_two_libraries_register_is_the_last_ones(scope, tmp_path, order, word):
+    """Label alone, as ARGoS's factory keeps the last registration: ARGOS_PLUGIN_PATH's order."""
+    plugin_path = ":".join(str(scope / "build" / f"lib{name}_loop_functions.so") for name in order)
+    done = run(label_alone(scope), "--out", str(tmp_path / "out"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
+    assert done.returncode == 0, done.stderr
+    assert (scope / "twin.txt").read_text() == word + "\n"
 
 
 def test_experiments_in_one_process_each_get_their_own_class(scope, second, tmp_path):

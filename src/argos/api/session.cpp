@@ -4,8 +4,10 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <deque>
 #include <exception>
 #include <functional>
+#include <mutex>
 
 #include "argos/api/session_state.h"
 #include "argos/argos_session.h"
@@ -23,10 +25,13 @@ struct Registration {
   int api_version;
   std::string library;  // real path of the file holding `creator`
 };
-std::vector<Registration>& Registry() {
-  static std::vector<Registration> registry;
+// A deque: a registration found stays where it is while other libraries register theirs
+// (a Python thread may load an experiment while another makes its loop functions).
+std::deque<Registration>& Registry() {
+  static std::deque<Registration> registry;
   return registry;
 }
+std::mutex registry_lock;
 
 std::string Describe(const argos::CARGoSException& e) {
   if (e.GetFile().empty()) return e.what();
@@ -80,6 +85,7 @@ ArgosSession::State& RequireSession(const char* what) {
 
 std::vector<ArgosRegistration> ArgosRegisteredLabels() {
   std::vector<ArgosRegistration> out;
+  std::lock_guard<std::mutex> lock(registry_lock);
   for (const Registration& r : Registry()) out.push_back({r.label, r.api_version, r.library});
   return out;
 }
@@ -101,6 +107,7 @@ namespace {
 // The registration of `label` among `libraries`: the last library's, as ARGoS's factory keeps
 // the last one loaded; a label twice in one library is an error.
 const Registration* Find(const std::vector<std::string>& libraries, const std::string& label, std::string* error) {
+  std::lock_guard<std::mutex> lock(registry_lock);
   const Registration* found = nullptr;
   for (const std::string& library : libraries) {
     const Registration* here = nullptr;
@@ -191,6 +198,7 @@ bool RegisterLoopFunctions(const char* str_label, TLoopFunctionsCreator pf_creat
     library = real ? real : info.dli_fname;
     std::free(real);
   }
+  std::lock_guard<std::mutex> lock(essaim::registry_lock);
   essaim::Registry().push_back({str_label, pf_creator, n_api_version, library});
   return true;
 }
