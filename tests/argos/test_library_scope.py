@@ -105,6 +105,16 @@ def test_a_label_registered_twice_in_one_library_is_refused(scope, tmp_path):
     assert "label 'twin_loop_functions' is registered twice in " in done.stderr
 
 
+def test_a_label_is_looked_up_in_the_library_named_only(scope, tmp_path):
+    """The library named needs the one that registers the label: not found, and said so."""
+    argos = scope / "thin.argos"
+    argos.write_text((scope / "scope.argos").read_text().replace("libtwin_loop_functions", "libthin_loop_functions"))
+    done = run(argos, "--out", str(tmp_path / "out"), cwd=scope)
+    assert done.returncode == 2, done.stderr
+    assert "no loop functions registered as 'twin_loop_functions'" in done.stderr
+    assert f"{(scope / 'build' / 'libtwin_loop_functions.so').resolve()} registers it" in done.stderr
+
+
 def helper_experiment(scope):
     argos = scope / "helper.argos"
     text = (scope / "scope.argos").read_text().replace('library="build/libtwin_loop_functions.so" ', "")

@@ -3,6 +3,7 @@
 #include <argos3/core/simulator/loop_functions.h>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <deque>
 #include <exception>
@@ -104,6 +105,22 @@ ArgosSession::~ArgosSession() {
 }
 
 namespace {
+// Why `label` is not found: the labels `libraries` register, and a library outside them that
+// registers it (a library the one named depends on, or another experiment's).
+std::string NotFound(const std::vector<std::string>& libraries, const std::string& label) {
+  std::string labels, elsewhere;
+  for (const Registration& r : Registry()) {
+    if (std::find(libraries.begin(), libraries.end(), r.library) != libraries.end())
+      labels += (labels.empty() ? "" : ", ") + r.label;
+    else if (r.label == label && elsewhere.empty())
+      elsewhere = "; " + r.library +
+                  " registers it, but this experiment's loop functions are looked up in the "
+                  "library it names (or, with label alone, in ARGOS_PLUGIN_PATH's) only";
+  }
+  return "no loop functions registered as '" + label + "' (REGISTER_LOOP_FUNCTIONS) in the libraries loaded" +
+         (labels.empty() ? std::string(": none registers any") : "; registered: " + labels) + elsewhere;
+}
+
 // The registration of `label` among `libraries`: the last library's, as ARGoS's factory keeps
 // the last one loaded; a label twice in one library is an error.
 const Registration* Find(const std::vector<std::string>& libraries, const std::string& label, std::string* error) {
@@ -121,14 +138,8 @@ const Registration* Find(const std::vector<std::string>& libraries, const std::s
     }
     if (here) found = here;
   }
-  if (found) return found;
-  std::string labels;
-  for (const std::string& library : libraries)
-    for (const Registration& r : Registry())
-      if (r.library == library) labels += (labels.empty() ? "" : ", ") + r.label;
-  *error = "no loop functions registered as '" + label + "' (REGISTER_LOOP_FUNCTIONS) in the libraries loaded" +
-           (labels.empty() ? std::string(": none registers any") : "; registered: " + labels);
-  return nullptr;
+  if (!found) *error = NotFound(libraries, label);
+  return found;
 }
 }  // namespace
 
