@@ -17,10 +17,12 @@ namespace essaim {
 
 enum class ArgosHook { Reset, Destroy, PreStep, PostStep, PostExperiment };
 
-/// The labels registered so far by loaded libraries, each with the API version it was built for.
+/// The labels registered so far by loaded libraries, each with the API version it was built
+/// for and the library (real path) that registered it.
 struct ArgosRegistration {
   std::string label;
   int api_version = 0;
+  std::string library;
 };
 std::vector<ArgosRegistration> ArgosRegisteredLabels();
 int ArgosApiVersion();
@@ -35,9 +37,10 @@ class ArgosSession {
   ArgosSession(const ArgosSession&) = delete;
   ArgosSession& operator=(const ArgosSession&) = delete;
 
-  /// Makes the loop functions registered as `label`; false with `error` when none is, or it
-  /// was built for another API version.
-  bool Create(const std::string& label, std::string* error);
+  /// Makes the loop functions registered as `label` by one of `libraries` (real paths; the
+  /// last that does, as ARGoS's factory); false with `error` when none does, one registers it
+  /// twice, or it was built for another API version.
+  bool Create(const std::vector<std::string>& libraries, const std::string& label, std::string* error);
   bool Init(ticpp::Element& tree, std::string* error);
   bool Run(ArgosHook hook, std::string* error);
   bool IsExperimentFinished(bool* finished, std::string* error);

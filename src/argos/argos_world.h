@@ -1,4 +1,4 @@
-// What the ARGoS API library (libargos3core_simulator, api/) asks of the running
+// What the ARGoS API library (libessaim_argos_api, api/) asks of the running
 // experiment: an interface of plain types, implemented over the EntityStore by StoreWorld
 // (store_world.h). The library keeps no essaim type of its own, so one copy of it serves
 // the essaim binary, the Python module and the tests alike.

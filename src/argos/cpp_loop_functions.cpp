@@ -32,12 +32,16 @@ bool CppLoopFunctions::Load(const Model& model, EntityStore* entities,
                             std::vector<std::unique_ptr<LuaController>>* controllers, std::string* error) {
   const LoopFunctionsDef& def = model.loop_functions;
   const std::string where = def.loc.file + ":" + std::to_string(def.loc.line) + ": <loop_functions>: ";
-  const bool loaded = def.library.empty() ? LoadPluginPath(error) : LoadLoopFunctionLibrary(def.library, error);
-  if (!loaded) return *error = where + *error, false;
+  // As ARGoS: the library named, or every library of ARGOS_PLUGIN_PATH; the label is looked
+  // up among these only, never among another experiment's.
+  std::vector<std::string> libraries;
+  if (!LoadLoopFunctionLibraries(def.library.empty() ? PluginPathLibraries() : std::vector<std::string>{def.library},
+                                 &libraries, error))
+    return *error = where + *error, false;
   model_ = &model;
   world_ = std::make_unique<StoreWorld>(model, entities, controllers);
   session_ = std::make_unique<ArgosSession>(world_.get());
-  if (session_->Create(def.label, error)) return true;
+  if (session_->Create(libraries, def.label, error)) return true;
   *error = where + *error;
   if (def.library.empty() && !std::getenv("ARGOS_PLUGIN_PATH"))
     *error += " (no library=\"...\" given and ARGOS_PLUGIN_PATH is not set)";

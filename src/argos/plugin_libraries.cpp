@@ -1,75 +1,54 @@
 #include "argos/plugin_libraries.h"
 
 #include <dirent.h>
-#include <dlfcn.h>
 #include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <mutex>
-#include <set>
-#include <vector>
 
-#include "argos/argos_session.h"
+#include "argos/library_group.h"
 #include "argos/lua_linkage.h"
 
 namespace essaim {
 
 namespace {
-std::mutex loading;
-std::set<std::string>& Loaded() {
-  static std::set<std::string> loaded;
-  return loaded;
-}
-
-// The folder of the ARGoS API library this process runs (libargos3core_simulator.so).
-std::string ApiFolder() {
-  Dl_info info;
-  if (!dladdr(reinterpret_cast<void*>(&ArgosApiVersion), &info) || !info.dli_fname) return "";
-  const std::string path = info.dli_fname;
-  const size_t slash = path.rfind('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
-// ARGoS splits its API over several libraries that projects link by name; essaim's are
-// aliases of the one API library, opened here so that a plugin finds them whatever its
-// run path says.
-void OpenApiAliases() {
-  static const bool opened = [] {
-    const std::string folder = ApiFolder();
-    for (const char* name : {"libargos3plugin_simulator_entities.so", "libargos3plugin_simulator_footbot.so",
-                             "libargos3plugin_simulator_media.so"})
-      dlopen((folder + "/" + name).c_str(), RTLD_NOW | RTLD_GLOBAL);
-    return true;
-  }();
-  (void)opened;
-}
-
 std::string RealPath(const std::string& path) {
   char* real = realpath(path.c_str(), nullptr);
   const std::string out = real ? real : path;
   std::free(real);
   return out;
 }
-}  // namespace
 
-bool LoadLoopFunctionLibrary(const std::string& path, std::string* error) {
-  std::lock_guard<std::mutex> lock(loading);
-  const std::string real = RealPath(path);
-  if (Loaded().count(real)) return true;
+// Refuses, before it is loaded, a library that would load ARGoS's own libraries (the names
+// it was linked against: essaim's links record essaim's soname) or run against another Lua.
+bool CheckLinkage(const std::string& path, std::string* error) {
   LuaLinkage linkage;
   if (!ReadLuaLinkage(path, &linkage, error)) return false;
+  for (const std::string& needed : linkage.needed)
+    if (needed.rfind("libargos3", 0) == 0)
+      return *error = path + " was built against ARGoS itself or an older essaim (it needs " + needed +
+                      "): rebuild it against this essaim's ARGoS API",
+             false;
   *error = LuaMismatch(path, linkage);
-  if (!error->empty()) return false;
-  OpenApiAliases();
-  if (!dlopen(real.c_str(), RTLD_NOW | RTLD_GLOBAL)) {
-    const char* why = dlerror();
-    *error = "cannot load loop-function library " + path + ": " + (why ? why : "unknown error") +
-             " (a library built against ARGoS itself, or another essaim, must be rebuilt against this essaim)";
-    return false;
+  return error->empty();
+}
+}  // namespace
+
+bool LoadLoopFunctionLibraries(const std::vector<std::string>& paths, std::vector<std::string>* loaded,
+                               std::string* error) {
+  loaded->clear();
+  for (const std::string& path : paths) {
+    if (!CheckLinkage(path, error)) return false;
+    const std::string real = RealPath(path);
+    if (std::find(loaded->begin(), loaded->end(), real) == loaded->end()) loaded->push_back(real);
   }
-  Loaded().insert(real);
-  return true;
+  if (OpenLibraryGroup(*loaded, error)) return true;
+  std::string names;
+  for (const std::string& path : paths) names += (names.empty() ? "" : ", ") + path;
+  *error = (paths.size() == 1 ? "cannot load loop-function library " : "cannot load the loop-function libraries ") +
+           names + ": " + *error +
+           " (a library built against ARGoS itself, or another essaim, must be rebuilt against this essaim)";
+  return false;
 }
 
 namespace {
@@ -91,18 +70,18 @@ std::vector<std::string> LibrariesIn(const std::string& folder) {
 }
 }  // namespace
 
-bool LoadPluginPath(std::string* error) {
+std::vector<std::string> PluginPathLibraries() {
   const char* env = std::getenv("ARGOS_PLUGIN_PATH");
   const std::string paths = env ? env : "";
+  std::vector<std::string> out;
   size_t start = 0;
   while (start <= paths.size()) {
     size_t end = paths.find(':', start);
     if (end == std::string::npos) end = paths.size();
-    for (const std::string& library : LibrariesIn(paths.substr(start, end - start)))
-      if (!LoadLoopFunctionLibrary(library, error)) return false;
+    for (const std::string& library : LibrariesIn(paths.substr(start, end - start))) out.push_back(library);
     start = end + 1;
   }
-  return true;
+  return out;
 }
 
 }  // namespace essaim

@@ -18,17 +18,19 @@ def sdk() -> Path:
     return Path(ESSAIM).resolve().parent / "argos3-sdk"
 
 
-def build_project(source: Path, folder: Path, prefix: Path = None) -> Path:
+def build_project(source: Path, folder: Path, prefix: Path = None, cmake_args=(), env=None) -> Path:
     """Copies the project `source` into `folder`, configures and builds it there (its own
-    CMakeLists.txt, untouched) with PKG_CONFIG_PATH and CMAKE_PREFIX_PATH naming `prefix`
-    (default: the build tree's SDK); returns the copy's folder (libraries in its build/)."""
+    CMakeLists.txt, untouched, and `cmake_args`) with PKG_CONFIG_PATH and CMAKE_PREFIX_PATH
+    naming `prefix` (default: the build tree's SDK) and `env` added; returns the copy's folder
+    (libraries in its build/)."""
     copy = folder / source.name
     shutil.copytree(source, copy)
     prefix = prefix or sdk()
-    env = dict(os.environ, PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"), CMAKE_PREFIX_PATH=str(prefix))
+    env = dict(os.environ, PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"), CMAKE_PREFIX_PATH=str(prefix),
+               **(env or {}))
     env.pop("CXXFLAGS", None)
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
-    for command in (["cmake", "-S", ".", "-B", "build", *generator], ["cmake", "--build", "build"]):
+    for command in (["cmake", "-S", ".", "-B", "build", *generator, *cmake_args], ["cmake", "--build", "build"]):
         done = subprocess.run(command, cwd=copy, env=env, capture_output=True, text=True)
         assert done.returncode == 0, f"{' '.join(command)}:\n{done.stdout}\n{done.stderr}"
     return copy
