@@ -662,8 +662,8 @@ void Loader::LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf) {
     lf->library = ResolvePath(candidate);
     if (FileExists(lf->library)) return;
   }
-  Error(e, "library '" + library + "' not found (nor '" + library + ".so'), beside " + (dir_.empty() ? "." : dir_) +
-               " or the working directory");
+  Error(e, "library '" + library + "' not found (nor '" + library + ".so') beside the .argos file" +
+               (dir_.empty() ? std::string() : " (in " + dir_ + ")") + " or in the working directory");
 }
 
 // Every attribute and descendant is the loop functions' own: none is reported as unknown.

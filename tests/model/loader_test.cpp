@@ -124,7 +124,10 @@ TEST(Loader, CppLoopFunctionsMissingLibraryOrLabelAreClearErrors) {
   d.Write("c.lua", "");
   ErrorList e;
   EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libz\" label=\"x\"/>"), &e));
-  EXPECT_NE(e.Format().find("library 'libz' not found (nor 'libz.so')"), std::string::npos) << e.Format();
+  EXPECT_NE(e.Format().find("library 'libz' not found (nor 'libz.so') beside the .argos file (in " + d.path() +
+                            ") or in the working directory"),
+            std::string::npos)
+      << e.Format();
   ErrorList e2;
   d.Write("liby.so", "");
   EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"liby\"/>"), &e2));
