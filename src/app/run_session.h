@@ -26,6 +26,8 @@ class RunSession {
   SignalCatcher signals;
   /// Held from before the first write into --out until the process ends.
   OutFolderLock out_lock;
+  /// Whether this run has moved an earlier run's outputs out of --out already.
+  bool earlier_set_aside = false;
 
   /// From before the scripts load to after the world goes: where a stuck call's summary goes.
   void Begin(const std::string& out, const RunArgs& args, const Model& model);
