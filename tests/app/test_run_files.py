@@ -1,0 +1,119 @@
+"""Files the loop functions write (docs/loop-functions.md, "Files the loop functions write"):
+each run works in <out>/files/, a view of the experiment folder, and keeps there the files
+it wrote, so that runs side by side never overwrite each other's; `essaim test` checks a
+column of them; `essaim check` writes nothing anywhere the user keeps files."""
+import json
+import os
+import shutil
+from pathlib import Path
+
+from clitest import essaim, need_essaim
+
+pytestmark = need_essaim
+
+PROJECT = Path(__file__).resolve().parent / "zones_project"
+
+
+def project(tmp_path: Path) -> Path:
+    """A copy of zones_project, holding an earlier result of the same name as the runs'."""
+    folder = tmp_path / "zones"
+    shutil.copytree(PROJECT, folder)
+    (folder / "zone_counts.txt").write_text("an earlier ARGoS run's results\n")
+    return folder
+
+
+def listing(*folders: Path) -> dict:
+    """Every path below the folders, with its kind, size and modification time."""
+    seen = {}
+    for folder in folders:
+        for root, dirs, files in os.walk(folder):
+            for name in dirs + files:
+                p = Path(root) / name
+                st = p.lstat()
+                seen[str(p)] = (st.st_mode, st.st_size, st.st_mtime_ns)
+    return seen
+
+
+def table(path: Path) -> list[dict]:
+    header, *rows = path.read_text().splitlines()
+    return [dict(zip(header.split(), map(int, row.split()))) for row in rows]
+
+
+def test_each_seed_keeps_its_own_file_and_a_column_is_checked(tmp_path):
+    folder = project(tmp_path)
+    before = listing(folder)
+    r = essaim("test", folder / "zones.test.toml", "-j", "2", "--out", tmp_path / "t", cwd=tmp_path, timeout=300)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "6 of 6 expectations hold" in r.stdout
+    for seed in (1, 2, 3, 4):
+        run = tmp_path / "t" / f"seed-{seed}"
+        rows = table(run / "files" / "zone_counts.txt")
+        assert [row["tick"] for row in rows] == list(range(1, 21))
+        assert {row["seed"] for row in rows} == {seed}  # its own run's file, not another seed's
+        assert json.loads((run / "summary.json").read_text())["files"] == ["files/zone_counts.txt"]
+        assert sorted(p.name for p in (run / "files").iterdir()) == ["zone_counts.txt"]  # the view is gone
+    assert listing(folder) == before  # the earlier results of the same name untouched
+    assert (folder / "zone_counts.txt").read_text() == "an earlier ARGoS run's results\n"
+
+
+def test_a_missing_file_or_column_names_the_spec_line(tmp_path):
+    folder = project(tmp_path)
+    spec = folder / "zones.test.toml"
+    spec.write_text('experiment = "zones.argos"\nseeds = 2\nticks = 3\nexpect = [\n'
+                    '  "each files/nope.txt[tick].last == 3",\n'
+                    '  "mean files/zone_counts.txt[nocol].last > 0",\n'
+                    '  "each files/zone_counts.txt[1].last == 3",\n'
+                    '  "fraction(files/zone_counts.txt[tick].sum/ticks > 1) == 1",\n]\n')
+    r = essaim("test", spec, "-j", "2", "--out", tmp_path / "t", cwd=tmp_path, timeout=300)
+    assert r.returncode == 1, r.stdout + r.stderr
+    assert f"{spec}:5: seed 1: files/nope.txt: the run wrote no such file" in r.stdout
+    assert f"{spec}:6: seed 2: files/zone_counts.txt: no column 'nocol' (columns: tick, inside, zones, seed)" \
+        in r.stdout
+    assert "3 of 5 expectations hold" in r.stdout  # a column by position; a file column over ticks (6/3)
+
+    spec.write_text('experiment = "zones.argos"\nexpect = [\n  "each files/zone_counts.txt[tick] == 3",\n]\n')
+    r = essaim("test", spec, cwd=tmp_path)
+    assert r.returncode == 2
+    assert f"{spec}:3:" in r.stderr and "after the column comes .last, .first" in r.stderr
+
+
+def test_a_run_reads_beside_its_argos_file_and_writes_into_its_out_folder(tmp_path):
+    folder = project(tmp_path)
+    before = listing(folder)
+    r = essaim("run", "zones/zones.argos", "-q", "--ticks", 20, "--out", "o", cwd=tmp_path)  # from the folder above
+    assert r.returncode == 0, r.stderr
+    rows = table(tmp_path / "o" / "files" / "zone_counts.txt")  # data/zones.txt and the helper were read
+    assert len(rows) == 20 and all(row["zones"] == 2 for row in rows)
+    assert sorted(p.name for p in (tmp_path / "o" / "files").iterdir()) == ["zone_counts.txt"]
+    assert listing(folder) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o", "zones"]
+
+    r = essaim("run", "zones/zones.argos", "-q", "--ticks", 20, "--out", "o", "--seed", "5", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr  # the first run's files go into previous/ with its outputs
+    assert table(tmp_path / "o" / "previous" / "files" / "zone_counts.txt")[0]["seed"] == 1
+    assert table(tmp_path / "o" / "files" / "zone_counts.txt")[0]["seed"] == 5
+
+
+def test_a_file_the_run_changes_is_its_own_copy(tmp_path):
+    folder = project(tmp_path)
+    (folder / "zones_loop.lua").write_text(
+        (folder / "zones_loop.lua").read_text()
+        + 'local f = assert(io.open("data_note.txt", "a")) f:write("appended\\n") f:close()\n')
+    (folder / "data_note.txt").write_text("the user's\n")
+    r = essaim("run", "zones.argos", "-q", "--out", tmp_path / "o", cwd=folder)
+    assert r.returncode == 0, r.stderr
+    assert (folder / "data_note.txt").read_text() == "the user's\n"
+    assert (tmp_path / "o" / "files" / "data_note.txt").read_text() == "the user's\nappended\n"
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert summary["files"] == ["files/data_note.txt", "files/zone_counts.txt"]
+
+
+def test_check_leaves_the_experiment_and_launch_folders_as_they_were(tmp_path):
+    folder = project(tmp_path)
+    before = listing(tmp_path)
+    r = essaim("check", "zones/zones.argos", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert listing(tmp_path) == before
+    r = essaim("check", "zones.argos", cwd=folder)
+    assert r.returncode == 0, r.stderr
+    assert listing(tmp_path) == before
