@@ -6,6 +6,7 @@
 
 #include "core/paths.h"
 #include "core/strings.h"
+#include "output/run_files.h"
 
 namespace essaim {
 
@@ -133,7 +134,11 @@ std::optional<double> FileColumnValue(const std::string& run_folder, const std::
   const std::string path = JoinPath(run_folder, std::string(kFileValuePrefix) + v.path);
   std::string text;
   if (!ReadFile(path, &text)) {
-    *why = "files/" + v.path + ": the run wrote no such file (" + path + ")";
+    std::string wrote;  // what it did write: a misspelt name shows at once
+    for (const std::string& f : FilesUnder(JoinPath(run_folder, kRunFilesFolder)))
+      wrote += (wrote.empty() ? "" : ", ") + std::string(kFileValuePrefix) + f;
+    *why = "files/" + v.path + ": the run wrote no such file (" +
+           (wrote.empty() ? "it wrote none" : "it wrote " + wrote) + ")";
     return std::nullopt;
   }
   std::vector<double> numbers;

@@ -66,7 +66,7 @@ def test_a_missing_file_or_column_names_the_spec_line(tmp_path):
                     '  "fraction(files/zone_counts.txt[tick].sum/ticks > 1) == 1",\n]\n')
     r = essaim("test", spec, "-j", "2", "--out", tmp_path / "t", cwd=tmp_path, timeout=300)
     assert r.returncode == 1, r.stdout + r.stderr
-    assert f"{spec}:5: seed 1: files/nope.txt: the run wrote no such file" in r.stdout
+    assert f"{spec}:5: seed 1: files/nope.txt: the run wrote no such file (it wrote files/zone_counts.txt)" in r.stdout
     assert f"{spec}:6: seed 2: files/zone_counts.txt: no column 'nocol' (columns: tick, inside, zones, seed)" \
         in r.stdout
     assert "3 of 5 expectations hold" in r.stdout  # a column by position; a file column over ticks (6/3)
