@@ -350,11 +350,12 @@ int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
   const SimOptions options = MakeSimOptions(session, r, *model, out, logs);
   // Signals and the watchdog's last resort are handled from before init(): a controller
   // stuck there still ends the run with its outputs.
+  RunWorkdir workdir;  // left after the world goes (C++ Destroy may write), and after the session forgets it
   SessionRun watched(session, out, r, *model);  // declared before the world, so it goes after it
-  RunWorkdir workdir;                           // left after the world goes (C++ Destroy may write)
   std::string error;
   if (!EnterWorkdir(workdir, out, *model, &error))
     return FailedBeforeRun(session, r, out, model.get(), error, kExitRunFailed);
+  session.SetWorkdir(&workdir);  // until SessionRun ends
   ActiveRun run(session, r, *model, out, shown_out, workdir, *logs);
   if (std::optional<int> code = BuildWorld(run, options, inputs)) return *code;
   if (std::optional<int> code = OpenOutputs(run)) return *code;

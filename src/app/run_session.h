@@ -14,6 +14,7 @@ namespace essaim {
 struct Model;
 struct RunArgs;
 class RecordingWriter;
+class RunWorkdir;
 class World;
 
 class RunSession {
@@ -33,6 +34,9 @@ class RunSession {
   void Begin(const std::string& out, const RunArgs& args, const Model& model);
   /// The world and its recorder once they exist; null, null before they go.
   void SetWorld(const World* world, RecordingWriter* recorder);
+  /// The run's working folder while the run is in it (null after): a stuck run's summary
+  /// lists its files, the view removed.
+  void SetWorkdir(RunWorkdir* workdir);
   void End();
 
  private:
@@ -46,6 +50,7 @@ class RunSession {
   const Model* model_ = nullptr;
   const World* world_ = nullptr;  // null while init() runs
   RecordingWriter* recorder_ = nullptr;
+  RunWorkdir* workdir_ = nullptr;
 };
 
 /// Begin()..End() of one run, as a scope: declared before the world, so it ends after it.

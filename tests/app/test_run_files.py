@@ -117,3 +117,25 @@ def test_check_leaves_the_experiment_and_launch_folders_as_they_were(tmp_path):
     r = essaim("check", "zones.argos", cwd=folder)
     assert r.returncode == 0, r.stderr
     assert listing(tmp_path) == before
+
+
+def test_a_failed_or_stuck_run_still_keeps_only_its_own_files(tmp_path):
+    folder = project(tmp_path)
+    loop = folder / "zones_loop.lua"
+    loop.write_text(loop.read_text() + "local step = post_step\n"
+                    "function post_step() step() if experiment.tick == 3 then error('broken at 3') end end\n")
+    r = essaim("run", "zones.argos", "-q", "--out", tmp_path / "failed", cwd=folder)
+    assert r.returncode == 1 and "broken at 3" in r.stderr
+    summary = json.loads((tmp_path / "failed" / "summary.json").read_text())
+    assert summary["status"] == "failed" and summary["files"] == ["files/zone_counts.txt"]
+    assert sorted(p.name for p in (tmp_path / "failed" / "files").iterdir()) == ["zone_counts.txt"]
+
+    # The watchdog's last resort (a call stuck inside C) ends the process at once: the view goes too.
+    shutil.copy(PROJECT / "zones_loop.lua", loop)
+    (folder / "zones_robot.lua").write_text(
+        'function init() end\nfunction step()\n  string.find(string.rep("a", 40), string.rep("a*", 40) .. "b")\nend\n')
+    r = essaim("run", "zones.argos", "-q", "--lua-seconds", "2", "--out", tmp_path / "stuck", cwd=folder)
+    assert r.returncode == 1 and "stuck for" in r.stderr, r.stderr
+    summary = json.loads((tmp_path / "stuck" / "summary.json").read_text())
+    assert summary["files"] == ["files/zone_counts.txt"]
+    assert sorted(p.name for p in (tmp_path / "stuck" / "files").iterdir()) == ["zone_counts.txt"]
