@@ -95,6 +95,7 @@ static int Check(RunArgs& r) {
   r.file = NamedFromBelow(r.file);
   auto model = LoadOrReport(r);
   if (!model) return kExitBadInput;
+  AnchorPathsAbove(model.get());
   // The scripts too: load every controller and the loop functions, run init() and a few
   // ticks on a sample of the robots, as a run would, with no output.
   const Model sample = CheckSample(*model);

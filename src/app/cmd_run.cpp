@@ -340,6 +340,7 @@ int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
   r.file = NamedFromBelow(r.file);
   std::unique_ptr<Model> model;
   if (std::optional<int> code = LoadModel(session, r, &model)) return *code;
+  AnchorPathsAbove(model.get());
   *inputs = ExperimentInputs(*model, nullptr);
   const std::string shown_out = r.out.empty() ? DefaultOutDir(*model) : r.out;
   if (!OpenOutFolder(session, shown_out)) return kExitBadInput;

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/paths.h"
+#include "model/model.h"
 
 namespace essaim {
 
@@ -47,6 +48,12 @@ std::vector<std::string> RunWorkdir::Collect(const std::string& prefix) {
 std::string NamedFromBelow(const std::string& file) {
   const std::string normal = fs::path(file).lexically_normal().string();
   return normal.rfind("..", 0) == 0 ? fs::absolute(normal).lexically_normal().string() : file;
+}
+
+void AnchorPathsAbove(Model* model) {
+  for (ControllerDef& c : model->controllers) c.script = NamedFromBelow(c.script);
+  model->loop_functions.script = NamedFromBelow(model->loop_functions.script);
+  model->loop_functions.library = NamedFromBelow(model->loop_functions.library);
 }
 
 void RunWorkdir::Leave() {

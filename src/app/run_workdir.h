@@ -10,6 +10,8 @@
 
 namespace essaim {
 
+struct Model;
+
 class RunWorkdir {
  public:
   RunWorkdir() = default;
@@ -39,5 +41,9 @@ class RunWorkdir {
 /// view holds the working directory's entries but not what lies above it: `../x.argos` made
 /// absolute (the paths resolved beside it follow); any other path unchanged.
 std::string NamedFromBelow(const std::string& file);
+/// The same for the paths the run opens after it enters its folder (scripts, the library):
+/// `../controllers/c.lua`, resolved beside an .argos file in the working directory, made
+/// absolute. Call before RunWorkdir::Enter.
+void AnchorPathsAbove(Model* model);
 
 }  // namespace essaim

@@ -139,3 +139,19 @@ def test_a_failed_or_stuck_run_still_keeps_only_its_own_files(tmp_path):
     summary = json.loads((tmp_path / "stuck" / "summary.json").read_text())
     assert summary["files"] == ["files/zone_counts.txt"]
     assert sorted(p.name for p in (tmp_path / "stuck" / "files").iterdir()) == ["zone_counts.txt"]
+
+
+def test_scripts_above_the_working_directory_are_still_found(tmp_path):
+    """`script="../shared/..."` beside an .argos file started in its own folder: the run's
+    folder has no `..` of the experiment's, so such paths are made absolute first."""
+    folder = project(tmp_path)
+    (tmp_path / "shared").mkdir()
+    shutil.move(folder / "zones_robot.lua", tmp_path / "shared" / "zones_robot.lua")
+    argos = folder / "zones.argos"
+    argos.write_text(argos.read_text().replace('script="zones_robot.lua"', 'script="../shared/zones_robot.lua"'))
+    for command in ("run", "check"):
+        r = essaim(command, "zones.argos", *(["-q", "--out", tmp_path / "o"] if command == "run" else []), cwd=folder)
+        assert r.returncode == 0, r.stderr
+    assert len(table(tmp_path / "o" / "files" / "zone_counts.txt")) == 20
+    summary = json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert str(tmp_path / "shared" / "zones_robot.lua") in [i["path"] for i in summary["inputs"]]
