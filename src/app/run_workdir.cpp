@@ -51,6 +51,9 @@ std::string NamedFromBelow(const std::string& file) {
 }
 
 void AnchorPathsAbove(Model* model) {
+  // require's roots under --sandbox: the folders the run's view links resolve to them.
+  std::error_code ec;
+  model->dir = fs::absolute(model->dir.empty() ? "." : model->dir, ec).lexically_normal().string();
   for (ControllerDef& c : model->controllers) c.script = NamedFromBelow(c.script);
   model->loop_functions.script = NamedFromBelow(model->loop_functions.script);
   model->loop_functions.library = NamedFromBelow(model->loop_functions.library);

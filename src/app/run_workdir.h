@@ -43,7 +43,8 @@ class RunWorkdir {
 std::string NamedFromBelow(const std::string& file);
 /// The same for the paths the run opens after it enters its folder (scripts, the library):
 /// `../controllers/c.lua`, resolved beside an .argos file in the working directory, made
-/// absolute. Call before RunWorkdir::Enter.
+/// absolute; model.dir (the .argos file's folder, a root of `require` under --sandbox) too.
+/// Call before RunWorkdir::Enter.
 void AnchorPathsAbove(Model* model);
 
 }  // namespace essaim

@@ -155,3 +155,18 @@ def test_scripts_above_the_working_directory_are_still_found(tmp_path):
     assert len(table(tmp_path / "o" / "files" / "zone_counts.txt")) == 20
     summary = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert str(tmp_path / "shared" / "zones_robot.lua") in [i["path"] for i in summary["inputs"]]
+
+
+def test_require_under_the_sandbox_finds_modules_of_the_experiment_folder(tmp_path):
+    folder = project(tmp_path)
+    (folder / "lib").mkdir()
+    (folder / "lib" / "speed.lua").write_text("return {value = 3}\n")  # in a linked folder
+    (folder / "turn.lua").write_text("return {value = 1}\n")  # a copied file
+    (folder / "zones_robot.lua").write_text(
+        'local speed, turn = require("lib.speed"), require("turn")\nfunction init() end\n'
+        'function step() robot.wheels.set_velocity(speed.value, speed.value + turn.value) end\n')
+    loop = folder / "zones_loop.lua"  # no io under the sandbox: the loop functions only count
+    loop.write_text("function post_step() end\n")
+    r = essaim("run", "zones.argos", "-q", "--sandbox", "--out", tmp_path / "o", cwd=folder)
+    assert r.returncode == 0, r.stderr
+    assert json.loads((tmp_path / "o" / "summary.json").read_text())["controller_errors"] == []
