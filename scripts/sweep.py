@@ -38,6 +38,9 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # file_columns.py, beside this file
+import file_columns  # noqa: E402
+
 # Summary keys kept as unprefixed columns; every other summary key becomes "summary.<key>".
 SUMMARY_KEYS = ("seed", "ticks", "robots", "wall_seconds", "robot_steps_per_second")
 # Metrics dicts too wide for a table (one column per robot): skipped, their mean is kept.
@@ -49,7 +52,7 @@ RUN_RECORD = "sweep-run.json"
 ERROR_LINES = 5  # stderr lines kept in the `error` column
 
 SWEEP_KEYS = {"experiment", "params", "ticks", "seeds", "set", "out", "essaim", "workdir",
-              "strict", "args", "timeout"}
+              "strict", "args", "timeout", "file_columns"}
 
 
 # Linux's prctl(PR_SET_PDEATHSIG): the kernel signals a child when its parent dies.
@@ -103,6 +106,8 @@ class Sweep:
     strict: bool = False
     extra_args: list[str] = field(default_factory=list)
     timeout: float | None = None
+    # table column -> files/PATH[COLUMN].STAT: a number from a file each run wrote
+    file_columns: dict[str, str] = field(default_factory=dict)
 
     def runs(self) -> list[Run]:
         names = short_names(list(self.params))
@@ -259,7 +264,20 @@ def load_sweep(path: str | Path, out: str | None = None, essaim: str | None = No
 
     return Sweep(path=path, experiment=experiment, params=params, seeds=seeds, out=out_dir,
                  workdir=workdir, ticks=ticks, fixed=dict(fixed), essaim=file_essaim,
-                 strict=bool(doc.get("strict", False)), extra_args=args, timeout=timeout)
+                 strict=bool(doc.get("strict", False)), extra_args=args, timeout=timeout,
+                 file_columns=load_file_columns(path, doc.get("file_columns", {})))
+
+
+def load_file_columns(path: Path, table) -> dict[str, str]:
+    """`file_columns`: NAME = "files/PATH[COLUMN].STAT", each checked now."""
+    if not isinstance(table, dict):
+        raise SweepError(f"{path}: `file_columns` must be a table of NAME = \"files/PATH[COLUMN].STAT\"")
+    for name, spec in table.items():
+        try:
+            file_columns.parse(spec if isinstance(spec, str) else repr(spec))
+        except ValueError as e:
+            raise SweepError(f"{path}: file_columns.{name}: {e}") from None
+    return dict(table)
 
 
 def validate_paths(sweep: Sweep, essaim: str, timeout: float = 300) -> None:
@@ -544,10 +562,25 @@ def run_remote(argv: list[str], workdir: str, timeout: float | None) -> dict:
             if os.path.isfile(fp) and not os.path.islink(fp) and not name.startswith("."):
                 with open(fp, "rb") as f:
                     files[name] = f.read()
+        files.update(run_files(tmp))
         return {"returncode": rc, "stdout": stdout, "stderr": stderr, "files": files,
                 "host": socket.gethostname(), "elapsed": time.time() - start}
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
+
+
+def run_files(run_dir: str) -> dict[str, bytes]:
+    """The files the run's scripts wrote, below its files/ (summary.json's "files"), by
+    their path in the run folder."""
+    files = {}
+    top = os.path.join(run_dir, "files")
+    for root, _, names in os.walk(top):
+        for name in sorted(names):
+            fp = os.path.join(root, name)
+            if os.path.isfile(fp) and not os.path.islink(fp):
+                with open(fp, "rb") as f:
+                    files[os.path.relpath(fp, run_dir)] = f.read()
+    return files
 
 
 def _text(b) -> str:
@@ -564,6 +597,7 @@ def write_run_folder(run_dir: Path, result: dict, argv: list[str]) -> None:
     files = dict(result["files"])
     summary = files.pop("summary.json", None)
     for name, data in files.items():
+        (run_dir / name).parent.mkdir(parents=True, exist_ok=True)  # files/... of the run's own
         (run_dir / name).write_bytes(data)
     write_logs(run_dir, result)
     write_record(run_dir, argv, result)
@@ -626,8 +660,8 @@ def flatten_summary(summary: dict) -> dict:
     return row
 
 
-def ok_row(run: Run, run_dir: Path, host: str | None = None) -> dict:
-    """The row of a finished run, read from its folder."""
+def ok_row(run: Run, run_dir: Path, host: str | None = None, columns: dict | None = None) -> dict:
+    """The row of a finished run, read from its folder; `columns`: the sweep's file_columns."""
     summary = read_json(run_dir / "summary.json") or {}
     row = {"run": run.key, "status": "ok", "returncode": 0, "error": None, "seed": run.seed}
     row.update(run.params)
@@ -636,6 +670,8 @@ def ok_row(run: Run, run_dir: Path, host: str | None = None) -> dict:
     if isinstance(metrics, dict):
         for k, v in flatten_metrics(metrics).items():
             row[f"metrics.{k}" if k in row else k] = v
+    for name, spec in (columns or {}).items():
+        row[name] = file_columns.value(run_dir, spec)
     record = read_json(run_dir / RUN_RECORD)
     row["host"] = host or (record.get("host") if isinstance(record, dict) else None)
     return row
@@ -975,7 +1011,7 @@ def main(argv=None) -> int:
         if r.key in failures:
             rows.append(failures[r.key])
         elif r.key not in pending and (run_dir / "summary.json").is_file():
-            rows.append(ok_row(r, run_dir))
+            rows.append(ok_row(r, run_dir, columns=sweep.file_columns))
     if rows:
         write_table(make_table(rows), sweep.out)
         write_timeseries(runs, rows, sweep.out)

@@ -1,7 +1,10 @@
 // `essaim check`: the experiment and its scripts validated as a run would load them.
+#include <stdlib.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -9,6 +12,7 @@
 #include "app/commands.h"
 #include "app/run_args.h"
 #include "app/run_report.h"
+#include "app/run_workdir.h"
 #include "app/signals.h"
 #include "lua/host/watchdog.h"
 #include "sim/error_groups.h"
@@ -54,6 +58,32 @@ void CheckSteps(World& world, uint64_t ticks, std::string* problems) {
   if (!world.failure.empty()) *problems += world.failure + "\n";
   if (status != StepStatus::Failed) *problems += FormatUnreadParams(FindUnreadParams(world), true);
 }
+
+/// A temporary folder removed with everything in it when the check ends: check's scripts
+/// run there, as a run's do in <out>/files, and write nowhere the user keeps results.
+class TemporaryWorkdir {
+ public:
+  bool Enter(const std::string& argos_file, std::string* error) {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/essaim-check-XXXXXX";
+    if (!::mkdtemp(pattern.data())) {
+      *error = "cannot make a temporary working folder " + pattern;
+      return false;
+    }
+    folder_ = pattern;
+    std::string warning;
+    return workdir_.Enter(folder_, argos_file, {}, &warning, error);
+  }
+  ~TemporaryWorkdir() {
+    workdir_.Leave();
+    std::error_code ec;
+    if (!folder_.empty()) std::filesystem::remove_all(folder_, ec);
+  }
+
+ private:
+  std::string folder_;
+  RunWorkdir workdir_;
+};
 }  // namespace
 
 static int Check(RunArgs& r) {
@@ -62,11 +92,18 @@ static int Check(RunArgs& r) {
     std::fprintf(stderr, "essaim check: %s\n", error.c_str());
     return kExitBadInput;
   }
+  r.file = NamedFromBelow(r.file);
   auto model = LoadOrReport(r);
   if (!model) return kExitBadInput;
+  AnchorPathsAbove(model.get());
   // The scripts too: load every controller and the loop functions, run init() and a few
   // ticks on a sample of the robots, as a run would, with no output.
   const Model sample = CheckSample(*model);
+  TemporaryWorkdir workdir;  // declared before the world, so left after it
+  if (!workdir.Enter(model->file, &error)) {
+    std::fprintf(stderr, "essaim check: %s\n", error.c_str());
+    return kExitRunFailed;
+  }
   Watchdog watchdog(ExitStuck);
   SimOptions opt;
   opt.output_dir = "";

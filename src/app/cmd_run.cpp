@@ -19,6 +19,7 @@
 #include "app/run_args.h"
 #include "app/run_report.h"
 #include "app/run_session.h"
+#include "app/run_workdir.h"
 #include "core/paths.h"
 #include "core/stopwatch.h"
 #include "core/strings.h"
@@ -86,7 +87,7 @@ int FailedBeforeRun(RunSession& session, const RunArgs& r, const std::string& ou
   std::string error;
   if (out.empty()) return code;
   if (!PrepareOutFolder(out, &error) || (!session.out_lock.Held() && !session.out_lock.Acquire(out, &error)) ||
-      !SetAsideEarlierOutputsAndSay(out, &error) ||
+      (!session.earlier_set_aside && !SetAsideEarlierOutputsAndSay(out, &error)) ||
       !WriteFailureSummary(out, ESSAIM_VERSION, r.file, r.load.overrides, model, inputs, message, &error))
     std::fprintf(stderr, "essaim run: %s\n", error.c_str());
   return code;
@@ -119,12 +120,30 @@ std::optional<int> LoadModel(RunSession& session, RunArgs& r, std::unique_ptr<Mo
   return std::nullopt;
 }
 
-/// Before any script runs: a wrong --out, or one another run is writing, is bad input.
+/// Before any script runs: a wrong --out, or one another run is writing, is bad input. An
+/// earlier run's outputs are set aside at once: the scripts write into files/ from their
+/// first line.
 bool OpenOutFolder(RunSession& session, const std::string& out) {
   std::string error;
-  if (PrepareOutFolder(out, &error) && session.out_lock.Acquire(out, &error)) return true;
+  if (PrepareOutFolder(out, &error) && session.out_lock.Acquire(out, &error) &&
+      SetAsideEarlierOutputsAndSay(out, &error)) {
+    session.earlier_set_aside = true;
+    return true;
+  }
   std::fprintf(stderr, "essaim run: %s\n", error.c_str());
   return false;
+}
+
+/// The run's working folder, <out>/files/ (run_workdir.h); false with the message printed
+/// and in `error`.
+bool EnterWorkdir(RunWorkdir& workdir, const std::string& out, const Model& model, std::string* error) {
+  std::string warning;
+  if (!workdir.Enter(JoinPath(out, kRunFilesFolder), model.file, {out}, &warning, error)) {
+    std::fprintf(stderr, "essaim run: %s\n", error->c_str());
+    return false;
+  }
+  if (!warning.empty()) std::fprintf(stderr, "essaim run: warning: %s\n", warning.c_str());
+  return true;
 }
 
 bool PrepareLogs(LogPrinter& logs) {
@@ -143,6 +162,9 @@ SimOptions MakeSimOptions(RunSession& session, const RunArgs& r, const Model& mo
   opt.lua = WatchdogOptions(model, r);
   opt.lua.watchdog = &session.watchdog;
   opt.inputs = std::make_shared<InputFiles>();  // kept when a script fails to load
+  // Named as from here, the folder the run starts in, not from the view in out/files it works in.
+  std::error_code ec;
+  opt.inputs->SetBase(std::filesystem::current_path(ec).string());
   opt.log_sink = [logs](char stream, const std::string& line, const LogOrigin& from) {
     logs->Print(stream, line, from);
   };
@@ -151,8 +173,9 @@ SimOptions MakeSimOptions(RunSession& session, const RunArgs& r, const Model& mo
 
 /// One run once its model is loaded: what it owns, in the order it is made.
 struct ActiveRun {
-  ActiveRun(RunSession& s, const RunArgs& a, const Model& m, std::string o, LogPrinter& l)
-      : session(s), args(a), model(m), out(std::move(o)), logs(l) {}
+  ActiveRun(RunSession& s, const RunArgs& a, const Model& m, std::string o, std::string shown, RunWorkdir& w,
+            LogPrinter& l)
+      : session(s), args(a), model(m), out(std::move(o)), shown_out(std::move(shown)), workdir(w), logs(l) {}
   ~ActiveRun() { session.SetWorld(nullptr, nullptr); }  // before the world and the recorder go
   ActiveRun(const ActiveRun&) = delete;
   ActiveRun& operator=(const ActiveRun&) = delete;
@@ -160,7 +183,9 @@ struct ActiveRun {
   RunSession& session;
   const RunArgs& args;
   const Model& model;
-  const std::string out;
+  const std::string out;        // absolute: the run works in out/files
+  const std::string shown_out;  // as given, for messages
+  RunWorkdir& workdir;
   LogPrinter& logs;
   std::chrono::steady_clock::time_point start;
   std::unique_ptr<World> world;
@@ -182,10 +207,6 @@ std::optional<int> BuildWorld(ActiveRun& run, const SimOptions& options, std::ve
                            options.inputs.get());
   }
   *inputs = ExperimentInputs(run.model, run.world.get());
-  if (!SetAsideEarlierOutputsAndSay(run.out, &error)) {
-    std::fprintf(stderr, "essaim run: %s\n", error.c_str());
-    return kExitRunFailed;
-  }
   return std::nullopt;
 }
 
@@ -282,7 +303,7 @@ int Report(const ActiveRun& run, StepStatus status, const std::vector<std::strin
   std::fputs(FormatUnreadParams(world.unread_params, run.args.strict).c_str(), stderr);
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());
-    std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", run.out.c_str(),
+    std::fprintf(stderr, "essaim run: the outputs in %s are incomplete%s\n", run.shown_out.c_str(),
                  FileExists(JoinPath(run.out, "summary.json")) ? "; summary.json lists those written" : "");
     if (run.info.status != "interrupted") return kExitRunFailed;
   }
@@ -291,7 +312,7 @@ int Report(const ActiveRun& run, StepStatus status, const std::vector<std::strin
     const double steps = static_cast<double>(world.robot_steps);
     std::printf("essaim: %llu ticks, %zu robots, %.2f s, %.0f robot-steps/s; %zu controller error(s); output in %s\n",
                 static_cast<unsigned long long>(world.tick), world.robots.size(), seconds,
-                seconds > 0 ? steps / seconds : 0.0, world.controller_errors.size(), run.out.c_str());
+                seconds > 0 ? steps / seconds : 0.0, world.controller_errors.size(), run.shown_out.c_str());
   }
   return ExitCode(run, status);
 }
@@ -305,6 +326,8 @@ int FinishAndReport(ActiveRun& run, StepStatus status) {
   if (!run.logs.Flush(&error)) std::fprintf(stderr, "essaim run: --log-dir: %s\n", error.c_str());
   run.info.wall_seconds = SecondsSince(run.start);
   CloseStreams(run);
+  run.info.files = run.workdir.Collect(std::string(kRunFilesFolder) + "/");
+  run.info.files_listed = true;
   std::vector<std::string> unwritten = run.info.output_errors;
   if (!WriteRunOutputs(run.out, *run.world, run.info, has_metrics ? &metrics : nullptr, &error))
     unwritten.push_back(error);  // metrics, time series or summary
@@ -313,18 +336,28 @@ int FinishAndReport(ActiveRun& run, StepStatus status) {
 
 /// One run. `inputs` receives the files it read (to watch) as soon as they are known.
 int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
+  session.earlier_set_aside = false;
+  r.file = NamedFromBelow(r.file);
   std::unique_ptr<Model> model;
   if (std::optional<int> code = LoadModel(session, r, &model)) return *code;
+  AnchorPathsAbove(model.get());
   *inputs = ExperimentInputs(*model, nullptr);
-  const std::string out = r.out.empty() ? DefaultOutDir(*model) : r.out;
-  if (!OpenOutFolder(session, out)) return kExitBadInput;
+  const std::string shown_out = r.out.empty() ? DefaultOutDir(*model) : r.out;
+  if (!OpenOutFolder(session, shown_out)) return kExitBadInput;
+  const std::string out = WeaklyCanonicalPath(shown_out);
+  if (!r.log_dir.empty()) r.log_dir = WeaklyCanonicalPath(r.log_dir);  // read after the run enters out/files
   auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
   if (!PrepareLogs(*logs)) return kExitBadInput;
   const SimOptions options = MakeSimOptions(session, r, *model, out, logs);
   // Signals and the watchdog's last resort are handled from before init(): a controller
   // stuck there still ends the run with its outputs.
+  RunWorkdir workdir;  // left after the world goes (C++ Destroy may write), and after the session forgets it
   SessionRun watched(session, out, r, *model);  // declared before the world, so it goes after it
-  ActiveRun run(session, r, *model, out, *logs);
+  std::string error;
+  if (!EnterWorkdir(workdir, out, *model, &error))
+    return FailedBeforeRun(session, r, out, model.get(), error, kExitRunFailed);
+  session.SetWorkdir(&workdir);  // until SessionRun ends
+  ActiveRun run(session, r, *model, out, shown_out, workdir, *logs);
   if (std::optional<int> code = BuildWorld(run, options, inputs)) return *code;
   if (std::optional<int> code = OpenOutputs(run)) return *code;
   const StepStatus status = StepUntilDone(run);

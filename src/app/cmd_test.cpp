@@ -33,6 +33,7 @@ bool ParseExpectations(const TestSpec& spec, std::vector<Expectation>* out, std:
   for (const SpecExpectation& written : spec.expectations) {
     Expectation e;
     std::string error;
+    e.line = written.line;
     if (ParseExpectation(written.text, &e, &error))
       out->push_back(e);
     else
@@ -109,6 +110,8 @@ TestReport Check(const TestSpec& spec, const std::vector<Expectation>& expectati
     Verdict v = Evaluate(e, summarised);
     std::vector<std::string> details =
         !v.pass && e.value == "errors" ? ErrorDetails(v, summarised) : std::vector<std::string>{};
+    for (size_t i = 0; i < v.notes.size() && i < 3; ++i)  // a file or column missing: say where it was asked
+      details.push_back(spec.file + ":" + std::to_string(e.line) + ": " + v.notes[i]);
     report.rows.push_back({e.text, v.value, v.pass, v.failed_seeds, details});
   }
   if (!spec.golden.empty()) report.rows.push_back(GoldenRow(spec, runs, args));

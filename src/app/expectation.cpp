@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/file_column.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -50,6 +51,14 @@ bool SplitHead(const std::string& text, std::string* head, std::string* inner, s
   return true;
 }
 
+/// Each file column of VALUE (A/B included) well formed.
+bool CheckFileValues(const std::string& value, std::string* error) {
+  const size_t slash = RatioSlash(value);
+  if (slash != std::string::npos)
+    return CheckFileValues(value.substr(0, slash), error) && CheckFileValues(value.substr(slash + 1), error);
+  return !IsFileValue(value) || CheckFileValue(value, error);
+}
+
 bool ParseAggregate(const std::string& head, Aggregate* out, std::string* error) {
   auto it = std::find(kAggregates.begin(), kAggregates.end(), head);
   if (it == kAggregates.end()) {
@@ -85,7 +94,7 @@ bool ParseExpectation(const std::string& text, Expectation* out, std::string* er
   }
   if (out->aggregate == Aggregate::Fraction) {
     std::string dummy;
-    if (!ParseCondition(inner, &out->value, &out->per_run, error)) return false;
+    if (!ParseCondition(inner, &out->value, &out->per_run, error) || !CheckFileValues(out->value, error)) return false;
     return ParseCondition("fraction " + rest, &dummy, &out->check, error);
   }
   if (out->aggregate == Aggregate::Quantile) {
@@ -96,7 +105,7 @@ bool ParseExpectation(const std::string& text, Expectation* out, std::string* er
     }
     out->quantile = *q;
   }
-  return ParseCondition(rest, &out->value, &out->check, error);
+  return ParseCondition(rest, &out->value, &out->check, error) && CheckFileValues(out->value, error);
 }
 
 }  // namespace essaim

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "app/expectation.h"
+#include "app/file_column.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -100,12 +101,19 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
 }  // namespace
 
 std::optional<double> RunValue(const SeedOutcome& run, const std::string& name) {
-  size_t slash = name.find('/');
+  std::string why;
+  return RunValue(run, name, &why);
+}
+
+std::optional<double> RunValue(const SeedOutcome& run, const std::string& name, std::string* why) {
+  size_t slash = RatioSlash(name);
   if (slash != std::string::npos) {  // a share: A/B, e.g. trips_per_source.A/trips_total
-    std::optional<double> a = RunValue(run, name.substr(0, slash)), b = RunValue(run, name.substr(slash + 1));
+    std::optional<double> a = RunValue(run, name.substr(0, slash), why);
+    std::optional<double> b = RunValue(run, name.substr(slash + 1), why);
     if (!a || !b || *b == 0) return std::nullopt;
     return *a / *b;
   }
+  if (IsFileValue(name)) return FileColumnValue(run.folder, name, why);
   if (name == "errors") return ErrorCount(run);
   if (name == "ticks") return NumberOf(run.summary.Find("ticks"));
   if (name.rfind("summary.", 0) == 0) return NumberOf(Lookup(run.summary, name.substr(8)));
@@ -116,13 +124,21 @@ std::optional<double> RunValue(const SeedOutcome& run, const std::string& name) 
 Verdict Evaluate(const Expectation& e, const std::vector<SeedOutcome>& runs) {
   std::vector<double> values;
   std::vector<uint64_t> seeds, missing;
+  std::vector<std::string> notes;
   for (const SeedOutcome& run : runs) {
-    std::optional<double> v = RunValue(run, e.value);
+    std::string why;
+    std::optional<double> v = RunValue(run, e.value, &why);
     if (v) values.push_back(*v), seeds.push_back(run.seed);
     if (!v) missing.push_back(run.seed);
+    if (!v && !why.empty()) notes.push_back("seed " + std::to_string(run.seed) + ": " + why);
   }
-  if (e.aggregate == Aggregate::Each || e.aggregate == Aggregate::Fraction) return CountRuns(e, values, seeds, missing);
+  if (e.aggregate == Aggregate::Each || e.aggregate == Aggregate::Fraction) {
+    Verdict v = CountRuns(e, values, seeds, missing);
+    v.notes = notes;
+    return v;
+  }
   Verdict v;
+  v.notes = notes;
   v.failed_seeds = missing;
   if (values.empty() || !missing.empty()) {
     v.value = "'" + e.value + "' missing in " + std::to_string(missing.size()) + " run(s)";

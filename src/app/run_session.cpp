@@ -1,6 +1,7 @@
 #include "app/run_session.h"
 
 #include "app/run_args.h"
+#include "app/run_workdir.h"
 #include "core/paths.h"
 #include "output/atomic_file.h"
 #include "output/recording.h"
@@ -25,6 +26,11 @@ void RunSession::SetWorld(const World* world, RecordingWriter* recorder) {
   recorder_ = recorder;
 }
 
+void RunSession::SetWorkdir(RunWorkdir* workdir) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  workdir_ = workdir;
+}
+
 void RunSession::End() {
   std::lock_guard<std::mutex> lock(mutex_);
   out_.clear();
@@ -32,6 +38,7 @@ void RunSession::End() {
   model_ = nullptr;
   world_ = nullptr;
   recorder_ = nullptr;
+  workdir_ = nullptr;
 }
 
 void RunSession::OnStuck(const std::string& message) {
@@ -41,6 +48,7 @@ void RunSession::OnStuck(const std::string& message) {
     if (args_)
       WriteFailureSummary(out_, ESSAIM_VERSION, args_->file, args_->load.overrides, model_, /*inputs=*/nullptr, message,
                           &error);
+    if (workdir_) workdir_->Collect("");  // the view removed; the files written so far stay
     ExitStuck(message);
   }
   RunInfo info;
@@ -52,6 +60,10 @@ void RunSession::OnStuck(const std::string& message) {
   // temporary file.
   if (recorder_ && recorder_->IsOpen() && recorder_->Seal(&error)) info.outputs.push_back(kRecordingFile);
   info.failure = message;
+  if (workdir_) {  // the robots may still write: only what nobody changed is removed
+    info.files = workdir_->Collect(std::string(kRunFilesFolder) + "/");
+    info.files_listed = true;
+  }
   WriteFileAtomic(JoinPath(out_, "summary.json"), SummaryJsonText(*world_, info), &error);
   ExitStuck(message);
 }

@@ -14,6 +14,7 @@ namespace essaim {
 struct Model;
 struct RunArgs;
 class RecordingWriter;
+class RunWorkdir;
 class World;
 
 class RunSession {
@@ -26,11 +27,16 @@ class RunSession {
   SignalCatcher signals;
   /// Held from before the first write into --out until the process ends.
   OutFolderLock out_lock;
+  /// Whether this run has moved an earlier run's outputs out of --out already.
+  bool earlier_set_aside = false;
 
   /// From before the scripts load to after the world goes: where a stuck call's summary goes.
   void Begin(const std::string& out, const RunArgs& args, const Model& model);
   /// The world and its recorder once they exist; null, null before they go.
   void SetWorld(const World* world, RecordingWriter* recorder);
+  /// The run's working folder while the run is in it (null after): a stuck run's summary
+  /// lists its files, the view removed.
+  void SetWorkdir(RunWorkdir* workdir);
   void End();
 
  private:
@@ -44,6 +50,7 @@ class RunSession {
   const Model* model_ = nullptr;
   const World* world_ = nullptr;  // null while init() runs
   RecordingWriter* recorder_ = nullptr;
+  RunWorkdir* workdir_ = nullptr;
 };
 
 /// Begin()..End() of one run, as a scope: declared before the world, so it ends after it.

@@ -89,6 +89,7 @@ void Collect(SeedOutcome* run, int status, const std::string& folder) {
     run->failure = "exit " + std::to_string(run->exit_code) + ": " + LastLogLine(folder);
   run->summary = ReadJson(folder + "/summary.json");
   run->metrics = ReadJson(folder + "/metrics.json");
+  run->folder = folder;
   if (run->failure.empty() && run->summary.IsNull()) run->failure = "no summary.json written";
 }
 

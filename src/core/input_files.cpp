@@ -8,7 +8,8 @@
 namespace essaim {
 
 void InputFiles::Add(const std::string& path, const char* role) {
-  std::string canonical = WeaklyCanonicalPath(path);
+  const std::string& from_base = base_.empty() || path.empty() || path[0] == '/' ? path : JoinPath(base_, path);
+  std::string canonical = WeaklyCanonicalPath(from_base);
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const InputFile& f : files_)

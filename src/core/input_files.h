@@ -29,8 +29,12 @@ class InputFiles {
   /// overrides, the experiment length in ticks and the seed: equal identities, equal runs.
   std::string Identity(const std::string& version, const std::vector<std::string>& overrides, uint64_t ticks,
                        uint64_t seed) const;
+  /// The folder relative paths are taken from, when it is not the working directory (a run
+  /// working in its own folder names its inputs as from the folder it was started in).
+  void SetBase(const std::string& dir) { base_ = dir; }
 
  private:
+  std::string base_;
   mutable std::mutex mutex_;
   std::vector<InputFile> files_;
 };

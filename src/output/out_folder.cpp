@@ -12,6 +12,7 @@
 
 #include "output/memory_log.h"
 #include "output/recording.h"
+#include "output/run_files.h"
 
 namespace essaim {
 
@@ -27,6 +28,7 @@ bool IsFinalOutputName(const std::string& name) {
                                        kRecordingFile, kMemoryLogFile, "replay.html"};
   for (const char* n : kNames)
     if (name == n) return true;
+  if (name == kRunFilesFolder) return true;  // the run's working folder: its own files
   return name.rfind("snapshot-", 0) == 0 && EndsWith(name, ".png");
 }
 
@@ -73,8 +75,11 @@ bool PrepareOutFolder(const std::string& dir, std::string* error) {
   ::unlink(probe.c_str());
   for (const std::string& name : RunOutputsIn(dir)) {
     fs::file_status st = fs::symlink_status(fs::path(dir) / name, ec);
-    if (!fs::is_regular_file(st) && !fs::is_symlink(st)) {
-      *error = "--out " + dir + ": " + name + " is not a regular file; essaim writes a file of that name there";
+    if (name == kRunFilesFolder ? !fs::is_directory(st) : !fs::is_regular_file(st) && !fs::is_symlink(st)) {
+      *error = "--out " + dir + ": " + name +
+               (name == kRunFilesFolder ? " is not a folder; essaim makes a folder"
+                                        : " is not a regular file; essaim writes a file") +
+               " of that name there";
       return false;
     }
   }

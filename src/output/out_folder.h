@@ -11,7 +11,8 @@ constexpr const char* kPreviousRunFolder = "previous";
 
 /// Whether `name` (a file name, no folder) is one essaim writes into a run folder:
 /// summary.json, metrics.json, timeseries.csv, recording.bin, replay.html,
-/// snapshot-*.png, or a temporary file of one of them (NAME.tmp.PID).
+/// snapshot-*.png, files/ (the run's working folder), or a temporary file of one of them
+/// (NAME.tmp.PID).
 bool IsRunOutputName(const std::string& name);
 
 /// Makes `dir` (mkdir -p) and proves it writable by creating and removing a probe file.

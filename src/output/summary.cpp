@@ -103,6 +103,7 @@ Value BuildSummary(const World& w, const RunInfo& info) {
   if (!failure.empty()) s.Set("failure", Text(failure));
   s.Set("unread_params", UnreadParams(w.unread_params));
   s.Set("outputs", Value::OfStrings(info.outputs));
+  if (info.files_listed) s.Set("files", Value::OfStrings(info.files));
   return s;
 }
 

@@ -16,6 +16,10 @@ struct RunInfo : RunOutcome {
   std::string version;
   double wall_seconds = 0;
   std::vector<std::string> outputs;  // file names written
+  /// The files the run's scripts wrote or changed, relative to the output folder
+  /// ("files/score.txt"): summary.json's "files" when `files_listed` (essaim run).
+  std::vector<std::string> files;
+  bool files_listed = false;
   /// Outputs that could not be written (a full disk): they make the status "failed" and
   /// go into summary.json's "failure".
   std::vector<std::string> output_errors;

@@ -37,7 +37,7 @@ def test_course_project_runs_unmodified(course, tmp_path):
     assert "warning" not in done.stderr  # every attribute of the file is read
     assert "course: 3 objects placed" in done.stdout and "course: done" in done.stdout
     assert "course: 5 robots" in done.stdout  # two in the file, three added and placed by Init
-    rows, last = score_rows(course)
+    rows, last = score_rows(tmp_path / "out" / "files")  # the run's working folder (docs/loop-functions.md)
     assert [t for t, robot, _, _ in rows if robot == "fb0"] == list(range(1, 31))  # the end: tick 30
     added = ["student0", "student1", "student2"]
     assert all([t for t, robot, _, _ in rows if robot == r] == list(range(1, 31)) for r in added)
@@ -56,7 +56,7 @@ def test_course_project_is_reproducible_at_any_thread_count(course, tmp_path):
     for threads in ("1", "2"):
         done = run(course / "course.argos", "--threads", threads, "--out", str(tmp_path / threads), cwd=course)
         assert done.returncode == 0, done.stderr
-        outputs.append((course / "score.txt").read_text())
+        outputs.append((tmp_path / threads / "files" / "score.txt").read_text())
     assert outputs[0] == outputs[1]
 
 
@@ -66,10 +66,28 @@ def test_label_alone_is_found_in_argos_plugin_path(course, tmp_path):
     argos.write_text(text.replace('script="course.lua"', f'script="{course / "course.lua"}"'))
     done = run(argos, "--out", str(tmp_path / "a"), cwd=tmp_path, env={"ARGOS_PLUGIN_PATH": str(course / "build")})
     assert done.returncode == 0, done.stderr
-    assert (tmp_path / "score.txt").exists()  # written where the run was started, as ARGoS does
+    assert (tmp_path / "a" / "files" / "score.txt").exists()  # the run's working folder, not the launch folder
+    assert not (tmp_path / "score.txt").exists()
     done = run(argos, "--out", str(tmp_path / "b"), cwd=tmp_path, env={"ARGOS_PLUGIN_PATH": ""})
     assert done.returncode == 2
     assert "no loop functions registered as 'course_loop_functions'" in done.stderr
+
+
+def test_each_seed_keeps_its_score_file_under_essaim_test(course, tmp_path):
+    """Four seeds two at a time: four score.txt, one per run folder, checked by column; the
+    project's folder keeps no score file of its own (docs/testing.md, files/PATH[COLUMN])."""
+    spec = course / "course_files.test.toml"
+    spec.write_text('experiment = "course.argos"\nseeds = 4\nexpect = [\n  "each errors == 0",\n'
+                    '  "each files/score.txt[tick].last == 30",\n  "each files/score.txt[steps].max == 30",\n'
+                    '  "each files/score.txt[tick].rows == 150",\n]\n')
+    (course / "score.txt").unlink(missing_ok=True)
+    done = subprocess.run([ESSAIM, "test", str(spec), "-j", "2", "--out", str(tmp_path / "t")], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "5 of 5 expectations hold" in done.stdout
+    scores = [(tmp_path / "t" / f"seed-{seed}" / "files" / "score.txt").read_text() for seed in (1, 2, 3, 4)]
+    assert all("# finished at 30 objects 3" in score for score in scores)
+    assert not (course / "score.txt").exists()
 
 
 CENSUS_EXPECTED = {
@@ -94,7 +112,7 @@ def test_every_hook_and_call_of_the_census(census, tmp_path):
     done = run(census / "census.argos", "--out", str(tmp_path / "out"), cwd=census)
     assert done.returncode == 0, done.stderr
     assert "warning" not in done.stderr
-    lines = [line.split(" ", 1) for line in (census / "census.txt").read_text().splitlines()]
+    lines = [line.split(" ", 1) for line in (tmp_path / "out" / "files" / "census.txt").read_text().splitlines()]
     seen = dict(lines)
     for key, value in CENSUS_EXPECTED.items():
         assert seen.get(key) == value, key
@@ -105,7 +123,7 @@ def test_every_hook_and_call_of_the_census(census, tmp_path):
 def test_second_generator_draws_its_own_stream(census, tmp_path):
     done = run(census / "census.argos", "--seed", "6", "--out", str(tmp_path / "out"), cwd=census)
     assert done.returncode == 0, done.stderr
-    other = dict(line.split(" ", 1) for line in (census / "census.txt").read_text().splitlines())
+    other = dict(line.split(" ", 1) for line in (tmp_path / "out" / "files" / "census.txt").read_text().splitlines())
     assert other["seed"] == "6" and other["rng_first_of_second"] != "0.8973"
 
 
@@ -174,7 +192,7 @@ def test_installed_essaim_builds_and_runs_the_course_project(tmp_path):
     done = subprocess.run([str(prefix / "bin" / "essaim"), "run", "course.argos", "--out", str(tmp_path / "out")],
                           cwd=course, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
-    assert "# finished at 30 objects 3" in (course / "score.txt").read_text()
+    assert "# finished at 30 objects 3" in (tmp_path / "out" / "files" / "score.txt").read_text()
 
 
 def test_python_module_runs_cpp_loop_functions(course, tmp_path):

@@ -55,7 +55,9 @@ def legacy_runs(legacy, tmp_path_factory):
     (legacy / "twin.argos").write_text(twin.replace('output="poses.txt"', 'output="twin_poses.txt"'))
     twin_done = run(legacy / "twin.argos", "--out", str(tmp_path / "lua"), cwd=legacy)
     assert twin_done.returncode == 0, twin_done.stderr
-    return done, poses(legacy / "poses.txt"), poses(legacy / "twin_poses.txt"), tmp_path
+    # Each run's own files, in its working folder <out>/files (docs/loop-functions.md)
+    cpp, lua = tmp_path / "cpp" / "files", tmp_path / "lua" / "files"
+    return done, poses(cpp / "poses.txt"), poses(lua / "twin_poses.txt"), tmp_path
 
 
 def test_beta17_loop_functions_read_what_essaim_handles_read(legacy_runs):
@@ -97,7 +99,7 @@ def scatter_rows(folder):
 def test_crandom_and_crange_come_with_loop_functions_h(scatter, tmp_path):
     done = run(scatter / "scatter.argos", "--out", str(tmp_path / "out"), cwd=scatter)
     assert done.returncode == 0, done.stderr
-    rows = scatter_rows(scatter)
+    rows = scatter_rows(tmp_path / "out" / "files")
     robots = [row for row in rows if row[0] == "robot"]
     assert [row[1] for row in robots] == ["early", "middle", "late"]  # three constructors
     assert all(row[4] == "in" and -1.5 <= float(row[3]) <= 1.5 for row in robots)
@@ -107,4 +109,5 @@ def test_crandom_and_crange_come_with_loop_functions_h(scatter, tmp_path):
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert summary["status"] == "ok"
     again = run(scatter / "scatter.argos", "--out", str(tmp_path / "again"), cwd=scatter)
-    assert again.returncode == 0 and scatter_rows(scatter) == rows  # the experiment's seed draws them
+    again_rows = scatter_rows(tmp_path / "again" / "files")
+    assert again.returncode == 0 and again_rows == rows  # the experiment's seed draws them

@@ -58,6 +58,11 @@ def run(argos: Path, *args, cwd: Path, env=None):
     return run_essaim(argos, *args, cwd=cwd, env=env)
 
 
+def twin(out: Path) -> str:
+    """The twin.txt the run's loop functions wrote, in its working folder <out>/files."""
+    return (out / "files" / "twin.txt").read_text()
+
+
 def needed(library: Path):
     dynamic = subprocess.run(["readelf", "-d", str(library)], capture_output=True, text=True).stdout
     return [line.split("[", 1)[1].rstrip("]") for line in dynamic.splitlines() if "(NEEDED)" in line]
@@ -75,7 +80,7 @@ def test_an_argos_on_ld_library_path_is_never_loaded(scope, stand_in, tmp_path):
     env = {"LD_LIBRARY_PATH": str(stand_in)}
     done = run(scope / "scope.argos", "--out", str(tmp_path / "out"), cwd=scope, env=env)
     assert done.returncode == 0, done.stderr
-    assert MARKER not in done.stderr and (scope / "twin.txt").read_text() == "first\n"
+    assert MARKER not in done.stderr and twin(tmp_path / "out") == "first\n"
     ldd = subprocess.run(["ldd", str(scope / "build" / "libtwin_loop_functions.so")], capture_output=True, text=True,
                          env=dict(os.environ, **env)).stdout
     assert SONAME in ldd and "libargos3" not in ldd and str(stand_in) not in ldd
@@ -128,7 +133,7 @@ def test_a_library_uses_what_another_library_of_the_experiment_defines(scope, tm
     plugin_path = f"{scope / 'build' / 'libtwin_helper.so'}:{scope / 'build' / 'libneeds_helper_loop_functions.so'}"
     done = run(argos, "--out", str(tmp_path / "a"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
     assert done.returncode == 0, done.stderr
-    assert (scope / "twin.txt").read_text() == "helped\n"
+    assert twin(tmp_path / "a") == "helped\n"
     # Named alone, the library lacks its helper's function.
     done = run(argos, "--out", str(tmp_path / "b"), cwd=scope,
                env={"ARGOS_PLUGIN_PATH": str(scope / "build" / "libneeds_helper_loop_functions.so")})
@@ -146,7 +151,7 @@ def test_a_label_is_looked_up_in_the_experiments_libraries_only(scope, second, t
     plugin_path = str(second / "build" / "libtwin_loop_functions.so")
     done = run(label_alone(scope), "--out", str(tmp_path / "out"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
     assert done.returncode == 0, done.stderr
-    assert (scope / "twin.txt").read_text() == "second\n"
+    assert twin(tmp_path / "out") == "second\n"
 
 
 @pytest.mark.parametrize("order, word", [(["twin", "rival"], "rival"), (["rival", "twin"], "first")])
@@ -155,7 +160,7 @@ def test_a_label_two_libraries_register_is_the_last_ones(scope, tmp_path, order,
     plugin_path = ":".join(str(scope / "build" / f"lib{name}_loop_functions.so") for name in order)
     done = run(label_alone(scope), "--out", str(tmp_path / "out"), cwd=scope, env={"ARGOS_PLUGIN_PATH": plugin_path})
     assert done.returncode == 0, done.stderr
-    assert (scope / "twin.txt").read_text() == word + "\n"
+    assert twin(tmp_path / "out") == word + "\n"
 
 
 def test_experiments_in_one_process_each_get_their_own_class(scope, second, tmp_path):

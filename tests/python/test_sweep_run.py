@@ -1,7 +1,9 @@
 """sweep.py against the essaim binary in $ESSAIM: a tiny sweep run locally and on a Dask
 LocalCluster, resuming, failed runs, and metrics from loop functions."""
 import json
+import shutil
 import time
+from pathlib import Path
 
 import pytest
 
@@ -145,6 +147,61 @@ def test_loop_function_metrics_become_columns(tmp_path, essaim):
     plot = load_module("plot")
     files = plot.make_figures(df, tmp_path / "fig")
     assert len(files) == 8
+
+
+ZONES = Path(__file__).resolve().parents[1] / "app" / "zones_project"
+
+
+def zones_sweep(tmp_path, name):
+    """A sweep of zones_project (loop functions writing zone_counts.txt), its table taking
+    columns from that file."""
+    folder = tmp_path / "zones"
+    if not folder.exists():
+        shutil.copytree(ZONES, folder)
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f'experiment = "{folder / "zones.argos"}"\nworkdir = "{folder}"\nseeds = 2\nticks = 10\n'
+                    f'out = "{tmp_path / (name + "-out")}"\n[params]\n"{QUANTITY}" = [2, 4]\n'
+                    '[file_columns]\nlast_tick = "files/zone_counts.txt[tick].last"\n'
+                    'inside_mean = "files/zone_counts.txt[inside].mean"\n'
+                    'nothing = "files/none.txt[tick].last"\n')
+    return path, tmp_path / f"{name}-out"
+
+
+def check_zone_files(out):
+    df = pd.read_parquet(out / "results.parquet")
+    assert df["status"].tolist() == ["ok"] * 4
+    for _, row in df.iterrows():
+        run = out / "runs" / row["run"]
+        lines = (run / "files" / "zone_counts.txt").read_text().splitlines()
+        assert len(lines) == 11 and all(line.split()[3] == str(row["seed"]) for line in lines[1:])
+        inside = [int(line.split()[1]) for line in lines[1:]]
+        assert row["last_tick"] == 10 and row["inside_mean"] == pytest.approx(sum(inside) / 10)
+        assert pd.isna(row["nothing"])
+        assert json.loads(row["summary.files"]) == ["files/zone_counts.txt"]
+    return df
+
+
+def test_each_run_keeps_the_files_it_wrote_and_columns_come_from_them(tmp_path, essaim):
+    s, out = zones_sweep(tmp_path, "local")
+    r = run_sweep(s, "-j", "2", essaim=essaim)
+    assert r.returncode == 0, r.stderr
+    local = check_zone_files(out)
+    distributed = pytest.importorskip("distributed")
+    s, out = zones_sweep(tmp_path, "dask")
+    with distributed.LocalCluster(n_workers=2, processes=True, threads_per_worker=1,
+                                  dashboard_address=None) as cluster:
+        r = run_sweep(s, "--scheduler", cluster.scheduler_address, essaim=essaim)
+    assert r.returncode == 0, r.stderr
+    df = check_zone_files(out)  # the workers sent each run's files back with its outputs
+    assert df["inside_mean"].tolist() == local["inside_mean"].tolist()
+
+
+def test_a_malformed_file_column_is_refused(tmp_path, essaim):
+    s, _ = zones_sweep(tmp_path, "bad")
+    s.write_text(s.read_text().replace("[tick].last", "[tick].latest", 1))
+    r = run_sweep(s, essaim=essaim)
+    assert r.returncode == 2, r.stderr
+    assert "file_columns.last_tick" in r.stderr and "after the column comes .last" in r.stderr
 
 
 def test_a_sweep_over_a_path_nobody_reads_is_refused_before_any_run(tmp_path, essaim):

@@ -165,7 +165,7 @@ bool LoopFunctions::TakeFloorChanged() {
 // file's folder and the script's.
 void LoopFunctions::SetPackagePath(const Model& model) {
   const std::string dir = DirName(context_.script);
-  SetRequireRoots(&guard_, {DirName(model.file), dir});
+  SetRequireRoots(&guard_, {DirName(model.file), model.dir, dir});  // model.dir: see LuaController
   lua_getglobal(L_, "package");
   lua_getfield(L_, -1, "path");
   std::string path = (dir.empty() ? std::string("./?.lua;") : dir + "/?.lua;") + lua_tostring(L_, -1);

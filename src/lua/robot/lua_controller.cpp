@@ -113,7 +113,9 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
 
   const std::string& script = controller_->script;
   if (script.empty()) return true;  // the loader refuses it; a Model built in code may have none
-  SetRequireRoots(&guard_, {DirName(model.file), DirName(script)});
+  // model.dir: the .argos file's folder as essaim run made it absolute, whose folders its
+  // working folder links (docs/loop-functions.md, "Files the loop functions write").
+  SetRequireRoots(&guard_, {DirName(model.file), model.dir, DirName(script)});
   PrependScriptFolder(L, script);
   return RunChunk(options, error);
 }
