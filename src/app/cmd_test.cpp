@@ -1,6 +1,6 @@
 // `essaim test SPEC.toml`: an experiment over a set of seeds, its expectations checked over the
 // runs (docs/testing.md). Exit 0 when every expectation holds, 1 when one does not, 2 for a
-// spec that cannot be read (nothing run).
+// mistake of the spec: one that cannot be read (nothing run), or a value no run produced.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -14,6 +14,7 @@
 #include "app/expectation.h"
 #include "app/golden_run.h"
 #include "app/seed_runs.h"
+#include "app/spec_checks.h"
 #include "app/test_report.h"
 #include "app/test_spec.h"
 #include "core/paths.h"
@@ -28,19 +29,6 @@ struct TestArgs {
   std::string out;
   bool update = false;
 };
-
-bool ParseExpectations(const TestSpec& spec, std::vector<Expectation>* out, std::vector<std::string>* errors) {
-  for (const SpecExpectation& written : spec.expectations) {
-    Expectation e;
-    std::string error;
-    e.line = written.line;
-    if (ParseExpectation(written.text, &e, &error))
-      out->push_back(e);
-    else
-      errors->push_back(spec.file + ":" + std::to_string(written.line) + ": expect \"" + written.text + "\": " + error);
-  }
-  return errors->empty();
-}
 
 /// The built-in first row: every run ended with exit 0 and wrote its summary.
 ReportRow FinishedRow(const std::vector<SeedOutcome>& runs, const std::string& out) {
@@ -107,6 +95,11 @@ TestReport Check(const TestSpec& spec, const std::vector<Expectation>& expectati
   for (const SeedOutcome& run : runs)
     if (!run.summary.IsNull()) summarised.push_back(run);
   for (const Expectation& e : expectations) {
+    std::string mistake = UnknownValueInSpec(spec, e, runs);
+    if (!mistake.empty()) {  // a name no run produced: a typo of the spec, not a behaviour
+      report.rows.push_back({e.text, "no run has it", false, {}, {mistake}, true});
+      continue;
+    }
     Verdict v = Evaluate(e, summarised);
     std::vector<std::string> details =
         !v.pass && e.value == "errors" ? ErrorDetails(v, summarised) : std::vector<std::string>{};
@@ -115,6 +108,10 @@ TestReport Check(const TestSpec& spec, const std::vector<Expectation>& expectati
     report.rows.push_back({e.text, v.value, v.pass, v.failed_seeds, details});
   }
   if (!spec.golden.empty()) report.rows.push_back(GoldenRow(spec, runs, args));
+  for (ReportRow& row : report.rows)  // how to look at one failed run alone
+    if (!row.pass && !row.failed_seeds.empty())
+      row.details.push_back("rerun seed " + std::to_string(row.failed_seeds.front()) +
+                            " alone: " + RerunCommand(spec, row.failed_seeds.front(), args.out));
   return report;
 }
 
@@ -124,17 +121,22 @@ bool WriteJUnit(const std::string& path, const TestReport& report) {
   return static_cast<bool>(out.flush());
 }
 
+/// Every mistake of the spec on stderr (and as a failed testcase in --junit); exit 2.
+int SpecErrors(const TestSpec& spec, const std::vector<std::string>& errors, const TestArgs& args) {
+  for (const std::string& e : errors) std::fprintf(stderr, "%s\n", e.c_str());
+  std::fprintf(stderr, "essaim test: %zu error(s) in %s; nothing was run\n", errors.size(), args.spec.c_str());
+  if (!args.junit.empty() && !WriteJUnit(args.junit, SpecErrorReport(args.spec, spec.name, errors)))
+    std::fprintf(stderr, "essaim test: cannot write --junit %s\n", args.junit.c_str());
+  return kExitBadInput;
+}
+
 int Test(TestArgs& args) {
   TestSpec spec;
   std::vector<std::string> errors;
   std::vector<Expectation> expectations;
-  if (LoadTestSpec(args.spec, &spec, &errors) && ParseExpectations(spec, &expectations, &errors) &&
-      !FileExists(spec.experiment))
-    errors.push_back(spec.file + ": experiment " + spec.experiment + " does not exist");
-  if (errors.empty() && !PathExists(spec.workdir))
-    errors.push_back(spec.file + ": workdir " + spec.workdir + " does not exist");
-  for (const std::string& e : errors) std::fprintf(stderr, "%s\n", e.c_str());
-  if (!errors.empty()) return kExitBadInput;
+  LoadTestSpec(args.spec, &spec, &errors);
+  CheckSpec(spec, &expectations, &errors);
+  if (!errors.empty()) return SpecErrors(spec, errors, args);
   if (args.out.empty()) args.out = "essaim-test/" + spec.name;
   int jobs = args.jobs ? args.jobs : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   std::printf("essaim test %s: %zu seed(s), %s ticks, %d at a time; runs in %s/\n", spec.file.c_str(),
@@ -145,12 +147,15 @@ int Test(TestArgs& args) {
   std::vector<SeedOutcome> runs = RunSeeds(spec, {args.out, jobs, !spec.golden.empty()});
   TestReport report = Check(spec, expectations, runs, args);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << FormatReport(report);
+  std::cout << FormatReport(report) << std::flush;
+  bool mistakes = false;
+  for (const ReportRow& row : report.rows)  // also where a spec's errors always go
+    if (row.spec_error) mistakes = true, std::fprintf(stderr, "%s\n", row.details.front().c_str());
   if (!args.junit.empty() && !WriteJUnit(args.junit, report)) {
     std::fprintf(stderr, "essaim test: cannot write --junit %s\n", args.junit.c_str());
     return kExitRunFailed;
   }
-  return report.Passed() ? kExitOk : kExitRunFailed;
+  return mistakes ? kExitBadInput : report.Passed() ? kExitOk : kExitRunFailed;
 }
 }  // namespace
 

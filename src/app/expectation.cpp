@@ -13,12 +13,23 @@ namespace {
 const std::vector<std::string> kOps = {"==", "!=", "<=", ">=", "<", ">"};
 const std::vector<std::string> kAggregates = {"each", "mean", "median", "min", "max", "quantile", "fraction"};
 
+/// A ratio written with spaces around its '/' splits VALUE in three: say how it is written.
+std::string RatioHint(const std::string& text) {
+  const size_t slash = text.find('/');
+  if (slash == std::string::npos || (text.find(" /") == std::string::npos && text.find("/ ") == std::string::npos))
+    return "";
+  std::string joined = text;
+  while (joined.find(" /") != std::string::npos) joined.erase(joined.find(" /"), 1);
+  while (joined.find("/ ") != std::string::npos) joined.erase(joined.find("/ ") + 1, 1);
+  return "; a ratio is written without spaces around '/': '" + Trim(joined) + "'";
+}
+
 /// "VALUE OP N" (the whole of `text`) into value and comparison.
 bool ParseCondition(const std::string& text, std::string* value, Comparison* c, std::string* error) {
   std::istringstream in(text);
   std::string number, rest;
   if (!(in >> *value >> c->op >> number) || (in >> rest)) {
-    *error = "'" + Trim(text) + "' is not 'VALUE OP NUMBER' (e.g. 'errors == 0')";
+    *error = "'" + Trim(text) + "' is not 'VALUE OP NUMBER' (e.g. 'errors == 0')" + RatioHint(text);
     return false;
   }
   if (std::find(kOps.begin(), kOps.end(), c->op) == kOps.end()) {

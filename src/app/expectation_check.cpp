@@ -6,6 +6,7 @@
 
 #include "app/expectation.h"
 #include "app/file_column.h"
+#include "app/value_names.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -98,6 +99,14 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
   v.failed_seeds = std::move(failed);
   return v;
 }
+/// errors, ticks, summary.KEY, metrics.KEY or KEY.
+std::optional<double> NamedValue(const SeedOutcome& run, const std::string& name) {
+  if (name == "errors") return ErrorCount(run);
+  if (name == "ticks") return NumberOf(run.summary.Find("ticks"));
+  if (name.rfind("summary.", 0) == 0) return NumberOf(Lookup(run.summary, name.substr(8)));
+  if (name.rfind("metrics.", 0) == 0) return NumberOf(Lookup(run.metrics, name.substr(8)));
+  return NumberOf(Lookup(run.metrics, name));
+}
 }  // namespace
 
 std::optional<double> RunValue(const SeedOutcome& run, const std::string& name) {
@@ -110,15 +119,14 @@ std::optional<double> RunValue(const SeedOutcome& run, const std::string& name, 
   if (slash != std::string::npos) {  // a share: A/B, e.g. trips_per_source.A/trips_total
     std::optional<double> a = RunValue(run, name.substr(0, slash), why);
     std::optional<double> b = RunValue(run, name.substr(slash + 1), why);
+    if (a && b && *b == 0 && why->empty()) *why = "the divisor " + name.substr(slash + 1) + " is 0";
     if (!a || !b || *b == 0) return std::nullopt;
     return *a / *b;
   }
   if (IsFileValue(name)) return FileColumnValue(run.folder, name, why);
-  if (name == "errors") return ErrorCount(run);
-  if (name == "ticks") return NumberOf(run.summary.Find("ticks"));
-  if (name.rfind("summary.", 0) == 0) return NumberOf(Lookup(run.summary, name.substr(8)));
-  if (name.rfind("metrics.", 0) == 0) return NumberOf(Lookup(run.metrics, name.substr(8)));
-  return NumberOf(Lookup(run.metrics, name));
+  std::optional<double> v = NamedValue(run, name);
+  if (!v && why->empty()) *why = WhyNoValue(run, name);
+  return v;
 }
 
 Verdict Evaluate(const Expectation& e, const std::vector<SeedOutcome>& runs) {

@@ -129,7 +129,38 @@ bool Start(const TestSpec& spec, const SeedRunsOptions& o, size_t index, std::ve
   (*running)[pid] = {index, std::chrono::steady_clock::now(), false};
   return true;
 }
+/// `arg` as a shell reads it back: bare when safe, else in single quotes.
+std::string ShellQuoted(const std::string& arg) {
+  const bool safe = !arg.empty() && arg.find_first_not_of(
+                                        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                        "0123456789_./=:,+-@%") == std::string::npos;
+  if (safe) return arg;
+  std::string quoted = "'";
+  for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+/// `path` as written from `from` (both made absolute): relative when below or beside it.
+std::string FromFolder(const std::string& path, const fs::path& from) {
+  std::error_code ec;
+  fs::path rel = fs::relative(fs::absolute(path), from, ec);
+  return ec || rel.empty() ? fs::absolute(path).string() : rel.string();
+}
 }  // namespace
+
+std::string RerunCommand(const TestSpec& spec, uint64_t seed, const std::string& out) {
+  std::error_code ec;
+  const fs::path here = fs::current_path(ec), workdir = fs::absolute(spec.workdir);
+  const bool same = fs::equivalent(here, workdir, ec);
+  std::vector<std::string> args = {"essaim", "run", FromFolder(spec.experiment, workdir), "--seed",
+                                   std::to_string(seed)};
+  if (spec.ticks) args.insert(args.end(), {"--ticks", std::to_string(spec.ticks)});
+  args.insert(args.end(), {"--out", FromFolder(SeedRunFolder(out, seed), workdir)});
+  for (const SpecSetting& s : spec.sets) args.insert(args.end(), {"--set", s.path + "=" + s.value});
+  std::string line = same ? "" : "cd " + ShellQuoted(FromFolder(workdir.string(), here)) + " && ";
+  for (size_t i = 0; i < args.size(); ++i) line += (i ? " " : "") + ShellQuoted(args[i]);
+  return line;
+}
 
 std::string SeedRunFolder(const std::string& out, uint64_t seed) {
   return fs::absolute(out).string() + "/seed-" + std::to_string(seed);

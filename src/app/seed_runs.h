@@ -20,6 +20,9 @@ struct SeedRunsOptions {
 
 /// The folder of one seed's run.
 std::string SeedRunFolder(const std::string& out, uint64_t seed);
+/// The shell command that reruns one seed alone as the spec ran it (its workdir, experiment,
+/// ticks, --set and run folder), without the test's --quiet and --threads 1.
+std::string RerunCommand(const TestSpec& spec, uint64_t seed, const std::string& out);
 /// Runs every seed of `spec`; one outcome per seed, in the spec's order.
 std::vector<SeedOutcome> RunSeeds(const TestSpec& spec, const SeedRunsOptions& options);
 

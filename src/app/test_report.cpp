@@ -48,12 +48,27 @@ std::string TestCase(const TestReport& report, const ReportRow& row) {
   std::string message = row.value + (row.failed_seeds.empty() ? "" : "; seeds " + SeedList(row.failed_seeds));
   std::string body;
   for (const std::string& d : row.details) body += d + "\n";
-  return xml + ">\n      <failure type=\"expectation\" message=\"" + XmlEscaped(message) + "\">" + XmlEscaped(body) +
+  const char* type = row.spec_error ? "spec" : "expectation";
+  return xml + ">\n      <failure type=\"" + type + "\" message=\"" + XmlEscaped(message) + "\">" + XmlEscaped(body) +
          "</failure>\n    </testcase>\n";
 }
 }  // namespace
 
 bool TestReport::Passed() const { return Failures(*this) == 0; }
+
+TestReport SpecErrorReport(const std::string& spec_file, const std::string& suite,
+                           const std::vector<std::string>& errors) {
+  TestReport report;
+  report.suite = suite;
+  report.spec_file = spec_file;
+  ReportRow row;
+  row.expectation = "the spec " + spec_file + " reads";
+  row.value = std::to_string(errors.size()) + " error(s) in the spec: nothing was run";
+  row.details = errors;
+  row.spec_error = true;
+  report.rows.push_back(row);
+  return report;
+}
 
 std::string FormatReport(const TestReport& report) {
   size_t width_e = 11, width_v = 5;
@@ -64,13 +79,21 @@ std::string FormatReport(const TestReport& report) {
   std::string out = Padded("expectation", width_e) + "  " + Padded("value", width_v) + "  verdict  failed seeds\n";
   for (const ReportRow& row : report.rows) {
     out += Padded(row.expectation, width_e) + "  " + Padded(row.value, width_v) + "  " +
-           (row.pass ? "pass     " : "FAIL     ") + (row.pass ? "" : SeedList(row.failed_seeds)) + "\n";
+           (row.pass         ? "pass     "
+            : row.spec_error ? "ERROR    "
+                             : "FAIL     ") +
+           (row.pass ? "" : SeedList(row.failed_seeds)) + "\n";
     for (const std::string& d : row.details) out += "    " + d + "\n";
   }
   size_t failed = Failures(report);
-  char line[160];
+  auto mistakes =
+      std::count_if(report.rows.begin(), report.rows.end(), [](const ReportRow& r) { return r.spec_error; });
+  char line[200];
   std::snprintf(line, sizeof line, "%s: %zu of %zu expectations hold (%.1f s): %s\n", report.spec_file.c_str(),
-                report.rows.size() - failed, report.rows.size(), report.seconds, failed ? "FAILED" : "passed");
+                report.rows.size() - failed, report.rows.size(), report.seconds,
+                mistakes ? "the spec has mistakes (ERROR rows)"
+                : failed ? "FAILED"
+                         : "passed");
   return out + line;
 }
 

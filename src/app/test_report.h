@@ -13,6 +13,7 @@ struct ReportRow {
   bool pass = false;
   std::vector<uint64_t> failed_seeds;
   std::vector<std::string> details;  // printed under the row (why runs failed, golden differences)
+  bool spec_error = false;           // a mistake of the spec (a value no run produced), not of the runs
 };
 
 struct TestReport {
@@ -25,6 +26,9 @@ struct TestReport {
 
 /// The table, as printed on stdout.
 std::string FormatReport(const TestReport& report);
+/// The report of a spec that cannot be run: one failed row carrying its errors.
+TestReport SpecErrorReport(const std::string& spec_file, const std::string& suite,
+                           const std::vector<std::string>& errors);
 /// The JUnit XML text (the schema CI dashboards read: testsuites/testsuite/testcase/failure).
 std::string JUnitXml(const TestReport& report);
 

@@ -21,11 +21,13 @@ struct SpecExpectation {
 };
 
 struct TestSpec {
-  std::string file;        // the spec as given on the command line
-  std::string name;        // its file name without .toml: the JUnit suite's name
-  std::string experiment;  // the .argos file, relative to the spec's folder when written so
-  std::string workdir;     // where each run's process starts (default: the spec's folder)
-  uint64_t ticks = 0;      // 0: the experiment's own length
+  std::string file;         // the spec as given on the command line
+  std::string name;         // its file name without .toml: the JUnit suite's name
+  std::string experiment;   // the .argos file, relative to the spec's folder when written so
+  std::string workdir;      // where each run's process starts (default: the spec's folder)
+  int experiment_line = 0;  // where the spec gives them (0: not given)
+  int workdir_line = 0;
+  uint64_t ticks = 0;  // 0: the experiment's own length
   std::vector<uint64_t> seeds;
   std::vector<SpecSetting> sets;
   std::vector<SpecExpectation> expectations;

@@ -27,6 +27,8 @@ struct SpecReader {
     errors->push_back(path + ":" + std::to_string(line) + ": " + message);
   }
 
+  static int LineOf(const toml::node* node) { return node ? static_cast<int>(node->source().begin.line) : 0; }
+
   /// A whole number in [min, max] under `key`, or `fallback` when the key is absent.
   int64_t Integer(const toml::table& t, const char* key, int64_t min, int64_t max, int64_t fallback) {
     const toml::node* node = t.get(key);
@@ -115,6 +117,8 @@ struct SpecReader {
   void Read(const toml::table& t) {
     UnknownKeys(t);
     std::string folder = DirName(path);
+    spec->experiment_line = LineOf(t.get("experiment"));
+    spec->workdir_line = LineOf(t.get("workdir"));
     spec->experiment = Text(t, "experiment");
     if (spec->experiment.empty()) Error(nullptr, "experiment: missing (the .argos file, relative to this file)");
     if (!spec->experiment.empty()) spec->experiment = JoinPath(folder, spec->experiment);
@@ -138,6 +142,33 @@ struct SpecReader {
   }
 };
 
+/// toml++'s description of a syntax error, said in words a spec's writer acts on.
+std::string SyntaxInWords(const std::string& raw) {
+  static const std::vector<std::pair<std::string, std::string>> kWords = {
+      {"unescaped control characters", "a string has no closing quote (a \"...\" ends on the line it starts)"},
+      {"could not determine value type",
+       "the value after '=' is not a number, true/false, a \"string\" in quotes or a [list]"},
+      {"array: encountered end-of-file", "a list opened with '[' is never closed with ']'"},
+      {"cannot redefine existing", "this key is given a second time"},
+      {"expected comma or closing ']'", "a comma is missing between two items of the list (or its ']')"},
+      {"expected value, saw", "'=' has no value after it"},
+      {"expected a comment or whitespace", "something follows the value on this line (one KEY = VALUE per line)"},
+  };
+  for (const auto& [pattern, words] : kWords)
+    if (raw.find(pattern) != std::string::npos) return "TOML syntax: " + words;
+  const size_t colon = raw.find(": ");  // "Error while parsing X: detail"
+  return "TOML syntax: " + (colon == std::string::npos ? raw : raw.substr(colon + 2));
+}
+
+/// FILE:LINE:COL: the syntax error in words, then the line as written.
+std::string SyntaxError(const std::string& path, const std::string& text, const toml::parse_error& e) {
+  const auto line = static_cast<size_t>(e.source().begin.line);
+  std::vector<std::string> lines = Split(text, '\n');
+  std::string written = line >= 1 && line <= lines.size() ? Trim(lines[line - 1]) : "";
+  return path + ":" + std::to_string(line) + ":" + std::to_string(e.source().begin.column) + ": " +
+         SyntaxInWords(std::string(e.description())) + (written.empty() ? "" : ": " + written);
+}
+
 std::string StemOf(const std::string& path) {
   std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
   if (name.size() > 5 && name.compare(name.size() - 5, 5, ".toml") == 0) name.resize(name.size() - 5);
@@ -157,7 +188,7 @@ bool LoadTestSpec(const std::string& path, TestSpec* spec, std::vector<std::stri
     toml::table table = toml::parse(text, path);
     SpecReader{path, spec, errors}.Read(table);
   } catch (const toml::parse_error& e) {
-    errors->push_back(path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+    errors->push_back(SyntaxError(path, text, e));
   }
   return errors->empty();
 }
