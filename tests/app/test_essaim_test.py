@@ -10,7 +10,7 @@ pytestmark = need_essaim
 # Each run's metrics are its seed, so every statistic over seeds 1..10 is known exactly.
 LOOP = """
 function post_experiment()
-  return {seed = experiment.seed, even = experiment.seed % 2 == 0}
+  return {seed = experiment.seed, even = experiment.seed % 2 == 0, odd_only = experiment.seed % 2 == 1 or nil}
 end
 """
 CONTROLLER = "function init() end\nfunction step() robot.wheels.set_velocity(5, 5) end\n"
@@ -42,7 +42,7 @@ def test_statistics_over_seeds_and_the_seeds_that_fail(tmp_path):
     expect = ["mean seed == 5.5", "median seed == 5.5", "min seed == 1", "max seed == 10",
               "quantile(0.1) seed > 1.89", "quantile(0.1) seed < 1.91", "fraction(seed <= 8) >= 0.8",
               "mean even == 0.5", "each errors == 0", "each ticks == 5",
-              "fraction(seed <= 8) > 0.8", "each seed < 10", "mean absent > 0"]
+              "fraction(seed <= 8) > 0.8", "each seed < 10", "mean odd_only > 0"]
     project(tmp_path, spec_text(expect))
     r = essaim("test", "x.test.toml", "-j", "3", "--junit", "out.xml", cwd=tmp_path)
     assert r.returncode == 1, r.stdout + r.stderr
@@ -52,7 +52,8 @@ def test_statistics_over_seeds_and_the_seeds_that_fail(tmp_path):
     assert table["every run finishes (exit 0)"][1] == "pass"
     assert table["fraction(seed <= 8) > 0.8"] == ("0.8 (8/10)", "FAIL", "9, 10")
     assert table["each seed < 10"] == ("9/10 runs", "FAIL", "10")
-    assert table["mean absent > 0"][1] == "FAIL"
+    assert table["mean odd_only > 0"] == ("'odd_only' missing in 5 run(s)", "FAIL", "2, 4, 6, 8, 10")
+    assert "x.test.toml:18: seed 2: metrics.json has no 'odd_only'" in r.stdout  # a value only some runs lack
     assert "3 expectations" not in r.stdout and "11 of 14 expectations hold" in r.stdout
 
     root = ET.parse(tmp_path / "out.xml").getroot()
@@ -62,7 +63,7 @@ def test_statistics_over_seeds_and_the_seeds_that_fail(tmp_path):
     assert suite.get("name") == "x.test" and int(suite.get("tests")) == len(cases) == 14
     failed = [c for c in cases if c.find("failure") is not None]
     assert int(suite.get("failures")) == len(failed) == 3
-    assert {c.get("name") for c in failed} == {"fraction(seed <= 8) > 0.8", "each seed < 10", "mean absent > 0"}
+    assert {c.get("name") for c in failed} == {"fraction(seed <= 8) > 0.8", "each seed < 10", "mean odd_only > 0"}
     assert "seeds 9, 10" in [c for c in failed if c.get("name").startswith("fraction")][0].find("failure").get("message")
 
 
@@ -145,4 +146,4 @@ def test_a_run_past_the_specs_timeout_is_stopped_and_failed(tmp_path):
 def test_a_missing_workdir_is_a_spec_error(tmp_path):
     project(tmp_path, spec_text(["each errors == 0"], extra='workdir = "nowhere"'))
     r = essaim("test", "x.test.toml", cwd=tmp_path)
-    assert r.returncode == 2 and "x.test.toml: workdir nowhere does not exist" in r.stderr
+    assert r.returncode == 2 and "x.test.toml:4: workdir nowhere does not exist" in r.stderr
