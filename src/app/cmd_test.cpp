@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <thread>
 
 #include "app/cli_support.h"
@@ -108,8 +109,9 @@ TestReport Check(const TestSpec& spec, const std::vector<Expectation>& expectati
     report.rows.push_back({e.text, v.value, v.pass, v.failed_seeds, details});
   }
   if (!spec.golden.empty()) report.rows.push_back(GoldenRow(spec, runs, args));
-  for (ReportRow& row : report.rows)  // how to look at one failed run alone
-    if (!row.pass && !row.failed_seeds.empty())
+  std::set<uint64_t> shown;  // how to look at one failed run alone, said once per seed
+  for (ReportRow& row : report.rows)
+    if (!row.pass && !row.failed_seeds.empty() && shown.insert(row.failed_seeds.front()).second)
       row.details.push_back("rerun seed " + std::to_string(row.failed_seeds.front()) +
                             " alone: " + RerunCommand(spec, row.failed_seeds.front(), args.out));
   return report;

@@ -138,7 +138,8 @@ Verdict Evaluate(const Expectation& e, const std::vector<SeedOutcome>& runs) {
     std::optional<double> v = RunValue(run, e.value, &why);
     if (v) values.push_back(*v), seeds.push_back(run.seed);
     if (!v) missing.push_back(run.seed);
-    if (!v && !why.empty()) notes.push_back("seed " + std::to_string(run.seed) + ": " + why);
+    if (!v && !why.empty() && run.failure.empty())  // a failed run is explained by the first row
+      notes.push_back("seed " + std::to_string(run.seed) + ": " + why);
   }
   if (e.aggregate == Aggregate::Each || e.aggregate == Aggregate::Fraction) {
     Verdict v = CountRuns(e, values, seeds, missing);
