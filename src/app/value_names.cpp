@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/file_column.h"
+#include "core/paths.h"
 #include "core/strings.h"
 
 namespace essaim {
@@ -54,22 +55,49 @@ std::vector<std::string> NamesIn(const std::vector<SeedOutcome>& runs) {
   return names;
 }
 
+/// The columns of the run's timeseries.csv (its header row), if it wrote one.
+std::vector<std::string> TimeSeriesColumns(const SeedOutcome& run) {
+  std::string text;
+  if (run.folder.empty() || !ReadFile(run.folder + "/timeseries.csv", &text)) return {};
+  std::vector<std::string> columns;
+  for (const std::string& c : Split(text.substr(0, text.find('\n')), ',')) columns.push_back(Trim(c));
+  return columns;
+}
+
+/// A name the runs wrote where an expectation cannot read it: a column of timeseries.csv.
+std::string TimeSeriesHint(const std::string& bare, const std::vector<SeedOutcome>& finished) {
+  std::vector<std::string> columns = TimeSeriesColumns(finished.front());
+  std::string column =
+      std::find(columns.begin(), columns.end(), bare) != columns.end() ? bare : ClosestName(bare, columns);
+  if (column.empty()) return "";
+  return "; '" + column + "' is a column of timeseries.csv, which an expectation does not read: return it " +
+         "from post_experiment() to make it a metric";
+}
+
+/// "(A, B, C)": the first keys of an object, for a hint.
+std::string KeysOf(const std::string& name, const Value& object) {
+  std::string keys;
+  for (size_t i = 0; i < object.map.size() && i < 3; ++i) keys += (i ? ", " : "") + name + "." + object.map[i].first;
+  return keys.empty() ? name + ".KEY" : keys;
+}
+
 /// One side of a ratio that no run produced: the message, or "".
 std::string UnknownName(const std::string& name, const std::vector<SeedOutcome>& finished) {
   if (IsBuiltIn(name)) return "";
   for (const SeedOutcome& run : finished)
     if (WhyNoValue(run, name).empty()) return "";
-  const char* file = SourceOf(finished.front(), name).file;
+  const Source first = SourceOf(finished.front(), name);
+  const Value* found = Lookup(*first.root, first.key);
+  if (found && found->kind == Value::Kind::Map)
+    return "'" + name + "' is an object in " + first.file + ", not a number: name one of its keys (" +
+           KeysOf(name, *found) + ")";
   bool any_file = std::any_of(finished.begin(), finished.end(),
                               [&](const SeedOutcome& r) { return !SourceOf(r, name).root->IsNull(); });
-  const Value* found = Lookup(*SourceOf(finished.front(), name).root, SourceOf(finished.front(), name).key);
-  if (found && found->kind == Value::Kind::Map)
-    return "'" + name + "' is an object in " + file + ", not a number: name one of its keys (" + name + ".KEY)";
-  std::vector<std::string> names = NamesIn(finished);
+  std::string where = any_file ? std::string(first.file) : "the runs wrote no " + std::string(first.file);
   std::string bare = name.rfind("metrics.", 0) == 0 ? name.substr(8) : name;
-  std::string hint = ClosestName(bare, names);
-  std::string where = any_file ? std::string(file) : "the runs wrote no " + std::string(file);
-  return "no run produced '" + name + "' (" + where + ")" + (hint.empty() ? "" : "; did you mean '" + hint + "'?");
+  std::string hint = ClosestName(bare, NamesIn(finished));
+  return "no run produced '" + name + "' (" + where + ")" +
+         (hint.empty() ? TimeSeriesHint(bare, finished) : "; did you mean '" + hint + "'?");
 }
 }  // namespace
 

@@ -33,15 +33,18 @@ def test_a_metric_no_run_produced_is_a_spec_error_with_the_closest_name(tmp_path
     assert {(name, kind) for name, kind, _ in failures} == {(e, "spec") for e in expect[1:4]}
 
 
-def test_a_metric_of_an_object_says_to_name_a_key(tmp_path):
-    project(tmp_path, spec_text(["each errors == 0"]))
-    write(tmp_path, {"loop.lua": "function post_experiment() return {per = {A = 1}} end\n",
-                     "x.test.toml": spec_text(["each per > 0", "each per.A == 1"])})
+def test_an_object_or_a_time_series_column_named_as_a_metric_gets_its_own_hint(tmp_path):
+    project(tmp_path, "")
+    loop = ('function post_step() experiment.timeseries({{"alive", 3}}) end\n'
+            "function post_experiment() return {per = {A = 1, B = 2}} end\n")
+    write(tmp_path, {"loop.lua": loop, "x.test.toml": spec_text(["each per > 0", "each per.A == 1", "mean alive > 2"])})
     r = essaim("test", "x.test.toml", cwd=tmp_path)
-    assert r.returncode == 2
+    assert r.returncode == 2, r.stdout + r.stderr
     assert "x.test.toml:6: expect \"each per > 0\": 'per' is an object in metrics.json, not a number: " \
-           "name one of its keys (per.KEY)" in r.stderr
-    assert "per.A" not in r.stderr
+           "name one of its keys (per.A, per.B)" in r.stderr
+    assert "x.test.toml:8: expect \"mean alive > 2\": no run produced 'alive' (metrics.json); 'alive' is a " \
+           "column of timeseries.csv, which an expectation does not read" in r.stderr
+    assert "x.test.toml:7" not in r.stderr and rows(r.stdout.replace("  ERROR ", "  FAIL "))["each per.A == 1"][1] == "pass"
 
 
 def test_every_mistake_of_a_spec_at_once_with_its_line_and_junit(tmp_path):
