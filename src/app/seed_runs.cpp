@@ -140,11 +140,12 @@ std::string ShellQuoted(const std::string& arg) {
   return quoted + "'";
 }
 
-/// `path` as written from `from` (both made absolute): relative when below or beside it.
+/// `path` as written from `from`: relative when below it, else absolute (no ../.. to count).
 std::string FromFolder(const std::string& path, const fs::path& from) {
   std::error_code ec;
   fs::path rel = fs::relative(fs::absolute(path), from, ec);
-  return ec || rel.empty() ? fs::absolute(path).string() : rel.string();
+  if (ec || rel.empty() || rel.string().rfind("..", 0) == 0) return fs::weakly_canonical(path, ec).string();
+  return rel.string();
 }
 }  // namespace
 
@@ -157,9 +158,10 @@ std::string RerunCommand(const TestSpec& spec, uint64_t seed, const std::string&
   if (spec.ticks) args.insert(args.end(), {"--ticks", std::to_string(spec.ticks)});
   args.insert(args.end(), {"--out", FromFolder(SeedRunFolder(out, seed), workdir)});
   for (const SpecSetting& s : spec.sets) args.insert(args.end(), {"--set", s.path + "=" + s.value});
-  std::string line = same ? "" : "cd " + ShellQuoted(FromFolder(workdir.string(), here)) + " && ";
+  std::string line;
   for (size_t i = 0; i < args.size(); ++i) line += (i ? " " : "") + ShellQuoted(args[i]);
-  return line;
+  // In a subshell, so that the user's shell stays where it is.
+  return same ? line : "(cd " + ShellQuoted(FromFolder(workdir.string(), here)) + " && " + line + ")";
 }
 
 std::string SeedRunFolder(const std::string& out, uint64_t seed) {

@@ -1,6 +1,6 @@
 """The mistakes of an `essaim test` spec, as a new user makes them (docs/testing.md): each
 named with its line and a hint, all at once, in --junit too; a failed seed's rerun command."""
-import shlex
+import os
 import subprocess
 import xml.etree.ElementTree as ET
 
@@ -79,6 +79,24 @@ def test_a_toml_syntax_error_is_said_in_words_with_line_and_column(tmp_path):
     assert r.stderr.startswith("x.test.toml:2:30: TOML syntax: a comma is missing between two items of the list")
 
 
+def rerun_command(stdout, seed):
+    [command] = [ln.split("alone: ", 1)[1] for ln in stdout.splitlines() if f"rerun seed {seed} alone: " in ln]
+    return command
+
+
+def reruns_the_same(command, folder, cwd, tmp_path):
+    """The command, run by a shell with essaim on PATH, writes the seed's metrics again."""
+    first = (folder / "metrics.json").read_text()
+    (folder / "metrics.json").unlink()
+    (tmp_path / "bin").mkdir(exist_ok=True)
+    if not (tmp_path / "bin" / "essaim").exists():
+        (tmp_path / "bin" / "essaim").symlink_to(ESSAIM)
+    env = dict(os.environ, PATH=f"{tmp_path / 'bin'}:{os.environ['PATH']}")
+    r = subprocess.run(["bash", "-c", command], cwd=cwd, env=env, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return (folder / "metrics.json").read_text() == first
+
+
 def test_a_failed_seed_prints_the_command_that_reruns_it_alone(tmp_path):
     (tmp_path / "tests").mkdir()
     spec = spec_text(["each seed < 3"], extra='workdir = ".."').replace('"x.argos"', '"../x.argos"')
@@ -86,14 +104,16 @@ def test_a_failed_seed_prints_the_command_that_reruns_it_alone(tmp_path):
     write(tmp_path, {"tests/x.test.toml": spec + '[set]\n"framework.experiment.length" = 3\n'})
     r = essaim("test", "tests/x.test.toml", "-j", "2", cwd=tmp_path)
     assert r.returncode == 1
-    [command] = [ln.split("alone: ", 1)[1] for ln in r.stdout.splitlines() if "rerun seed 3 alone: " in ln]
+    command = rerun_command(r.stdout, 3)
     assert command == "essaim run x.argos --seed 3 --ticks 5 --out essaim-test/x.test/seed-3 " \
                       "--set framework.experiment.length=3", command
-    first = (tmp_path / "essaim-test/x.test/seed-3/metrics.json").read_text()
-    (tmp_path / "essaim-test/x.test/seed-3/metrics.json").unlink()
-    argv = shlex.split(command)
-    assert subprocess.run([ESSAIM, *argv[1:]], cwd=tmp_path, capture_output=True).returncode == 0
-    assert (tmp_path / "essaim-test/x.test/seed-3/metrics.json").read_text() == first
+    assert r.stdout.count("rerun seed") == 1
+    assert reruns_the_same(command, tmp_path / "essaim-test/x.test/seed-3", tmp_path, tmp_path)
+    # From another folder than the spec's workdir: the command goes there in a subshell.
+    r = essaim("test", "x.test.toml", cwd=tmp_path / "tests")
+    command = rerun_command(r.stdout, 3)
+    assert command.startswith(f"(cd {tmp_path.resolve()} && essaim run x.argos --seed 3 ") and command.endswith(")")
+    assert reruns_the_same(command, tmp_path / "tests/essaim-test/x.test/seed-3", tmp_path / "tests", tmp_path)
 
 
 def test_a_correct_spec_still_passes_with_no_hint(tmp_path):
