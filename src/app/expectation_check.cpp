@@ -99,6 +99,7 @@ Verdict CountRuns(const Expectation& e, const std::vector<double>& values, const
   v.failed_seeds = std::move(failed);
   return v;
 }
+
 /// errors, ticks, summary.KEY, metrics.KEY or KEY.
 std::optional<double> NamedValue(const SeedOutcome& run, const std::string& name) {
   if (name == "errors") return ErrorCount(run);

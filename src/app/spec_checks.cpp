@@ -78,10 +78,15 @@ void CheckSpec(const TestSpec& spec, std::vector<Expectation>* expectations, std
 }
 
 std::string UnknownValueInSpec(const TestSpec& spec, const Expectation& e, const std::vector<SeedOutcome>& runs) {
-  std::vector<SeedOutcome> finished;
-  for (const SeedOutcome& run : runs)
-    if (run.failure.empty()) finished.push_back(run);
-  std::string error = UnknownValueError(e.value, finished);
+  // Judged only when a run finished (else nothing tells a typo from a failure), on every run
+  // that left its outputs: a value that a failed run wrote is no typo.
+  std::vector<SeedOutcome> summarised;
+  bool finished = false;
+  for (const SeedOutcome& run : runs) {
+    finished = finished || run.failure.empty();
+    if (!run.summary.IsNull()) summarised.push_back(run);
+  }
+  std::string error = finished ? UnknownValueError(e.value, summarised) : "";
   return error.empty() ? "" : At(spec, e.line) + "expect \"" + e.text + "\": " + error;
 }
 

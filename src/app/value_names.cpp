@@ -65,8 +65,8 @@ std::vector<std::string> TimeSeriesColumns(const SeedOutcome& run) {
 }
 
 /// A name the runs wrote where an expectation cannot read it: a column of timeseries.csv.
-std::string TimeSeriesHint(const std::string& bare, const std::vector<SeedOutcome>& finished) {
-  std::vector<std::string> columns = TimeSeriesColumns(finished.front());
+std::string TimeSeriesHint(const std::string& bare, const std::vector<SeedOutcome>& runs) {
+  std::vector<std::string> columns = TimeSeriesColumns(runs.front());
   std::string column =
       std::find(columns.begin(), columns.end(), bare) != columns.end() ? bare : ClosestName(bare, columns);
   if (column.empty()) return "";
@@ -82,22 +82,24 @@ std::string KeysOf(const std::string& name, const Value& object) {
 }
 
 /// One side of a ratio that no run produced: the message, or "".
-std::string UnknownName(const std::string& name, const std::vector<SeedOutcome>& finished) {
+std::string UnknownName(const std::string& name, const std::vector<SeedOutcome>& runs) {
   if (IsBuiltIn(name)) return "";
-  for (const SeedOutcome& run : finished)
+  for (const SeedOutcome& run : runs)
     if (WhyNoValue(run, name).empty()) return "";
-  const Source first = SourceOf(finished.front(), name);
-  const Value* found = Lookup(*first.root, first.key);
-  if (found && found->kind == Value::Kind::Map)
-    return "'" + name + "' is an object in " + first.file + ", not a number: name one of its keys (" +
-           KeysOf(name, *found) + ")";
-  bool any_file = std::any_of(finished.begin(), finished.end(),
-                              [&](const SeedOutcome& r) { return !SourceOf(r, name).root->IsNull(); });
+  const Source first = SourceOf(runs.front(), name);
+  for (const SeedOutcome& run : runs) {
+    const Value* found = Lookup(*SourceOf(run, name).root, first.key);
+    if (found && found->kind == Value::Kind::Map)
+      return "'" + name + "' is an object in " + first.file + ", not a number: name one of its keys (" +
+             KeysOf(name, *found) + ")";
+  }
+  bool any_file =
+      std::any_of(runs.begin(), runs.end(), [&](const SeedOutcome& r) { return !SourceOf(r, name).root->IsNull(); });
   std::string where = any_file ? std::string(first.file) : "the runs wrote no " + std::string(first.file);
   std::string bare = name.rfind("metrics.", 0) == 0 ? name.substr(8) : name;
-  std::string hint = ClosestName(bare, NamesIn(finished));
+  std::string hint = ClosestName(bare, NamesIn(runs));
   return "no run produced '" + name + "' (" + where + ")" +
-         (hint.empty() ? TimeSeriesHint(bare, finished) : "; did you mean '" + hint + "'?");
+         (hint.empty() ? TimeSeriesHint(bare, runs) : "; did you mean '" + hint + "'?");
 }
 }  // namespace
 
@@ -111,12 +113,12 @@ std::string WhyNoValue(const SeedOutcome& run, const std::string& name) {
   return "";
 }
 
-std::string UnknownValueError(const std::string& value, const std::vector<SeedOutcome>& finished) {
-  if (finished.empty()) return "";
+std::string UnknownValueError(const std::string& value, const std::vector<SeedOutcome>& runs) {
+  if (runs.empty()) return "";
   const size_t slash = RatioSlash(value);
-  if (slash == std::string::npos) return UnknownName(value, finished);
-  std::string a = UnknownName(value.substr(0, slash), finished);
-  std::string b = UnknownName(value.substr(slash + 1), finished);
+  if (slash == std::string::npos) return UnknownName(value, runs);
+  std::string a = UnknownName(value.substr(0, slash), runs);
+  std::string b = UnknownName(value.substr(slash + 1), runs);
   return a.empty() ? b : b.empty() ? a : a + "; " + b;
 }
 

@@ -12,9 +12,8 @@ namespace essaim {
 
 /// Why `name` (one side of a ratio, not a file column) has no number in `run`; "" when it has.
 std::string WhyNoValue(const SeedOutcome& run, const std::string& name);
-/// For a VALUE (A/B included) that none of `finished` (runs that exited 0) produced: the
-/// message naming it, with the closest name they did produce. "" when some run has it, or
-/// when no run finished (then nothing tells a typo from a failure).
-std::string UnknownValueError(const std::string& value, const std::vector<SeedOutcome>& finished);
+/// For a VALUE (A/B included) that none of `runs` produced: the message naming it, with the
+/// closest name they did produce. "" when some run has it, or when `runs` is empty.
+std::string UnknownValueError(const std::string& value, const std::vector<SeedOutcome>& runs);
 
 }  // namespace essaim

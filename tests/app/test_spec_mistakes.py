@@ -121,3 +121,14 @@ def test_a_correct_spec_still_passes_with_no_hint(tmp_path):
     r = essaim("test", "x.test.toml", "-j", "2", "--junit", "out.xml", cwd=tmp_path)
     assert r.returncode == 0 and r.stderr == "" and "rerun" not in r.stdout, r.stdout + r.stderr
     assert junit_failures(tmp_path / "out.xml") == []
+
+
+def test_when_no_run_finished_a_missing_value_is_not_called_a_typo(tmp_path):
+    broken = "error('does not load')\n"  # every run fails before any metric: nothing to judge names by
+    project(tmp_path, spec_text(["mean sed > 0"]).replace("seeds = 10", "seeds = 2"), broken)
+    r = essaim("test", "x.test.toml", cwd=tmp_path)
+    assert r.returncode == 1, r.stdout + r.stderr
+    table = rows(r.stdout)
+    assert table["every run finishes (exit 0)"][1] == table["mean sed > 0"][1] == "FAIL"
+    assert "ERROR" not in r.stdout and "did you mean" not in r.stdout + r.stderr
+    assert "rerun seed 1 alone: essaim run x.argos --seed 1 --ticks 5 --out essaim-test/x.test/seed-1" in r.stdout
