@@ -240,3 +240,20 @@ def test_runs_die_with_a_killed_sweep(tmp_path):
     while any(_alive(pid) for pid in pids) and time.time() < deadline:
         time.sleep(0.1)
     assert not any(_alive(pid) for pid in pids)
+
+
+def test_without_essaim_on_path_the_checkouts_build_is_used(tmp_path, monkeypatch):
+    """Tutorial §3 from a shell with no `essaim` on PATH: the checkout's build/essaim runs."""
+    built = tmp_path / "build" / "essaim"
+    built.parent.mkdir()
+    built.write_text("#!/bin/sh\n")
+    built.chmod(0o755)
+    s = write_sweep(tmp_path / "s.toml", seeds=1)
+    monkeypatch.setenv("PATH", str(tmp_path / "empty"))
+    monkeypatch.delenv("ESSAIM", raising=False)
+    monkeypatch.setattr(sweep, "PROJECT_ESSAIM", built)
+    assert sweep.resolve_essaim(None, sweep.load_sweep(s), remote=False) == str(built)
+    built.unlink()  # not built either: the message says what to do
+    with pytest.raises(sweep.SweepError, match="is not on PATH and .*build/essaim is not built: run "
+                                               "bash scripts/setup.sh"):
+        sweep.resolve_essaim(None, sweep.load_sweep(s), remote=False)
