@@ -23,7 +23,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -36,7 +35,7 @@ STUDY_NAME = "essaim"
 
 # The run-identity check is sweep.py's (same hash, same causes).
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from sweep import InputHashes, stale_causes  # noqa: E402
+from sweep import InputHashes, default_essaim, stale_causes  # noqa: E402
 
 
 class StudyError(Exception):
@@ -136,7 +135,7 @@ def run_once(experiment: str, workdir: str, overrides: dict, seed: int, ticks, e
         except essaim.Error as e:
             raise RunFailed(str(e)) from None
     else:
-        exe = essaim_bin or shutil.which("essaim") or str(Path(workdir) / "build" / "essaim")
+        exe = essaim_bin or default_essaim() or str(Path(workdir) / "build" / "essaim")
         with tempfile.TemporaryDirectory(prefix="essaim-opt-") as out:
             cmd = [exe, "run", experiment, "--quiet", "--seed", str(seed), "--threads", "1", "--out", out]
             if ticks:
@@ -346,7 +345,7 @@ def current_version(essaim_bin: str | None) -> str | None:
             return essaim.__version__
         except ImportError:
             pass
-    exe = essaim_bin or shutil.which("essaim")
+    exe = essaim_bin or default_essaim()
     if not exe:
         return None
     from sweep import essaim_version

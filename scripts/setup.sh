@@ -28,7 +28,7 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DESSAIM_PYTHON="$PWD/.venv/bin/python3" > /dev/null
 cmake --build build
-# `import essaim` in the venv: a .pth file puts build/python (the module) on its path.
-site=$(.venv/bin/python3 -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
-echo "$PWD/build/python" > "$site/essaim-build.pth"
-echo "essaim setup: built build/essaim and the Python module (.venv/bin/python -c 'import essaim')"
+# `essaim` on PATH (a link in /usr/local/bin as root, else ~/.local/bin) and `import essaim`
+# in the venv.
+bash scripts/link_build.sh
+echo "essaim setup: built build/essaim (also \`essaim\` on PATH) and the Python module (.venv/bin/python -c 'import essaim')"

@@ -894,8 +894,20 @@ def run_dask(sweep: Sweep, todo: list[Run], essaim: str, scheduler: str, on_done
 # Command line
 
 
+# This checkout's own build (scripts/setup.sh makes it): used when `essaim` is not on PATH.
+PROJECT_ESSAIM = Path(__file__).resolve().parent.parent / "build" / "essaim"
+
+
+def default_essaim() -> str | None:
+    """`essaim` on PATH, else this checkout's build/essaim; None when neither is there."""
+    if shutil.which("essaim"):
+        return shutil.which("essaim")
+    return str(PROJECT_ESSAIM) if os.access(PROJECT_ESSAIM, os.X_OK) else None
+
+
 def resolve_essaim(cli: str | None, sweep: Sweep, remote: bool) -> str:
-    """--essaim, else $ESSAIM, else the sweep file's `essaim`, else `essaim` on PATH."""
+    """--essaim, else $ESSAIM, else the sweep file's `essaim`, else `essaim` on PATH, else
+    this checkout's build/essaim."""
     cand = cli or os.environ.get("ESSAIM") or sweep.essaim or "essaim"
     if "/" in cand:
         cand = os.path.abspath(cand)
@@ -904,9 +916,10 @@ def resolve_essaim(cli: str | None, sweep: Sweep, remote: bool) -> str:
         return cand
     if remote:
         return cand  # looked up on the workers' PATH
-    found = shutil.which(cand)
+    found = shutil.which(cand) or (default_essaim() if cand == "essaim" else None)
     if not found:
-        raise SweepError(f"`{cand}` is not on PATH: pass --essaim PATH or set $ESSAIM")
+        raise SweepError(f"`{cand}` is not on PATH and {PROJECT_ESSAIM} is not built: run "
+                         "bash scripts/setup.sh, or pass --essaim PATH or set $ESSAIM")
     return found
 
 
@@ -920,8 +933,8 @@ def parse_args(argv):
     ap.add_argument("--scheduler", metavar="ADDR",
                     help="run on a Dask cluster, e.g. tcp://host:8786 (-j is then ignored)")
     ap.add_argument("--essaim", metavar="PATH",
-                    help="the essaim binary (default: $ESSAIM, the sweep file's `essaim`, or "
-                         "`essaim` on PATH)")
+                    help="the essaim binary (default: $ESSAIM, the sweep file's `essaim`, "
+                         "`essaim` on PATH, or this checkout's build/essaim)")
     ap.add_argument("--out", metavar="DIR",
                     help="output folder (default: the sweep file's `out`, relative to it)")
     ap.add_argument("--dry-run", action="store_true",

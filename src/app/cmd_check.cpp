@@ -16,6 +16,7 @@
 #include "app/signals.h"
 #include "lua/host/watchdog.h"
 #include "sim/error_groups.h"
+#include "sim/loop_hooks.h"
 #include "sim/step.h"
 
 namespace essaim {
@@ -57,6 +58,24 @@ void CheckSteps(World& world, uint64_t ticks, std::string* problems) {
   }
   if (!world.failure.empty()) *problems += world.failure + "\n";
   if (status != StepStatus::Failed) *problems += FormatUnreadParams(FindUnreadParams(world), true);
+}
+
+/// A warning when nothing ends the run: no length (nor --ticks), and no loop functions that
+/// can (a misspelt length="..." did this silently). "" when something ends it.
+std::string NoEndWarning(const std::string& file, World& world) {
+  if (world.model.experiment.length_ticks != 0) return "";
+  const std::string head = file + ": warning: the run has no end: no length in <experiment> and no --ticks";
+  switch (LoopFunctionsEnd(world)) {
+    case LoopEnd::kFunction:
+      return "";
+    case LoopEnd::kUnknown:
+      return head + ", so it runs until Ctrl-C unless the loop functions end it (IsExperimentFinished)\n";
+    case LoopEnd::kNoFunction:
+      return head + ", and the loop functions define no is_experiment_finished(): it runs until Ctrl-C\n";
+    case LoopEnd::kNone:
+      break;
+  }
+  return head + ", and no loop functions: it runs until Ctrl-C\n";
 }
 
 /// A temporary folder removed with everything in it when the check ends: check's scripts
@@ -124,9 +143,10 @@ static int Check(RunArgs& r) {
                  static_cast<unsigned long long>(world->tick), sample.robots.size());
     return kExitBadInput;
   }
-  std::printf("%s: ok (%zu robots, %zu obstacles, %llu ticks; init() and %llu ticks run on %zu robots)\n",
-              r.file.c_str(), model->robots.size(), model->obstacles.size(),
-              static_cast<unsigned long long>(model->experiment.length_ticks),
+  if (!r.quiet) std::fputs(NoEndWarning(r.file, *world).c_str(), stderr);
+  std::printf("%s: ok (%zu robots, %zu obstacles, %s; init() and %llu ticks run on %zu robots)\n", r.file.c_str(),
+              model->robots.size(), model->obstacles.size(),
+              length ? (std::to_string(length) + " ticks").c_str() : "no length",
               static_cast<unsigned long long>(world->tick), sample.robots.size());
   return kExitOk;
 }

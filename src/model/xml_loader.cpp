@@ -92,6 +92,7 @@ class Loader {
 
   std::string ResolvePath(const std::string& rel) const;
   void ReportUnknownAttributes(const XMLElement* root);
+  std::string NoEndHint() const;
 
   // ---- sections
   void LoadFramework(const XMLElement* e);
@@ -1174,11 +1175,22 @@ void Loader::ReportUnknownAttributes(const XMLElement* root) {
   ledger_.ForEachUnknown(root, [&](const XMLElement* e, const std::string& name) {
     if (from_set.count({e, name})) return;
     std::string msg = "unknown attribute '" + name + "' (essaim does not read it)" + hint(e, name);
+    if (std::string(e->Name()) == "experiment") msg += NoEndHint();
     if (options_.strict)
       Error(e, msg);
     else
       Warn(e, msg);
   });
+}
+
+// A misspelt length (lenght="60") leaves the run with none: say so where the typo is named,
+// or the run goes on with nothing to tell why. Lua is not loaded yet: whether the loop
+// functions end the run is not known here.
+std::string Loader::NoEndHint() const {
+  if (model_->experiment.length_ticks != 0) return "";
+  const LoopFunctionsDef& lf = model_->loop_functions;
+  if (lf.script.empty() && !lf.Cpp()) return "; with no length, the run has no end (until Ctrl-C; --ticks N sets one)";
+  return "; with no length, the run has no end unless the loop functions end it";
 }
 
 void Loader::CheckReferences() {

@@ -12,6 +12,12 @@ bool LoopExperimentFinished(World& w, bool* finished, std::string* error) {
   return w.loop_functions.IsExperimentFinished(finished, error);
 }
 
+LoopEnd LoopFunctionsEnd(World& w) {
+  if (w.cpp_loop_functions.Loaded()) return LoopEnd::kUnknown;
+  if (!w.loop_functions.Loaded()) return LoopEnd::kNone;
+  return w.loop_functions.HasFunction("is_experiment_finished") ? LoopEnd::kFunction : LoopEnd::kNoFunction;
+}
+
 bool LoopPostExperiment(World& w, Value* metrics, bool* has_metrics, std::string* error) {
   if (!w.cpp_loop_functions.Loaded()) return w.loop_functions.PostExperiment(metrics, has_metrics, error);
   *has_metrics = false;

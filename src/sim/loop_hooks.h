@@ -11,6 +11,11 @@ namespace essaim {
 /// "init", "pre_step", "post_step", "reset", "destroy".
 bool CallLoopHook(World& w, const char* hook, std::string* error);
 bool LoopExperimentFinished(World& w, bool* finished, std::string* error);
+/// Whether the loop functions can end the run: none loaded, Lua ones with no
+/// is_experiment_finished(), Lua ones with it, or C++ ones (whose IsExperimentFinished is a
+/// virtual that cannot be seen overridden or not).
+enum class LoopEnd { kNone, kNoFunction, kFunction, kUnknown };
+LoopEnd LoopFunctionsEnd(World& w);
 /// post_experiment(); Lua's returned table becomes `metrics` (C++ ones write their own files).
 bool LoopPostExperiment(World& w, Value* metrics, bool* has_metrics, std::string* error);
 void SetLoopTick(World& w);

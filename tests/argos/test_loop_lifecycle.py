@@ -3,10 +3,11 @@ the floor is sampled after Init(), Destroy() runs at the end of the run while th
 controllers still exist, LOG outside any hook reaches essaim's log, and a bad element read
 by GetNodeAttribute is bad input naming the .argos file and line."""
 import json
+import subprocess
 
 import pytest
 
-from argos_projects import HERE, build_project, need_essaim, run
+from argos_projects import ESSAIM, HERE, build_project, need_essaim, run
 
 pytestmark = need_essaim
 
@@ -47,3 +48,13 @@ def test_a_missing_attribute_names_the_argos_file_line_and_element(lifecycle, tm
     assert done.returncode == 2, (done.returncode, done.stderr)
     assert "bad_zone.argos:14: <zone>: missing attribute 'radius'" in done.stderr, done.stderr
     assert "argos_configuration.h" not in done.stderr
+
+
+def test_check_says_a_run_with_no_length_ends_only_if_the_cpp_loop_functions_end_it(lifecycle):
+    # Whether a C++ class overrides IsExperimentFinished cannot be seen: check warns, saying so.
+    done = subprocess.run([ESSAIM, "check", "lifecycle.argos", "--set", "framework.experiment.length=0"],
+                          cwd=lifecycle, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert ("lifecycle.argos: warning: the run has no end: no length in <experiment> and no --ticks, so it "
+            "runs until Ctrl-C unless the loop functions end it (IsExperimentFinished)") in done.stderr
+    assert "no length;" in done.stdout

@@ -1,9 +1,11 @@
 """Every example in README.md and docs/*.md runs as written (doc_examples.py says what an
 example is and how a block is marked illustrative or shortened). Each file's examples run
-in order, in a fresh copy of the repository's arenas, controllers, scripts and docs, with
-`essaim` on PATH and `build/` and `.venv/` pointing at the ones under test, so a command
-may use what an earlier one made. docs/tutorial.md is one of them."""
+in order, in a fresh copy of the repository's arenas, controllers, scripts and docs, set up
+as scripts/setup.sh leaves a checkout (sandbox() says how), so a command may use what an
+earlier one made. The environment is the user's: no ESSAIM, no PYTHONPATH, and no `essaim`
+on PATH but the link the set-up made. docs/tutorial.md is one of them."""
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -27,16 +29,41 @@ def essaim():
 
 
 def sandbox(tmp: Path, essaim: Path) -> dict:
-    """The copy the examples run in; returns their environment."""
-    import shutil
+    """The copy the examples run in, as scripts/setup.sh leaves a checkout: build/ is the
+    build under test, .venv a venv with the suite's packages (setup.sh installs them from
+    PyPI; here they are the suite's own), and the set-up's last step, scripts/link_build.sh,
+    links `essaim` into a folder on PATH (standing for ~/.local/bin) and writes .venv's .pth
+    for `import essaim`. Returns the environment the examples run in."""
     for d in COPIED:
         shutil.copytree(ROOT / d, tmp / d, symlinks=True)
     (tmp / "build").symlink_to(essaim.parent)
-    (tmp / ".venv").symlink_to(Path(sys.prefix))
-    (tmp / "bin").mkdir()
-    (tmp / "bin" / "essaim").symlink_to(essaim)
-    env = dict(os.environ, PATH=f"{tmp / 'bin'}:{os.environ.get('PATH', '')}", MPLBACKEND="Agg")
-    env.pop("ESSAIM", None)  # as a user's shell has it
+    make_venv(tmp / ".venv")
+    bin_dir = tmp / "home" / ".local" / "bin"
+    env = users_env(bin_dir)
+    r = subprocess.run(["bash", "scripts/link_build.sh", str(bin_dir)], cwd=tmp, env=env,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    return env
+
+
+def make_venv(folder: Path) -> None:
+    """A venv as setup.sh makes one; its packages are those of the suite's interpreter."""
+    import sysconfig
+    subprocess.run([sys.executable, "-m", "venv", "--without-pip", str(folder)], check=True, timeout=120)
+    site = subprocess.run([str(folder / "bin" / "python3"), "-c",
+                           "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+                          check=True, capture_output=True, text=True, timeout=60).stdout.strip()
+    packages = sysconfig.get_paths()["purelib"]
+    Path(site, "suite-packages.pth").write_text(f"import site; site.addsitedir({packages!r})\n")
+
+
+def users_env(bin_dir: Path) -> dict:
+    """The environment a user's shell has: PATH without any other `essaim` (ctest's, or one
+    an earlier set-up linked) but with bin_dir first, and none of the suite's variables."""
+    path = [d for d in os.environ.get("PATH", "").split(":") if d and not (Path(d) / "essaim").exists()]
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("ESSAIM", "PYTHONPATH", "ESSAIM_SANITIZED", "MPLBACKEND")}
+    env["PATH"] = ":".join([str(bin_dir), *path])
     return env
 
 
@@ -47,7 +74,7 @@ def run_block(ex, cwd: Path, env: dict, n: int) -> None:
     if ex.lang == "python":
         script = cwd / f".example-{n}.py"
         script.write_text(text)
-        argv = [sys.executable, str(script)]
+        argv = [str(cwd / ".venv" / "bin" / "python"), str(script)]
     else:
         argv = ["bash", "-e", "-o", "pipefail", "-c", text]
     run_checked(argv, ex, text, cwd, env)
@@ -99,3 +126,30 @@ def test_the_extractor_tells_examples_from_output_and_synopses(tmp_path):
     assert found[1].skip == "needs a Dask cluster running"
     assert found[2].runnable() == "essaim run b.argos --ticks 5\n"
     assert found[2].before == ["echo hi"]
+
+
+def test_the_setups_link_puts_essaim_on_path_and_leaves_others_alone(tmp_path, essaim):
+    (tmp_path / "scripts").mkdir()
+    shutil.copy(ROOT / "scripts" / "link_build.sh", tmp_path / "scripts")
+    (tmp_path / "build").symlink_to(essaim.parent)
+    bin_dir = tmp_path / "bin"
+    env = users_env(bin_dir)
+    for _ in range(2):  # idempotent, as setup.sh is
+        r = subprocess.run(["bash", "scripts/link_build.sh", str(bin_dir)], cwd=tmp_path, env=env,
+                           capture_output=True, text=True, timeout=60)
+        assert r.returncode == 0, r.stderr
+    assert (bin_dir / "essaim").resolve() == essaim
+    r = subprocess.run(["bash", "-c", "essaim --version"], cwd=tmp_path, env=env, capture_output=True,
+                       text=True, timeout=60)
+    assert r.returncode == 0 and "essaim" in r.stdout, r.stderr
+    # Not on PATH: said, with what to do.
+    r = subprocess.run(["bash", "scripts/link_build.sh", str(tmp_path / "elsewhere")], cwd=tmp_path,
+                       env=env, capture_output=True, text=True, timeout=60)
+    assert f"{tmp_path / 'elsewhere'} is not on PATH; add it" in r.stdout
+    # An essaim installed there another way (a file, not a link) stays.
+    (bin_dir / "essaim").unlink()
+    (bin_dir / "essaim").write_text("#!/bin/sh\n")
+    r = subprocess.run(["bash", "scripts/link_build.sh", str(bin_dir)], cwd=tmp_path, env=env,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0 and "is a file, not a link: left as it is" in r.stderr
+    assert (bin_dir / "essaim").read_text() == "#!/bin/sh\n"

@@ -169,7 +169,9 @@ def test_case03_watchdog_cannot_be_escaped(tmp_path, kind, sandbox):
         pytest.skip("the sandbox has no debug library")
     out = tmp_path / "out"
     extra = ["--sandbox"] if sandbox else []
-    p = run(arena(tmp_path, LOOPS[kind]), out, "--lua-budget", "1e7", "--lua-seconds", "2", "--record", *extra)
+    # The instruction budget is what stops them; the wall-clock limit is a backstop set far
+    # above the budget's time, so that a busy machine does not reach it first (it did at 2 s).
+    p = run(arena(tmp_path, LOOPS[kind]), out, "--lua-budget", "1e7", "--lua-seconds", "25", "--record", *extra)
     assert p.returncode == 0, p.stderr
     s = summary(out)
     assert s["status"] == "controller_error" and s["ticks"] == 20
@@ -187,10 +189,13 @@ def test_case03_watchdog_cannot_be_escaped(tmp_path, kind, sandbox):
 # 3 (the last resort): a call stuck inside one C function still leaves a summary naming the
 # last line seen, and a closed recording.
 def test_case03_stuck_in_c_leaves_summary_and_recording(tmp_path):
-    ctrl = ("function step()\n  local t = os.clock()\n  while os.clock() - t < 1.2 do end\n"
+    # Line 3 runs 2 to 3 s of wall-clock time (os.time, not os.clock's CPU time: on a busy
+    # machine 1.2 s of CPU took longer than the limit), so the watchdog sees that line before
+    # line 4 sticks in C; both well under --lua-seconds (and no instruction budget to reach).
+    ctrl = ("function step()\n  local t = os.time()\n  while os.time() - t < 3 do end\n"
             "  string.find(string.rep('a', 40), string.rep('a*', 40) .. 'b')\nend\n")
     out = tmp_path / "out"
-    p = run(arena(tmp_path, ctrl), out, "--lua-seconds", "6", "--record")
+    p = run(arena(tmp_path, ctrl), out, "--lua-budget", "0", "--lua-seconds", "8", "--record")
     assert p.returncode == 1, p.stderr
     s = summary(out)
     assert s["status"] == "failed"

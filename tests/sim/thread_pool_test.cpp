@@ -19,6 +19,10 @@ struct Visits {
   std::vector<std::thread::id> by;
   int ranges = 0;
   explicit Visits(int n) : count(n, 0), by(n) {}
+  int Visited() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return static_cast<int>(std::count_if(count.begin(), count.end(), [](int c) { return c > 0; }));
+  }
   void Range(int b, int e) {
     std::lock_guard<std::mutex> lock(mutex);
     ASSERT_LE(b, e);
@@ -96,13 +100,18 @@ TEST(ThreadPool, BalancedRangesShrinkAsTheLoopEnds) {
 }
 
 TEST(ThreadPool, BalancedLoopDoesNotWaitForASlowRange) {
-  // Item 0 is slow (it sleeps, leaving the core free): with equal static chunks its thread
-  // would also run items 1..99; balanced, the other thread takes them.
+  // The range of item 0 is slow: it waits until every other item is done (a fixed sleep
+  // was a time a busy machine could miss). With equal static chunks its thread would also
+  // have items 1..99 to run, and would wait for the guard; balanced, the other thread takes them.
   ThreadPool pool(2);
   const int n = 200;
   Visits v(n);
   auto f = [&](int b, int e) {
-    if (b == 0) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (b == 0) {
+      const auto guard = std::chrono::steady_clock::now() + std::chrono::seconds(60);  // a hang guard
+      while (v.Visited() < n - e && std::chrono::steady_clock::now() < guard)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     v.Range(b, e);
   };
   pool.ParallelForBalanced(n, f);
