@@ -60,6 +60,8 @@ target_link_libraries(essaim_argos PUBLIC essaim_lua_robot essaim_argos_api ${CM
 
 # pkg-config file, CMake package and ARGoS's cmake helpers: for the build tree, then the install.
 get_target_property(lua_includes PkgConfig::LUA INTERFACE_INCLUDE_DIRECTORIES)
+list(GET lua_includes 0 ARGOS_LUA_INCLUDE_DIR)  # the Lua 5.4 FindLua52/53 give (FindArgosLua.cmake.in)
+list(GET LUA_LINK_LIBRARIES 0 ARGOS_LUA_LIBRARY)
 set(ARGOS_PC_LUA_CFLAGS "")
 set(ARGOS_CONFIG_LUA_INCLUDE "")
 foreach(dir ${lua_includes})
@@ -78,6 +80,13 @@ function(essaim_argos_package out pc_prefix pc_libdir pc_includedir config_prefi
   configure_file(${PROJECT_SOURCE_DIR}/cmake/ARGoSConfig.cmake.in ${out}/lib/cmake/ARGoS/ARGoSConfig.cmake @ONLY)
   configure_file(${PROJECT_SOURCE_DIR}/cmake/ARGoSCheckQTOpenGL.cmake ${out}/share/argos3/cmake/ARGoSCheckQTOpenGL.cmake
                  COPYONLY)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/FindARGoSQTOpenGL.cmake ${out}/share/argos3/cmake/FindARGoSQTOpenGL.cmake
+                 COPYONLY)
+  # The Lua finders older ARGoS releases installed (FindLua52 to beta55, FindLua53 after).
+  foreach(ARGOS_LUA_PACKAGE Lua52 Lua53)
+    configure_file(${PROJECT_SOURCE_DIR}/cmake/FindArgosLua.cmake.in
+                   ${out}/share/argos3/cmake/Find${ARGOS_LUA_PACKAGE}.cmake @ONLY)
+  endforeach()
 endfunction()
 essaim_argos_package(${ARGOS_SDK_DIR} ${ARGOS_SDK_DIR} ${ARGOS_SDK_DIR}/lib ${ARGOS_INCLUDE_SOURCE}
                      ${ARGOS_SDK_DIR} ${ARGOS_INCLUDE_SOURCE})
