@@ -76,6 +76,7 @@ struct TwoWordSeedSeq {
 void Rng::Start() {
   mt_ = std::make_unique<std::mt19937>();
   if (!seeded_) return;
+  if (plain_) return mt_->seed(static_cast<uint32_t>(seed_));
   TwoWordSeedSeq seq{{static_cast<uint32_t>(seed_), static_cast<uint32_t>(seed_ >> 32)}};
   mt_->seed(seq);
 }
@@ -83,6 +84,7 @@ void Rng::Start() {
 Rng& Rng::operator=(const Rng& other) {
   seed_ = other.seed_;
   seeded_ = other.seeded_;
+  plain_ = other.plain_;
   mt_ = other.mt_ ? std::make_unique<std::mt19937>(*other.mt_) : nullptr;
   return *this;
 }

@@ -38,7 +38,14 @@ class Rng {
   void Seed(uint64_t seed) {
     seed_ = seed;
     seeded_ = true;
+    plain_ = false;
     mt_.reset();
+  }
+  /// Seeded as ARGoS's CRandom::CRNG(seed) and std::mt19937(seed) are (Matsumoto and
+  /// Nishimura's init_genrand): the numbers an ARGoS generator of that seed draws.
+  void SeedPlain(uint32_t seed) {
+    Seed(seed);
+    plain_ = true;
   }
 
   uint32_t NextU32() { return static_cast<uint32_t>(Engine()()); }
@@ -63,6 +70,7 @@ class Rng {
 
   uint64_t seed_ = 0;
   bool seeded_ = false;
+  bool plain_ = false;  // SeedPlain: init_genrand(seed), not the two-word seed sequence
   std::unique_ptr<std::mt19937> mt_;
 };
 

@@ -1,24 +1,53 @@
-// CRandom over essaim's random streams (core/rng.h): the n-th generator a session makes
-// draws stream (LoopFunctions, n) of the experiment's seed, skipping stream 1 (the Lua
-// loop functions' math.random), so the first is experiment.random's.
+// CRandom over essaim's random streams (core/rng.h), whose generator and distributions are
+// ARGoS's: a CRNG made with a seed is seeded as ARGoS's (init_genrand), so it draws ARGoS's
+// numbers. Category "argos" is the experiment's: the n-th generator a session makes draws
+// stream (LoopFunctions, n) of the experiment's seed, skipping stream 1 (the Lua loop
+// functions' math.random), so the first is experiment.random's. Other categories seed
+// their generators as ARGoS's CCategory does, from a seeder of their own.
 #include "core/rng.h"
 
 #include <argos3/core/utility/math/rng.h>
+
+#include <cmath>
+#include <limits>
 
 #include "argos/api/session_state.h"
 
 namespace argos {
 
 struct CRandom::CRNG::SStream {
-  explicit SStream(UInt64 un_seed) : Seed(un_seed), Stream(un_seed) {}
-  UInt64 Seed;
+  UInt64 Seed = 0;
+  bool Plain = true;  // seeded as ARGoS's CRNG(seed); false: an experiment stream
   essaim::Rng Stream;
+  void Start() {
+    if (Plain)
+      Stream.SeedPlain(static_cast<UInt32>(Seed));
+    else
+      Stream.Seed(Seed);
+  }
 };
 
-CRandom::CRNG::CRNG(UInt64 un_seed) : m_psStream(new SStream(un_seed)) {}
+namespace {
+CRandom::CRNG::SStream* PlainStream(UInt32 un_seed) {
+  auto* stream = new CRandom::CRNG::SStream;
+  stream->Seed = un_seed;
+  stream->Start();
+  return stream;
+}
+}  // namespace
+
+CRandom::CRNG::CRNG(UInt32 un_seed) : m_psStream(PlainStream(un_seed)) {}
+CRandom::CRNG::CRNG(const CRNG& c_rng) : m_psStream(new SStream(*c_rng.m_psStream)) {}
 CRandom::CRNG::~CRNG() { delete m_psStream; }
+void CRandom::CRNG::Reset() { m_psStream->Start(); }
+void CRandom::CRNG::SetSeed(UInt32 un_seed) {
+  m_psStream->Seed = un_seed;
+  m_psStream->Plain = true;
+  m_psStream->Start();
+}
 UInt64 CRandom::CRNG::GetSeed() const { return m_psStream->Seed; }
 bool CRandom::CRNG::Bernoulli(Real f_true) { return m_psStream->Stream.Bernoulli(f_true); }
+UInt32 CRandom::CRNG::Uniform32bit() { return m_psStream->Stream.NextU32(); }
 
 CRadians CRandom::CRNG::Uniform(const CRange<CRadians>& c_range) {
   return CRadians(m_psStream->Stream.Uniform(c_range.GetMin().GetValue(), c_range.GetMax().GetValue()));
@@ -44,17 +73,83 @@ Real CRandom::CRNG::Exponential(Real f_mean) { return m_psStream->Stream.Exponen
 Real CRandom::CRNG::Gaussian(Real f_std_dev, Real f_mean) { return m_psStream->Stream.Gaussian(f_std_dev, f_mean); }
 UInt32 CRandom::CRNG::Poisson(Real f_mean) { return static_cast<UInt32>(m_psStream->Stream.Poisson(f_mean)); }
 
-bool CRandom::ExistsCategory(const std::string& str_category) { return str_category == "argos"; }
+// ARGoS's: a uniform draw in (0, 1), both ends excluded, then sigma * sqrt(-2 ln u).
+Real CRandom::CRNG::Rayleigh(Real f_sigma) {
+  Real fValue;
+  do {
+    fValue = Uniform(CRange<Real>(0, 1));
+  } while (fValue <= 0 || fValue >= 1);
+  return f_sigma * std::sqrt(-2 * std::log(fValue));
+}
+
+Real CRandom::CRNG::Lognormal(Real f_sigma, Real f_mu) { return std::exp(f_mu + f_sigma * Gaussian(1, 0)); }
+
+}  // namespace argos
+
+namespace essaim {
+namespace {
+// The running experiment's categories; outside any, the process's.
+std::map<std::string, ArgosRngCategory>& Categories() {
+  static std::map<std::string, ArgosRngCategory> process;
+  ArgosSession::State* session = CurrentSession();
+  return session ? session->rng_categories : process;
+}
+
+ArgosRngCategory& Category(const std::string& name) {
+  auto it = Categories().find(name);
+  if (it == Categories().end()) THROW_ARGOSEXCEPTION("CRandom:: can't find category \"" << name << "\".");
+  return it->second;
+}
+
+}  // namespace
+}  // namespace essaim
+
+namespace argos {
 
 CRandom::CRNG* CRandom::CreateRNG(const std::string& str_category) {
-  essaim::ArgosSession::State& session = essaim::RequireSession("CRandom::CreateRNG");
-  if (!ExistsCategory(str_category))
-    THROW_ARGOSEXCEPTION("CRandom::CreateRNG: no category \"" << str_category << "\" (essaim has \"argos\" only)");
-  const size_t made = session.rngs.size();
-  const UInt64 index = made == 0 ? 0 : made + 1;
-  session.rngs.emplace_back(
-      new CRNG(essaim::DeriveSeed(session.world->Seed(), essaim::StreamKind::LoopFunctions, index)));
-  return session.rngs.back().get();
+  if (str_category == "argos") {
+    essaim::ArgosSession::State& session = essaim::RequireSession("CRandom::CreateRNG(\"argos\")");
+    const size_t made = session.rngs.size();
+    auto* stream = new CRNG::SStream;
+    stream->Seed =
+        essaim::DeriveSeed(session.world->Seed(), essaim::StreamKind::LoopFunctions, made == 0 ? 0 : made + 1);
+    stream->Plain = false;
+    stream->Start();
+    session.rngs.emplace_back(new CRNG(stream));
+    return session.rngs.back().get();
+  }
+  essaim::ArgosRngCategory& category = essaim::Category(str_category);
+  const UInt32 unSeed = category.seeder.Uniform(CRange<UInt32>(1, std::numeric_limits<UInt32>::max()));
+  category.rngs.emplace_back(new CRNG(unSeed));
+  return category.rngs.back().get();
+}
+
+bool CRandom::CreateCategory(const std::string& str_category, UInt32 un_seed) {
+  if (ExistsCategory(str_category)) return false;
+  essaim::Categories().emplace(str_category, un_seed);
+  return true;
+}
+
+bool CRandom::ExistsCategory(const std::string& str_category) {
+  return str_category == "argos" || essaim::Categories().count(str_category) > 0;
+}
+
+void CRandom::RemoveCategory(const std::string& str_category) {
+  if (str_category == "argos") THROW_ARGOSEXCEPTION("CRandom::RemoveCategory: \"argos\" is the experiment's");
+  essaim::Category(str_category);
+  essaim::Categories().erase(str_category);
+}
+
+UInt32 CRandom::GetSeedOf(const std::string& str_category) {
+  if (str_category == "argos") return static_cast<UInt32>(essaim::RequireSession("CRandom::GetSeedOf").world->Seed());
+  return essaim::Category(str_category).seed;
+}
+
+void CRandom::SetSeedOf(const std::string& str_category, UInt32 un_seed) {
+  if (str_category == "argos") THROW_ARGOSEXCEPTION("CRandom::SetSeedOf: \"argos\" is the experiment's random_seed");
+  essaim::ArgosRngCategory& category = essaim::Category(str_category);
+  category.seed = un_seed;
+  category.seeder.SetSeed(un_seed);
 }
 
 }  // namespace argos

@@ -21,13 +21,24 @@ struct SSessionAccess {
 
 namespace essaim {
 
+/// A CRandom category other than "argos": ARGoS's CCategory, a seeder whose draws seed its
+/// generators.
+struct ArgosRngCategory {
+  explicit ArgosRngCategory(argos::UInt32 un_seed) : seed(un_seed), seeder(un_seed) {}
+  argos::UInt32 seed;
+  argos::CRandom::CRNG seeder;
+  std::vector<std::unique_ptr<argos::CRandom::CRNG>> rngs;  // category "argos"
+  std::map<std::string, ArgosRngCategory> rng_categories;   // the others
+};
+
 struct ArgosSession::State {
   explicit State(ArgosWorld* w) : world(w), simulator(argos::SSessionAccess::Make()) {}
   ArgosWorld* world;
   argos::CSimulator simulator;
   argos::CSpace space;
   std::map<std::string, std::unique_ptr<argos::CLEDMedium>> media;
-  std::vector<std::unique_ptr<argos::CRandom::CRNG>> rngs;
+  std::vector<std::unique_ptr<argos::CRandom::CRNG>> rngs;  // category "argos"
+  std::map<std::string, ArgosRngCategory> rng_categories;   // the others
   std::unique_ptr<argos::CLoopFunctions> loop_functions;
   bool configuration_error = false;  // the last hook's exception was a bad .argos element
 };

@@ -7,18 +7,17 @@
 using namespace argos;
 
 class COldModulesLoopFunctions : public CLoopFunctions {
-public:
-   virtual void PostExperiment() {
-      CSpace::TMapPerType& cBots = GetSpace().GetEntitiesByType("foot-bot");
-      for(CSpace::TMapPerType::iterator it = cBots.begin(); it != cBots.end(); ++it) {
-         CFootBotEntity& cBot = *any_cast<CFootBotEntity*>(it->second);
-         lua_State* ptState =
-            dynamic_cast<CLuaController&>(cBot.GetControllableEntity().GetController()).GetLuaState();
-         lua_getglobal(ptState, "steps");
-         LOG << "old modules: " << cBot.GetId() << " steps " << lua_tonumber(ptState, -1) << std::endl;
-         lua_pop(ptState, 1);
-      }
-   }
+ public:
+  virtual void PostExperiment() {
+    CSpace::TMapPerType& cBots = GetSpace().GetEntitiesByType("foot-bot");
+    for (CSpace::TMapPerType::iterator it = cBots.begin(); it != cBots.end(); ++it) {
+      CFootBotEntity& cBot = *any_cast<CFootBotEntity*>(it->second);
+      lua_State* ptState = dynamic_cast<CLuaController&>(cBot.GetControllableEntity().GetController()).GetLuaState();
+      lua_getglobal(ptState, "steps");
+      LOG << "old modules: " << cBot.GetId() << " steps " << lua_tonumber(ptState, -1) << std::endl;
+      lua_pop(ptState, 1);
+    }
+  }
 };
 
 REGISTER_LOOP_FUNCTIONS(COldModulesLoopFunctions, "old_modules_loop_functions")

@@ -1,4 +1,5 @@
-// ARGoS's random numbers (argos3/core/utility/math/rng.h). CRandom::CreateRNG("argos")
+// ARGoS's random numbers (argos3/core/utility/math/rng.h): ARGoS's Mersenne Twister and
+// distributions, so a CRNG of seed S draws what ARGoS's does. CRandom::CreateRNG("argos")
 // gives a generator drawn from the experiment's random_seed: the first one made draws the
 // stream the Lua loop functions' experiment.random draws, so a C++ port of Lua loop
 // functions draws the same numbers (docs/loop-functions.md).
@@ -16,31 +17,42 @@ class CRandom {
  public:
   class CRNG {
    public:
-    ~CRNG();
-    CRNG(const CRNG&) = delete;
+    /// A generator seeded as ARGoS seeds one: it draws exactly ARGoS's numbers for `un_seed`.
+    explicit CRNG(UInt32 un_seed);
+    CRNG(const CRNG& c_rng);
     CRNG& operator=(const CRNG&) = delete;
+    ~CRNG();
+    /// Back to the first draw of its seed.
+    void Reset();
+    void SetSeed(UInt32 un_seed);
+    UInt64 GetSeed() const;
     bool Bernoulli(Real f_true = 0.5);
     CRadians Uniform(const CRange<CRadians>& c_range);
     Real Uniform(const CRange<Real>& c_range);
     /// In [min, max).
     SInt32 Uniform(const CRange<SInt32>& c_range);
     UInt32 Uniform(const CRange<UInt32>& c_range);
+    UInt32 Uniform32bit();
     Real Exponential(Real f_mean);
     Real Gaussian(Real f_std_dev, Real f_mean = 0);
     UInt32 Poisson(Real f_mean);
-    UInt64 GetSeed() const;
+    Real Rayleigh(Real f_sigma);
+    Real Lognormal(Real f_sigma, Real f_mu);
     /// The generator's type (a GSL name in ARGoS until 3.0.0-beta42): essaim's is a Mersenne Twister.
     std::string GetType() const { return "mt19937"; }
+    struct SStream;  // essaim's: the stream and how it was seeded
 
    private:
     friend class CRandom;
-    explicit CRNG(UInt64 un_seed);
-    struct SStream;
+    explicit CRNG(SStream* ps_stream) : m_psStream(ps_stream) {}
     SStream* m_psStream;
   };
 
-  /// A new generator of `str_category` ("argos": seeded from the experiment's seed). The
-  /// experiment owns it: it is freed when the run ends.
+  /// A new generator of `str_category`. "argos" always exists and is the experiment's: its
+  /// n-th generator draws stream n of the experiment's seed, the first one the stream the Lua
+  /// loop functions' experiment.random draws (docs/loop-functions.md). Other categories are
+  /// made by CreateCategory and seed their generators as ARGoS does: each takes the next
+  /// draw of the category's own seeder. The experiment owns what this returns.
   static CRNG* CreateRNG(const std::string& str_category);
   /// ARGoS's until 3.0.0-beta42, which let a GSL generator type be chosen; essaim has the
   /// Mersenne Twister, ARGoS's default, alone.
@@ -50,7 +62,14 @@ class CRandom {
                                                                       << "\" (essaim has \"mt19937\" only)");
     return CreateRNG(str_category);
   }
+  /// Makes category `str_category` seeded with `un_seed`; false when it exists already
+  /// ("argos" always does). Categories belong to the running experiment (outside any, to
+  /// the process).
+  static bool CreateCategory(const std::string& str_category, UInt32 un_seed);
   static bool ExistsCategory(const std::string& str_category);
+  static void RemoveCategory(const std::string& str_category);
+  static UInt32 GetSeedOf(const std::string& str_category);
+  static void SetSeedOf(const std::string& str_category, UInt32 un_seed);
 };
 
 }  // namespace argos
