@@ -96,6 +96,10 @@ class Loader {
   // ---- sections
   void LoadFramework(const XMLElement* e);
   void LoadControllers(const XMLElement* e);
+  /// One kind of controller (a file each): <lua_controller> in xml_lua_controller.cpp.
+  void LoadLuaController(const XMLElement* c);
+  /// What every kind holds after its id (xml_controllers.cpp); returns <params>, or null.
+  const XMLElement* LoadControllerBody(const XMLElement* c, ControllerDef* def);
   void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
   void LoadArena(const XMLElement* e);
   void LoadPhysics(const XMLElement* e);
