@@ -4,23 +4,15 @@
 
 #include <tinyxml2.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <set>
+#include <memory>
+#include <string>
+#include <utility>
 
-#include "core/color.h"
 #include "core/hash.h"
 #include "core/paths.h"
 #include "core/rng.h"
 #include "core/stopwatch.h"
-#include "core/strings.h"
-#include "model/attribute_ledger.h"
-#include "model/distribute.h"
-#include "model/floor_image.h"
-#include "model/limits.h"
-#include "model/physics_regions.h"
-#include "model/placement.h"
 #include "model/xml_loader_impl.h"
 #include "model/xml_overrides.h"
 #include "model/xml_syntax.h"

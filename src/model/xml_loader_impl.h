@@ -4,6 +4,7 @@
 #pragma once
 #include <tinyxml2.h>
 
+#include <cmath>
 #include <memory>
 #include <set>
 #include <string>
@@ -57,8 +58,9 @@ class Loader {
   }
   static constexpr int kMaxFloorSide = 8192;  // pixels of a loop-function floor
 
-  // ---- typed attribute access: report and return a default on bad text. Every read goes
-  // through Get, which records it: what nobody read is reported (ReportUnknownAttributes).
+  // ---- attributes (xml_attributes.cpp): typed access, reporting and returning a default on
+  // bad text. Every read goes through Get, which records it: what nobody read is reported
+  // (ReportUnknownAttributes).
   const char* Get(const XMLElement* e, const char* name) {
     ledger_.Read(e, name);
     return e->Attribute(name);
@@ -75,8 +77,41 @@ class Loader {
   }
   double Double(const XMLElement* e, const char* name, double def, bool required = false);
   long long Int(const XMLElement* e, const char* name, long long def, bool required = false);
+  bool Bool(const XMLElement* e, const char* name, bool def);
+  Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
+  void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
+  std::string ResolvePath(const std::string& rel) const;
+  void ReportUnknownAttributes(const XMLElement* root);
+  std::string NoEndHint() const;
+
+  // ---- <framework> (xml_framework.cpp)
+  void LoadFramework(const XMLElement* e);
   void LoadWatchdog(const XMLElement* sys, ExperimentDef* x);
   void LoadLimits(const XMLElement* sys, LimitsDef* limits);
+
+  // ---- <controllers> (xml_controllers.cpp)
+  void LoadControllers(const XMLElement* e);
+  /// One kind of controller (a file each): <lua_controller> in xml_lua_controller.cpp.
+  void LoadLuaController(const XMLElement* c);
+  /// What every kind holds after its id (xml_controllers.cpp); returns <params>, or null.
+  const XMLElement* LoadControllerBody(const XMLElement* c, ControllerDef* def);
+  void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
+
+  // ---- <physics_engines> and <media> (xml_physics_media.cpp)
+  void LoadPhysics(const XMLElement* e);
+  void LoadEngine(const XMLElement* c, bool first);
+  void LoadBoundaries(const XMLElement* b, PhysicsRegionDef* region);
+  void FinishPhysicsRegions();
+  void LoadMedia(const XMLElement* e);
+
+  // ---- <loop_functions> (xml_loop_functions.cpp)
+  void LoadLoopFunctions(const XMLElement* e);
+  void LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf);
+  void ReadAllBelow(const XMLElement* e);
+
+  // ---- <arena> and its entities (xml_arena.cpp)
+  void LoadArena(const XMLElement* e);
+  void CheckArenaSize(const XMLElement* e);
   /// False (an error at `e`) when `more` entities would take the experiment over its limit.
   bool RoomFor(const XMLElement* e, long long more, bool robots);
   /// An error at `e` when the obstacle is over the size limit or out of range.
@@ -84,38 +119,25 @@ class Loader {
     std::string problem = ObstacleProblem(o, model_->experiment.limits);
     if (!problem.empty()) Error(e, problem);
   }
-  void CheckArenaSize(const XMLElement* e);
-  bool Bool(const XMLElement* e, const char* name, bool def);
-  Vec3 Vector3(const XMLElement* e, const char* name, const Vec3& def, bool required = false);
-  void CheckChildren(const XMLElement* e, const std::set<std::string>& allowed, const char* what);
-
-  std::string ResolvePath(const std::string& rel) const;
-  void ReportUnknownAttributes(const XMLElement* root);
-  std::string NoEndHint() const;
-
-  // ---- sections
-  void LoadFramework(const XMLElement* e);
-  void LoadControllers(const XMLElement* e);
-  /// One kind of controller (a file each): <lua_controller> in xml_lua_controller.cpp.
-  void LoadLuaController(const XMLElement* c);
-  /// What every kind holds after its id (xml_controllers.cpp); returns <params>, or null.
-  const XMLElement* LoadControllerBody(const XMLElement* c, ControllerDef* def);
-  void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
-  void LoadArena(const XMLElement* e);
-  void LoadPhysics(const XMLElement* e);
-  void LoadEngine(const XMLElement* c, bool first);
-  void LoadBoundaries(const XMLElement* b, PhysicsRegionDef* region);
-  void FinishPhysicsRegions();
-  void LoadMedia(const XMLElement* e);
-  void LoadLoopFunctions(const XMLElement* e);
-  void LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf);
-  void ReadAllBelow(const XMLElement* e);
   bool LoadFootBot(const XMLElement* e, RobotDef* r);
   bool LoadObstacle(const XMLElement* e, ObstacleDef* o, bool needs_body = true);
   bool LoadLight(const XMLElement* e, LightDef* l);
   void LoadFloor(const XMLElement* e);
   void LoadBody(const XMLElement* body, Pose2* pose, double* z);
-  // <distribute>: read the block, then place `quantity` copies of its prototype
+  Footprint FootprintOf(const RobotDef& r) const {
+    Footprint f;
+    f.center = {r.pose.x, r.pose.y};
+    f.radius = footbot::kRadius;
+    return f;
+  }
+  Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
+  std::string OutsideArena(const RobotDef& r) const;
+  std::string Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
+                      const PlacedFootprints& robots_before) const;
+  bool Collides(const Footprint& f) const { return placed_.Collides(f); }
+
+  // ---- <distribute> (xml_distribute.cpp): read the block, then place `quantity` copies of
+  // its prototype
   struct DistributeBlock {
     const XMLElement* element = nullptr;   // <distribute>
     const XMLElement* position = nullptr;  // its <position>
@@ -139,19 +161,9 @@ class Loader {
   Placement PlaceFootBot(const DistributeBlock& b, const std::string& id, const Vec3& p, const Pose2& pose);
   Placement PlaceObstacle(const DistributeBlock& b, const std::string& id, const Vec3& p, const Pose2& pose);
   bool ParseGenerator(const XMLElement* e, Generator* g);
-  void CheckReferences();
 
-  Footprint FootprintOf(const RobotDef& r) const {
-    Footprint f;
-    f.center = {r.pose.x, r.pose.y};
-    f.radius = footbot::kRadius;
-    return f;
-  }
-  Footprint FootprintOf(const ObstacleDef& o) const { return ObstacleFootprint(o); }
-  std::string OutsideArena(const RobotDef& r) const;
-  std::string Overlap(const RobotDef& r, const PlacedFootprints& obstacles,
-                      const PlacedFootprints& robots_before) const;
-  bool Collides(const Footprint& f) const { return placed_.Collides(f); }
+  // ---- across sections (xml_loader.cpp): robots bound to controllers, media and floor checked
+  void CheckReferences();
 
   std::string path_;
   std::string dir_;
