@@ -6,6 +6,8 @@ The order is the one README.md's Architecture section draws and src/CMakeLists.t
 lua/host sits beside the simulation layers, not above them: it sees only core.
 argos (C++ loop functions, the ARGoS API) sits beside lua/loop, on the same floor: neither
 sees the other, and only sim above them sees both.
+A header named *_impl.h is private to its folder (model/xml_loader_impl.h: the loader's class):
+only files in that folder include it.
 """
 import re
 import sys
@@ -56,10 +58,13 @@ def main() -> int:
             if "/" not in target:
                 continue  # a file beside it, or a generated one
             other = layer_of(target)
+            if target.endswith("_impl.h") and Path(target).parent != path.parent.relative_to(src):
+                upward.append(f"{path.relative_to(ROOT)}: includes {target}, private to src/{Path(target).parent}")
+                continue
             if other is not None and other not in BELOW[own]:
                 upward.append(f"{path.relative_to(ROOT)}: {own} includes {target} ({other} is above it)")
     if upward:
-        print(f"check_layers: {len(upward)} include(s) against the layer order:", file=sys.stderr)
+        print(f"check_layers: {len(upward)} include(s) against the layer order or a private header:", file=sys.stderr)
         for line in upward:
             print("  " + line, file=sys.stderr)
         return 1

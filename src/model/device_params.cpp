@@ -15,7 +15,7 @@ struct Parser {
   }
   // Every read goes through here. A name missing from the device table's row would be
   // reported as an unknown attribute in the user's file: fail loudly instead (the row is
-  // the schema, xml_loader.cpp's AttributeLedger relies on it).
+  // the schema, the loader's AttributeLedger relies on it: xml_controllers.cpp).
   bool Present(const std::string& name) const {
     bool in_row = false;
     for (const DeviceAttr& a : GetDeviceRow(cfg->type).attrs) in_row |= name == a.name;
