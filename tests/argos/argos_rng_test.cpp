@@ -45,8 +45,7 @@ TEST(ArgosRng, ASeededGeneratorDrawsArgossNumbers) {
   EXPECT_EQ(Coins(1, 8), (std::vector<bool>{1, 0, 0, 0, 1, 1, 1, 0}));
   EXPECT_EQ(Reals(12345, 3), (std::vector<Real>{0.92961608686708286, 0.89015471327355011, 0.31637556043369125}));
   EXPECT_EQ(Ints(12345, 5), (std::vector<UInt32>{92, 89, 31, 13, 18}));
-  EXPECT_EQ(Gaussians(12345, 3),
-            (std::vector<Real>{-0.39074051512556168, -0.4786476211743641, 2.4901223090216602}));
+  EXPECT_EQ(Gaussians(12345, 3), (std::vector<Real>{-0.39074051512556168, -0.4786476211743641, 2.4901223090216602}));
   EXPECT_EQ(Coins(12345, 8), (std::vector<bool>{0, 0, 1, 1, 1, 1, 1, 0}));
 }
 
