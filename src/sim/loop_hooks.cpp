@@ -49,10 +49,13 @@ bool DrawLoopFloor(World& w, std::string* error) {
   return true;
 }
 
+bool TakeFloorChanged(World& w) {
+  if (w.cpp_loop_functions.Loaded()) return w.cpp_loop_functions.TakeFloorChanged();
+  return w.loop_functions.Loaded() && w.loop_functions.TakeFloorChanged();
+}
+
 bool RedrawFloorIfChanged(World& w, std::string* error) {
-  const bool changed = w.cpp_loop_functions.Loaded() ? w.cpp_loop_functions.TakeFloorChanged()
-                                                     : w.loop_functions.Loaded() && w.loop_functions.TakeFloorChanged();
-  if (!changed || w.model.floor.source != FloorSource::LoopFunctions) return true;
+  if (!TakeFloorChanged(w) || w.model.floor.source != FloorSource::LoopFunctions) return true;
   return DrawLoopFloor(w, error);
 }
 

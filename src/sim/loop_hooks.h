@@ -23,6 +23,8 @@ void SetLoopTick(World& w);
 void FlushLoopLog(World& w);
 /// Samples the loop functions' floor colour into w.floor (its size already set).
 bool DrawLoopFloor(World& w, std::string* error);
+/// Whether the loop functions said the floor changed since the last call (and forgets it).
+bool TakeFloorChanged(World& w);
 /// Draws the floor again when the loop functions said it changed (C++: the floor entity's
 /// SetChanged(); Lua: experiment.floor_changed()).
 bool RedrawFloorIfChanged(World& w, std::string* error);

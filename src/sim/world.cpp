@@ -55,10 +55,7 @@ bool BuildFloor(World& w, std::string* error) {
 // what Init() read (zones, food) shows from the first tick on.
 bool DrawFloorAfterInit(World& w, std::string* error) {
   if (w.model.floor.source != FloorSource::LoopFunctions) return true;
-  if (w.cpp_loop_functions.Loaded())
-    w.cpp_loop_functions.TakeFloorChanged();
-  else
-    w.loop_functions.TakeFloorChanged();
+  TakeFloorChanged(w);  // drawn now: a SetChanged() from Init() asks for nothing more
   return DrawLoopFloor(w, error);
 }
 

@@ -40,3 +40,12 @@ def run(argos: Path, *args, cwd: Path, env=None):
     """essaim run on `argos` from `cwd`; the completed process."""
     return subprocess.run([ESSAIM, "run", str(argos), *args], cwd=cwd, capture_output=True, text=True,
                           env=dict(os.environ, **(env or {})), timeout=300)
+
+
+def skip_without_python_module():
+    """Skips the calling test when the Python module is not built, or under ASan (where the
+    interpreter needs the sanitizer's runtime preloaded: python_module covers the module)."""
+    if not any((Path(ESSAIM).resolve().parent / "python").glob("essaim*.so")):
+        pytest.skip("the Python module is not built")
+    if os.environ.get("ESSAIM_SANITIZED") == "1":
+        pytest.skip("under ASan the interpreter needs its runtime preloaded: python_module covers the module there")

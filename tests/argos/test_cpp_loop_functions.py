@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from argos_projects import ESSAIM, HERE, ROOT, build_project, need_essaim, run
+from argos_projects import ESSAIM, HERE, ROOT, build_project, need_essaim, run, skip_without_python_module
 
 pytestmark = need_essaim
 
@@ -198,10 +198,7 @@ def test_installed_essaim_builds_and_runs_the_course_project(tmp_path):
 def test_python_module_runs_cpp_loop_functions(course, tmp_path):
     """The Python module loads the same API library: a run, its end and a reset."""
     module = Path(ESSAIM).resolve().parent / "python"
-    if not any(module.glob("essaim*.so")):
-        pytest.skip("the Python module is not built")
-    if os.environ.get("ESSAIM_SANITIZED") == "1":
-        pytest.skip("under ASan the interpreter needs its runtime preloaded: python_module covers the module there")
+    skip_without_python_module()
     script = (
         "import essaim\n"
         "s = essaim.Simulation('course.argos', seed=3)\n"

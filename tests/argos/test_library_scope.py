@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from argos_projects import ESSAIM, HERE, build_project, need_essaim
+from argos_projects import ESSAIM, HERE, build_project, need_essaim, skip_without_python_module
 from argos_projects import run as run_essaim
 
 pytestmark = need_essaim
@@ -167,10 +167,7 @@ def test_experiments_in_one_process_each_get_their_own_class(scope, second, tmp_
     """Two projects' libraries define the same class under the same label; one Python process
     runs the first, the second, then the first again (both libraries loaded by then)."""
     module = Path(ESSAIM).resolve().parent / "python"
-    if not any(module.glob("essaim*.so")):
-        pytest.skip("the Python module is not built")
-    if os.environ.get("ESSAIM_SANITIZED") == "1":
-        pytest.skip("under ASan the interpreter needs its runtime preloaded: python_module covers the module there")
+    skip_without_python_module()
     script = (
         "import os, sys, essaim\n"
         "for folder in sys.argv[1:]:\n"
