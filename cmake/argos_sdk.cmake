@@ -50,7 +50,11 @@ add_custom_command(TARGET essaim_argos_api POST_BUILD ${link_commands} VERBATIM)
 # The host side: loading libraries, driving the session over the EntityStore.
 add_library(essaim_argos STATIC
   argos/store_world.cpp
+  argos/argos_host.cpp
+  argos/config_tree.cpp
   argos/cpp_loop_functions.cpp
+  argos/cpp_controller.cpp
+  argos/robot_io.cpp
   argos/plugin_libraries.cpp
   argos/lua_linkage.cpp
   argos/library_group.cpp

@@ -8,6 +8,7 @@
 #include "app/signals.h"
 #include "lua/host/watchdog.h"
 #include "output/out_folder.h"
+#include "output/summary.h"
 
 namespace essaim {
 
@@ -43,6 +44,11 @@ class RunSession {
   /// Called from the watchdog thread while robots may still be stepped: a best-effort
   /// summary, then the process ends (exit 1).
   void OnStuck(const std::string& message);
+  /// A crash signal (a segfault in a C++ controller...) on the thread that faulted: a
+  /// best-effort summary naming what was running and the tick, then the process ends (exit 3).
+  static void OnCrashSignal(int sig);
+  void OnCrash(int sig);
+  void WriteStoppedSummary(const std::string& message, const RunInfo::Crash* crash);
 
   std::mutex mutex_;  // the run in progress below, against the watchdog thread
   std::string out_;

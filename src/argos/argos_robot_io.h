@@ -32,6 +32,9 @@ struct ArgosScan {
   double distance = 0;  // cm; -1 too close, -2 nothing in range (as the Lua table)
 };
 
+/// Ground sensors' points: {x, y} in cm, robot frame, one row a sensor.
+using ArgosOffsets = const double (*)[2];
+
 enum class ArgosTurretMode { Off, Passive, Position, Speed };
 
 class ArgosRobotIo {
@@ -45,9 +48,9 @@ class ArgosRobotIo {
   virtual const double* Light() const = 0;  // 24, angles as the proximity's
   /// Ground: values and offsets {x, y} in cm, robot frame (4 motor, 8 base).
   virtual const double* MotorGround() const = 0;
-  virtual const double (*MotorGroundOffsets() const)[2] = 0;
+  virtual ArgosOffsets MotorGroundOffsets() const = 0;
   virtual const double* BaseGround() const = 0;
-  virtual const double (*BaseGroundOffsets() const)[2] = 0;
+  virtual ArgosOffsets BaseGroundOffsets() const = 0;
   /// Position in m, orientation as a unit quaternion {w, x, y, z}.
   virtual void Positioning(double position[3], double quaternion[4]) const = 0;
   /// Wheels' velocity (cm/s) and covered distance (cm, last tick), left and right; the axis in cm.

@@ -7,15 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "argos/argos_host.h"
 #include "core/color.h"
-#include "devices/entity_store.h"
-#include "lua/robot/lua_controller.h"
 #include "model/model.h"
 
 namespace essaim {
-
-class ArgosSession;
-class StoreWorld;
 
 class CppLoopFunctions {
  public:
@@ -24,12 +20,10 @@ class CppLoopFunctions {
   CppLoopFunctions(const CppLoopFunctions&) = delete;
   CppLoopFunctions& operator=(const CppLoopFunctions&) = delete;
 
-  /// Loads the library (or ARGOS_PLUGIN_PATH's) and makes the loop functions of the label.
-  /// Everything passed must outlive it. False with `error`: bad input (exit 2).
-  bool Load(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
-            std::string* error);
-  bool Loaded() const { return session_ != nullptr; }
-  void SetTick(uint64_t tick);
+  /// Makes the loop functions of the label in `host`'s session (loaded: its libraries hold the
+  /// label). `host` must outlive it. False with `error`: bad input (exit 2).
+  bool Load(const Model& model, ArgosHost* host, std::string* error);
+  bool Loaded() const { return host_ != nullptr; }
 
   /// "init", "pre_step", "post_step", "reset", "destroy", "post_experiment".
   bool Call(const char* hook, std::string* error);
@@ -45,8 +39,7 @@ class CppLoopFunctions {
 
  private:
   const Model* model_ = nullptr;
-  std::unique_ptr<StoreWorld> world_;
-  std::unique_ptr<ArgosSession> session_;
+  ArgosHost* host_ = nullptr;
 };
 
 }  // namespace essaim

@@ -34,8 +34,7 @@ bool CheckLinkage(const std::string& path, std::string* error) {
 }
 }  // namespace
 
-bool LoadLoopFunctionLibraries(const std::vector<std::string>& paths, std::vector<std::string>* loaded,
-                               std::string* error) {
+bool LoadArgosLibraries(const std::vector<std::string>& paths, std::vector<std::string>* loaded, std::string* error) {
   loaded->clear();
   for (const std::string& path : paths) {
     if (!CheckLinkage(path, error)) return false;
@@ -45,8 +44,7 @@ bool LoadLoopFunctionLibraries(const std::vector<std::string>& paths, std::vecto
   if (OpenLibraryGroup(*loaded, error)) return true;
   std::string names;
   for (const std::string& path : paths) names += (names.empty() ? "" : ", ") + path;
-  *error = (paths.size() == 1 ? "cannot load loop-function library " : "cannot load the loop-function libraries ") +
-           names + ": " + *error +
+  *error = (paths.size() == 1 ? "cannot load library " : "cannot load the libraries ") + names + ": " + *error +
            " (a library built against ARGoS itself, or another essaim, must be rebuilt against this essaim)";
   return false;
 }

@@ -205,7 +205,7 @@ bool StoreWorld::Add(const ArgosRobot& robot, ArgosRef* added, std::string* erro
 // A controller stopped by an error keeps its state, as ARGoS's does: its globals stay readable.
 lua_State* StoreWorld::LuaState(uint32_t robot) {
   if (robot >= controllers_.size() || !controllers_[robot]) return nullptr;
-  return controllers_[robot]->State();
+  return LuaStateOf(controllers_[robot].get());
 }
 
 std::string& StoreWorld::LogBuffer() {

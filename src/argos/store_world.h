@@ -16,7 +16,7 @@ namespace essaim {
 
 class StoreWorld : public ArgosWorld {
  public:
-  StoreWorld(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers)
+  StoreWorld(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<RobotController>>* controllers)
       : model_(model), entities_(*entities), controllers_(*controllers) {}
   void SetTick(uint64_t tick) { tick_ = tick; }
   /// Lines logged, "<O or E><text>\n" each (sim's FlushLog empties it), with those the
@@ -61,7 +61,7 @@ class StoreWorld : public ArgosWorld {
   std::string MediumProblem(const std::string& medium) const;
   const Model& model_;
   EntityStore& entities_;
-  std::vector<std::unique_ptr<LuaController>>& controllers_;
+  std::vector<std::unique_ptr<RobotController>>& controllers_;
   uint64_t tick_ = 0;
   std::string log_;
   bool floor_changed_ = false;

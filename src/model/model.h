@@ -49,9 +49,23 @@ struct DeviceConfig {
   std::string Attr(const std::string& name) const;
 };
 
+struct XmlNode {
+  std::string name;
+  int line = 0;                                                 // in the model's file
+  std::vector<std::pair<std::string, std::string>> attributes;  // in the file's order
+  std::string text;
+  std::vector<XmlNode> children;
+};
+
+/// A <lua_controller>, or a C++ controller: an element whose tag is a REGISTER_CONTROLLER
+/// label, with an optional library="..." (docs/cpp-controllers.md).
 struct ControllerDef {
   std::string id;
-  std::string script;                   // path as resolved (empty: no script)
+  std::string script;   // path as resolved (empty: no script)
+  std::string label;    // C++: the element's tag
+  std::string library;  // C++: the library's resolved path ("": none named)
+  XmlNode xml;          // C++: the element as written (Init gets its <params>)
+  bool Cpp() const { return !label.empty(); }
   AttrMap params;                       // all <params> attributes, as strings (ARGoS)
   std::vector<DeviceConfig> actuators;  // sorted by XML tag (ARGoS applies them so)
   std::vector<DeviceConfig> sensors;    // sorted by XML tag
@@ -144,14 +158,6 @@ struct LedMediumDef {
 };
 
 /// An XML element as written: C++ loop functions get theirs whole in Init(TConfigurationNode&).
-struct XmlNode {
-  std::string name;
-  int line = 0;                                                 // in the model's file
-  std::vector<std::pair<std::string, std::string>> attributes;  // in the file's order
-  std::string text;
-  std::vector<XmlNode> children;
-};
-
 struct LoopFunctionsDef {
   std::string script;  // resolved path; empty = none
   /// C++ loop functions (library and/or label, no script): the library's resolved path

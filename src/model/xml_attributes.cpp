@@ -124,4 +124,14 @@ std::string Loader::NoEndHint() const {
   return "; with no length, the run has no end unless the loop functions end it";
 }
 
+XmlNode ToXmlNode(const XMLElement* e) {
+  XmlNode node;
+  node.name = e->Name();
+  node.line = e->GetLineNum();
+  for (auto* a = e->FirstAttribute(); a; a = a->Next()) node.attributes.emplace_back(a->Name(), a->Value());
+  if (e->GetText()) node.text = e->GetText();
+  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) node.children.push_back(ToXmlNode(c));
+  return node;
+}
+
 }  // namespace essaim::xml_loader

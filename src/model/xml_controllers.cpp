@@ -1,4 +1,5 @@
-// <controllers>: each kind of controller has a reader of its own (xml_lua_controller.cpp);
+// <controllers>: each kind of controller has a reader of its own (xml_lua_controller.cpp,
+// xml_cpp_controller.cpp);
 // here what every kind holds: an id used once, its devices checked against the device table, params.
 #include <algorithm>
 #include <string>
@@ -13,10 +14,13 @@ namespace essaim::xml_loader {
 void Loader::LoadControllers(const XMLElement* e) {
   ledger_.Visit(e);
   for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
-    if (std::string(c->Name()) == "lua_controller")
+    const std::string tag = c->Name();
+    if (tag == "lua_controller")
       LoadLuaController(c);
+    else if (!c->Attribute("library") && !ClosestName(tag, {"lua_controller"}).empty())
+      Error(c, "unknown controller type <" + tag + ">; did you mean <lua_controller>?");
     else
-      Error(c, "unsupported controller type: essaim runs Lua controllers (<lua_controller>)");
+      LoadCppController(c);  // the tag is a REGISTER_CONTROLLER label
   }
 }
 

@@ -27,6 +27,10 @@ namespace essaim::xml_loader {
 
 using tinyxml2::XMLElement;
 
+/// The element as written, children and text included (C++ loop functions and controllers
+/// get it whole; xml_attributes.cpp).
+XmlNode ToXmlNode(const XMLElement* e);
+
 // Reads one document into a Model, collecting every error on the way.
 class Loader {
  public:
@@ -93,6 +97,8 @@ class Loader {
   void LoadControllers(const XMLElement* e);
   /// One kind of controller (a file each): <lua_controller> in xml_lua_controller.cpp.
   void LoadLuaController(const XMLElement* c);
+  /// A C++ controller: the tag a REGISTER_CONTROLLER label (xml_cpp_controller.cpp).
+  void LoadCppController(const XMLElement* c);
   /// What every kind holds after its id (xml_controllers.cpp); returns <params>, or null.
   const XMLElement* LoadControllerBody(const XMLElement* c, ControllerDef* def);
   void LoadDevices(const XMLElement* list, bool sensors, ControllerDef* c);
@@ -108,6 +114,8 @@ class Loader {
   void LoadLoopFunctions(const XMLElement* e);
   void LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf);
   void ReadAllBelow(const XMLElement* e);
+  /// A library="..." as ARGoS finds it (xml_library.cpp): resolved path, or "" after an error at `e`.
+  std::string ResolveLibrary(const XMLElement* e, const std::string& library);
 
   // ---- <arena> and its entities (xml_arena.cpp)
   void LoadArena(const XMLElement* e);

@@ -7,34 +7,14 @@
 
 namespace essaim::xml_loader {
 
-namespace {
-// The element as written, children and text included (C++ loop functions get it whole).
-XmlNode ToXmlNode(const XMLElement* e) {
-  XmlNode node;
-  node.name = e->Name();
-  node.line = e->GetLineNum();
-  for (auto* a = e->FirstAttribute(); a; a = a->Next()) node.attributes.emplace_back(a->Name(), a->Value());
-  if (e->GetText()) node.text = e->GetText();
-  for (auto* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) node.children.push_back(ToXmlNode(c));
-  return node;
-}
-}  // namespace
-
-// C++ loop functions: library="path" (with or without .so, beside the .argos file as
-// ARGoS resolves it) and label="..."; a label alone is looked for in ARGOS_PLUGIN_PATH's
-// libraries when the run starts.
+// C++ loop functions: library="path", found as ARGoS finds it (xml_library.cpp), and
+// label="..."; a label alone is looked for in ARGOS_PLUGIN_PATH's libraries when the run starts.
 void Loader::LoadCppLoopFunctions(const XMLElement* e, LoopFunctionsDef* lf) {
   ReadAllBelow(e);  // Init(TConfigurationNode&) may read any of them, at any depth
   lf->label = Str(e, "label");
   if (lf->label.empty()) Error(e, "C++ loop functions need label=\"...\" (the REGISTER_LOOP_FUNCTIONS label)");
   const std::string library = Str(e, "library");
-  if (library.empty()) return;
-  for (const std::string& candidate : {library, library + ".so"}) {
-    lf->library = ResolvePath(candidate);
-    if (FileExists(lf->library)) return;
-  }
-  Error(e, "library '" + library + "' not found (nor '" + library + ".so') beside the .argos file" +
-               (dir_.empty() ? std::string() : " (in " + dir_ + ")") + " or in the working directory");
+  if (!library.empty()) lf->library = ResolveLibrary(e, library);
 }
 
 // Every attribute and descendant is the loop functions' own: none is reported as unknown.

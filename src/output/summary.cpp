@@ -104,6 +104,13 @@ Value BuildSummary(const World& w, const RunInfo& info) {
   s.Set("unread_params", UnreadParams(w.unread_params));
   s.Set("outputs", Value::OfStrings(info.outputs));
   if (info.files_listed) s.Set("files", Value::OfStrings(info.files));
+  if (info.crashed) {
+    const RunInfo::Crash& c = info.crash;
+    s.Set("crash", Value::MapOf({{"robot", Text(c.robot)},
+                                 {"call", Text(c.call)},
+                                 {"signal", Text(c.signal)},
+                                 {"tick", Value::OfUnsigned(c.tick)}}));
+  }
   return s;
 }
 

@@ -26,6 +26,16 @@ struct RunInfo : RunOutcome {
   /// When not empty, summary.json's "failure" instead of the World's (a run the watchdog
   /// stopped for good).
   std::string failure;
+  /// A controller (or the loop functions, or essaim) that crashed the process: summary.json's
+  /// "crash", written by the crash handler (app/run_session.cpp) with status "crashed".
+  struct Crash {
+    std::string robot;   // its id; "" when no controller was running
+    std::string call;    // "ControlStep", "Init", a loop-function hook...
+    std::string signal;  // "SIGSEGV"
+    uint64_t tick = 0;
+  };
+  bool crashed = false;
+  Crash crash;
 };
 
 /// summary.json's text.

@@ -328,7 +328,7 @@ class Simulation {
     const size_t i = RobotIndex(robot);
     Value value;
     std::string error;
-    if (!LuaGlobalToValue(w.controllers[i]->State(), name, &value, &error))
+    if (!LuaGlobalToValue(LuaStateOf(w.controllers[i].get()), name, &value, &error))
       throw Error("lua_global: robot '" + w.model.robots[i].id + "', '" + name + "': " + error);
     return FromJsonText(ValueJsonText(value));
   }

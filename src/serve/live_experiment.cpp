@@ -226,7 +226,7 @@ Value LiveExperiment::Inspect(int robot) const {
   j.Set("controller_ok", Value::OfBool(r.controller_ok));
   j.Set("battery", Value::OfNumber(def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0));
   j.Set("actuators", ActuatorsValue(r));
-  lua_State* L = w.controllers[robot] ? w.controllers[robot]->State() : nullptr;
+  lua_State* L = LuaStateOf(w.controllers[robot].get());
   j.Set("readings", LuaGlobalTree(L, "robot"));
   j.Set("globals", LuaGlobalsTree(L));
   return j;

@@ -1,8 +1,11 @@
 #include "sim/loop_hooks.h"
 
+#include "sim/stepping.h"
+
 namespace essaim {
 
 bool CallLoopHook(World& w, const char* hook, std::string* error) {
+  const SteppingScope stepping(kSteppingLoopFunctions, hook);
   if (w.cpp_loop_functions.Loaded()) return w.cpp_loop_functions.Call(hook, error);
   return w.loop_functions.Call(hook, error);
 }
@@ -25,7 +28,7 @@ bool LoopPostExperiment(World& w, Value* metrics, bool* has_metrics, std::string
 }
 
 void SetLoopTick(World& w) {
-  if (w.cpp_loop_functions.Loaded()) w.cpp_loop_functions.SetTick(w.tick);
+  if (w.argos.Loaded()) w.argos.SetTick(w.tick);
   w.loop_functions.SetTick(w.tick);
 }
 

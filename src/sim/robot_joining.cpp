@@ -2,12 +2,23 @@
 
 #include <memory>
 
+#include "argos/cpp_controller.h"
 #include "sim/error_groups.h"
 #include "sim/world.h"
 
 namespace essaim {
 
 namespace {
+// Its Lua state made and its script's top-level chunk run, or its C++ controller constructed.
+std::unique_ptr<RobotController> MakeController(World& w, int index, std::string* error) {
+  const RobotDef& def = w.model.robots[index];
+  if (def.controller >= 0 && w.model.controllers[def.controller].Cpp())
+    return CppController::Make(w.model, index, &w.robots[index], &w.argos, error);
+  auto lua = std::make_unique<LuaController>();
+  if (!lua->Load(w.model, def, &w.robots[index], w.model.experiment.seed, w.options.lua, error)) return nullptr;
+  return lua;
+}
+
 // init() failed for a robot that runs on without its controller: recorded and printed
 // as the errors of the robots made at the start.
 void ReportInitError(World& w, int index, const std::string& message) {
@@ -25,16 +36,16 @@ bool WorldRobotJoiner::Join(int index, std::string* error) {
   const RobotDef& def = w.model.robots[index];
   const std::string& script = w.model.controllers[def.controller].script;
   if (!script.empty()) w.inputs->Add(script, "controller");
-  auto controller = std::make_unique<LuaController>();
-  if (!controller->Load(w.model, def, &w.robots[index], w.model.experiment.seed, w.options.lua, error)) return false;
+  std::unique_ptr<RobotController> controller = MakeController(w, index, error);
+  if (!controller) return false;
   std::string init_error;
-  const bool init_ok = controller->CallInit(&init_error);
+  const bool init_ok = controller->Init(&init_error);
   FlushLog(w, controller->LogBuffer(), index);
   if (!init_ok && (w.options.strict || controller->ExitCalled())) {
     *error = init_error;
     return false;
   }
-  if (init_ok && !script.empty() && !controller->HasFunction("step")) {
+  if (init_ok && !script.empty() && !controller->HasStep()) {
     *error = "robot " + def.id + ": " + script + ": no global function 'step' after init()";
     return false;
   }

@@ -1,6 +1,7 @@
 #include "sim/run_end.h"
 
 #include "sim/loop_hooks.h"
+#include "sim/stepping.h"
 
 namespace essaim {
 
@@ -12,7 +13,8 @@ bool FinishRun(World& w, Value* metrics, bool* has_metrics, std::string* error) 
   if (ok) ok = DestroyLoopFunctions(w, error);
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     std::string err;
-    if (w.robots[i].controller_ok && !w.controllers[i]->CallDestroy(&err)) {
+    const SteppingScope stepping(static_cast<int>(i), "Destroy");
+    if (w.robots[i].controller_ok && !w.controllers[i]->Destroy(&err)) {
       w.controller_errors.push_back({w.model.robots[i].id, w.tick, err});
       if (w.controllers[i]->ExitCalled() && ok) {
         ok = false;

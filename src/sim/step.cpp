@@ -5,6 +5,7 @@
 #include "devices/devices.h"
 #include "sim/error_groups.h"
 #include "sim/loop_hooks.h"
+#include "sim/stepping.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -132,10 +133,9 @@ void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::Chunk
   if (!r.alive || !r.controller_ok) return;
   const auto sense_start = Clock::now();
   SenseRobot(ctx, w.model.robots[i], r);
-  LuaController& c = *w.controllers[i];
-  const bool pushed = c.PushReadings(&w.pending_errors[i]);
   const auto control_start = Clock::now();
-  if (!pushed || !c.CallStep(&w.pending_errors[i])) {
+  const SteppingScope stepping(i, "ControlStep");
+  if (!w.controllers[i]->Step(&w.pending_errors[i])) {
     r.controller_ok = false;
     r.cmd.wheel_left = r.cmd.wheel_right = 0;
     r.cmd.wheels_new = true;

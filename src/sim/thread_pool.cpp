@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/alt_stack.h"
+
 namespace essaim {
 
 ThreadPool::ThreadPool(int threads) {
@@ -86,6 +88,7 @@ void ThreadPool::Run(int n, bool balanced, Job job, void* ctx) {
 }
 
 void ThreadPool::WorkerLoop(int worker) {
+  UseAlternateSignalStack();  // controllers run here: a crash handler must run after an overflow
   long seen = 0;
   for (;;) {
     Job job;

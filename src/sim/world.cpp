@@ -2,12 +2,14 @@
 
 #include <algorithm>
 
+#include "argos/cpp_controller.h"
 #include "core/rng.h"
 #include "core/stopwatch.h"
 #include "devices/devices.h"
 #include "sim/error_groups.h"
 #include "sim/loop_hooks.h"
 #include "sim/robot_joining.h"
+#include "sim/stepping.h"
 #include "sim/thread_pool.h"
 
 namespace essaim {
@@ -67,7 +69,7 @@ std::string MissingStep(World& w) {
   size_t count = 0;
   for (size_t i = 0; i < w.controllers.size(); ++i) {
     const std::string& script = w.model.controllers[w.model.robots[i].controller].script;
-    if (script.empty() || !w.robots[i].controller_ok || w.controllers[i]->HasFunction("step")) continue;
+    if (script.empty() || !w.robots[i].controller_ok || w.controllers[i]->HasStep()) continue;
     if (count++ == 0) first = "robot " + w.model.robots[i].id + ": " + script;
   }
   if (count == 0) return {};
@@ -78,6 +80,11 @@ std::string MissingStep(World& w) {
 }  // namespace
 
 namespace {
+bool IsCpp(const World& w, int robot) {
+  const int c = w.model.robots[robot].controller;
+  return c >= 0 && w.model.controllers[c].Cpp();
+}
+
 // Robot states, sized once and filled in place: each robot's random streams, its devices
 // (bodies in the physics world), then the media's buffers and the thread pool.
 void MakeRobots(World& w, const SimOptions& options) {
@@ -93,21 +100,31 @@ void MakeRobots(World& w, const SimOptions& options) {
   w.pool = std::make_unique<ThreadPool>(w.threads);
 }
 
-// One state per robot, its top-level chunk run, on the pool: the states share nothing
+// One Lua state per robot, its top-level chunk run, on the pool: the states share nothing
 // (the compiled scripts and the input list lock), and each thread writes only its own
-// robots' slots. A failure reports the lowest robot index's error, as a serial loop would.
+// robots' slots. C++ controllers after, one at a time in robot order, as ARGoS makes them
+// (what their constructors draw from CRandom's "argos" category depends on that order). A
+// failure reports the lowest robot index's error, as a serial loop would.
 bool MakeControllerStates(World& w, std::string* error) {
   const size_t n = w.model.robots.size();
   w.controllers.resize(n);
   std::vector<char> failed(n, 0);
   auto make = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) {
-      w.controllers[i] = std::make_unique<LuaController>();
-      failed[i] = !w.controllers[i]->Load(w.model, w.model.robots[i], &w.robots[i], w.model.experiment.seed,
-                                          w.options.lua, &w.pending_errors[i]);
+      if (IsCpp(w, i)) continue;
+      auto lua = std::make_unique<LuaController>();
+      failed[i] = !lua->Load(w.model, w.model.robots[i], &w.robots[i], w.model.experiment.seed, w.options.lua,
+                             &w.pending_errors[i]);
+      w.controllers[i] = std::move(lua);
     }
   };
   w.pool->ParallelForBalanced(static_cast<int>(n), make);
+  for (int i = 0; i < static_cast<int>(n); ++i) {
+    if (!IsCpp(w, i)) continue;
+    const SteppingScope stepping(i, "constructor");
+    w.controllers[i] = CppController::Make(w.model, i, &w.robots[i], &w.argos, &w.pending_errors[i]);
+    failed[i] = !w.controllers[i];
+  }
   const auto first = std::find(failed.begin(), failed.end(), 1);
   if (first != failed.end()) *error = w.pending_errors[static_cast<size_t>(first - failed.begin())];
   for (std::string& e : w.pending_errors) e.clear();
@@ -117,8 +134,9 @@ bool MakeControllerStates(World& w, std::string* error) {
 // The loop functions' state (first: its script defines floor_color), then the
 // controllers'; false with `error` when a script fails.
 bool MakeLuaStates(World& w, std::string* error) {
+  if (ArgosHost::Needed(w.model) && !w.argos.Load(w.model, &w.entities, &w.controllers, error)) return false;
   if (w.model.loop_functions.Cpp()) {
-    if (!w.cpp_loop_functions.Load(w.model, &w.entities, &w.controllers, error)) return false;
+    if (!w.cpp_loop_functions.Load(w.model, &w.argos, error)) return false;
   } else {
     w.loop_functions.SetLimits(w.options.lua);
     if (!w.loop_functions.Load(w.model, &w.entities, &w.controllers, w.options.output_dir, error)) return false;
@@ -130,32 +148,49 @@ bool MakeLuaStates(World& w, std::string* error) {
   return true;
 }
 
-// Every controller's init() on the pool, then their errors in robot order. A serial loop
-// stops at the first error that ends the run (strict, os.exit): the robots after it keep
-// only what their top-level chunk logged, and their errors are not reported, as then.
-void RunControllerInits(World& w) {
+// A C++ controller's Init that threw a configuration error (a bad <params>, GetSensor of a
+// device its entry does not declare): bad input, as the loop functions' (World::Create).
+bool InitConfigurationError(World& w, int i) {
+  return IsCpp(w, i) && static_cast<CppController&>(*w.controllers[i]).LastErrorIsConfiguration();
+}
+
+// Every Lua controller's init() on the pool, then every C++ controller's Init in robot order
+// (ARGoS's order, which CRandom's draws depend on), then their errors in robot order. A serial
+// loop stops at the first error that ends the run (strict, os.exit, a configuration error):
+// the robots after it keep only what their top-level chunk logged, and their errors are not
+// reported, as then. True when that error was a configuration error.
+bool RunControllerInits(World& w) {
   const size_t n = w.controllers.size();
-  std::vector<char> failed(n, 0);
+  std::vector<char> failed(n, 0), bad_input(n, 0);
   std::vector<size_t> logged_before_init(n, 0);
   auto init = [&](int begin, int end) {
     for (int i = begin; i < end; ++i) {
+      if (IsCpp(w, i)) continue;
       logged_before_init[i] = w.controllers[i]->LogBuffer().size();
-      failed[i] = !w.controllers[i]->CallInit(&w.pending_errors[i]);
+      const SteppingScope stepping(i, "Init");
+      failed[i] = !w.controllers[i]->Init(&w.pending_errors[i]);
     }
   };
   w.pool->ParallelForBalanced(static_cast<int>(n), init);
+  for (size_t i = 0; i < n; ++i)
+    if (IsCpp(w, static_cast<int>(i))) {
+      const SteppingScope stepping(static_cast<int>(i), "Init");
+      failed[i] = !w.controllers[i]->Init(&w.pending_errors[i]);
+      bad_input[i] = failed[i] && InitConfigurationError(w, static_cast<int>(i));
+    }
   size_t last = n;  // the robot whose error ends the run, or n
   for (size_t i = 0; i < n && last == n; ++i) {
     if (!failed[i]) continue;
     w.robots[i].controller_ok = false;
     w.controller_errors.push_back({w.model.robots[i].id, 0, w.pending_errors[i]});
-    if (w.options.strict || w.controllers[i]->ExitCalled()) {
+    if (w.options.strict || w.controllers[i]->ExitCalled() || bad_input[i]) {
       w.failure = w.pending_errors[i];
       last = i;
     }
   }
   for (size_t i = last + 1; i < n; ++i) w.controllers[i]->LogBuffer().resize(logged_before_init[i]);
   for (std::string& e : w.pending_errors) e.clear();
+  return last < n && bad_input[last];
 }
 
 // Every controller's init(), then the loop functions'; errors as World::Create says.
@@ -163,8 +198,9 @@ void RunControllerInits(World& w) {
 // where): bad input, not a run that failed.
 bool RunInits(World& w) {
   const SimOptions& options = w.options;
-  RunControllerInits(w);
+  const bool bad_controller_params = RunControllerInits(w);
   for (size_t i = 0; i < w.controllers.size(); ++i) FlushLog(w, w.controllers[i]->LogBuffer(), static_cast<int>(i));
+  if (bad_controller_params) return false;
   if (w.failure.empty()) w.failure = MissingStep(w);
   // Printed like step() errors, identical ones grouped.
   if (options.log_sink)

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "argos/argos_host.h"
 #include "argos/cpp_loop_functions.h"
 #include "core/input_files.h"
 #include "devices/entity_store.h"
@@ -114,7 +115,10 @@ class World {
   PhysicsWorld physics;
   EntityStore entities;
   RobotStates robots;
-  std::vector<std::unique_ptr<LuaController>> controllers;
+  /// The ARGoS side (libraries, session), when the model names C++ loop functions or
+  /// controllers; before both, so that it outlives them.
+  ArgosHost argos;
+  std::vector<std::unique_ptr<RobotController>> controllers;
   LoopFunctions loop_functions;
   /// C++ loop functions (<loop_functions library/label>), when the model names them.
   CppLoopFunctions cpp_loop_functions;

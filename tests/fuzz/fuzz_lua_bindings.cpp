@@ -134,7 +134,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!world) std::abort();
   Bytes in{data, size};
   for (int call = 0; call < 16 && in.n > 0; ++call) {
-    lua_State* L = world->controllers[in.U8() & 1]->State();
+    lua_State* L = LuaStateOf(world->controllers[in.U8() & 1].get());
     const char** fn = kFunctions[in.U8() % kFunctionCount];
     lua_getglobal(L, "robot");
     lua_getfield(L, -1, fn[0]);

@@ -41,7 +41,7 @@ end
 )";
 
 double Global(World& w, int robot, const char* name) {
-  lua_State* L = w.controllers[robot]->State();
+  lua_State* L = LuaStateOf(w.controllers[robot].get());
   lua_getglobal(L, name);
   const double v = lua_tonumber(L, -1);
   lua_pop(L, 1);

@@ -20,7 +20,7 @@ struct Globals {
   }
   bool Get(const std::string& name, Json* out, std::string* error) {
     Value value;
-    if (!LuaGlobalToValue(scene.world->controllers[0]->State(), name, &value, error)) return false;
+    if (!LuaGlobalToValue(LuaStateOf(scene.world->controllers[0].get()), name, &value, error)) return false;
     *out = ToJson(value);
     return true;
   }

@@ -195,7 +195,7 @@ TEST(LuaWatchdog, MemoryHogIsClosedAndFreedOthersUntouched) {
   EXPECT_EQ(s.world->controller_errors[0].robot, "hog");
   EXPECT_NE(s.world->controller_errors[0].message.find("memory limit exceeded (8 MiB per Lua state"), std::string::npos)
       << s.world->controller_errors[0].message;
-  EXPECT_EQ(s.world->controllers[0]->State(), nullptr);
+  EXPECT_EQ(LuaStateOf(s.world->controllers[0].get()), nullptr);
   EXPECT_EQ(s.world->controllers[0]->Memory().bytes, 0u);
   EXPECT_GT(s.world->physics.RobotPose(1).x, 0.03);  // 9 ticks at 5 cm/s
   Value metrics_tree;
@@ -243,7 +243,7 @@ end)");
   EXPECT_EQ(s.world->controller_errors[0].robot, "hog");
   EXPECT_NE(e.find("memory limit exceeded (8 MiB per Lua state"), std::string::npos) << e;
   EXPECT_NE(e.find("(filling its sensor readings)"), std::string::npos) << e;
-  EXPECT_EQ(s.world->controllers[0]->State(), nullptr);
+  EXPECT_EQ(LuaStateOf(s.world->controllers[0].get()), nullptr);
   EXPECT_EQ(s.world->controllers[0]->Memory().bytes, 0u);
   for (int k = 1; k <= 4; ++k) EXPECT_TRUE(s.world->robots[k].controller_ok);
   EXPECT_EQ(s.world->tick, 60u);

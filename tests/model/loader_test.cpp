@@ -1,6 +1,9 @@
 // The .argos loader: every error with file:line and element, --set, <distribute>.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+
 #include "support/scene.h"
 
 namespace essaim {
@@ -119,13 +122,56 @@ TEST(Loader, CppLoopFunctionsLibraryIsFoundBesideTheFileWithOrWithoutSo) {
   EXPECT_EQ(m->loop_functions.xml.children[0].attributes[0].second, "1");
 }
 
+// A C++ controller: the tag is the REGISTER_CONTROLLER label, library= found as ARGoS finds
+// it (ARGOS_PLUGIN_PATH first, with and without .so), the element kept whole for Init.
+TEST(Loader, CppControllerEntries) {
+  TempDir d;
+  d.Write("c.lua", "");
+  std::filesystem::create_directory(d.path() + "/plugins");
+  d.Write("plugins/libbot.so", "");
+  d.Write("libother.so", "");
+  setenv("ARGOS_PLUGIN_PATH", (d.path() + "/plugins").c_str(), 1);
+  const std::string cpp =
+      "<bot_controller id=\"b\" library=\"libbot\"><actuators/><sensors/>"
+      "<params speed=\"3\"><wheel max=\"5\"/></params></bot_controller>"
+      "<other_controller id=\"o\" library=\"libother\"><actuators/><sensors/><params/></other_controller>"
+      "<label_alone id=\"l\"><actuators/><sensors/><params/></label_alone>";
+  ErrorList e;
+  auto m = LoadText(d, Experiment(FootBot("fb0", 1, 2, 90, "b"), kCtrl + cpp), &e);
+  unsetenv("ARGOS_PLUGIN_PATH");
+  ASSERT_TRUE(m) << e.Format();
+  EXPECT_TRUE(e.Format().empty()) << e.Format();  // every attribute and child read
+  const ControllerDef& b = m->controllers[1];
+  EXPECT_TRUE(b.Cpp() && !m->controllers[0].Cpp());
+  EXPECT_EQ(b.label, "bot_controller");
+  EXPECT_EQ(b.library, d.path() + "/plugins/libbot.so");
+  EXPECT_EQ(b.params.at("speed"), "3");
+  ASSERT_EQ(b.xml.children.size(), 3u);
+  EXPECT_EQ(b.xml.children[2].children[0].name, "wheel");
+  EXPECT_EQ(m->controllers[2].library, d.path() + "/libother.so");  // beside the .argos file
+  EXPECT_TRUE(m->controllers[3].Cpp() && m->controllers[3].library.empty());
+  EXPECT_EQ(m->robots[0].controller, 1);
+}
+
+TEST(Loader, MisspeltLuaControllerIsNotTakenForALabel) {
+  TempDir d;
+  ErrorList e;
+  EXPECT_FALSE(
+      LoadText(d, Experiment("", "<lua_controler id=\"c\"><actuators/><sensors/><params/></lua_controler>"), &e));
+  EXPECT_NE(e.Format().find("unknown controller type <lua_controler>; did you mean <lua_controller>?"),
+            std::string::npos)
+      << e.Format();
+}
+
 TEST(Loader, CppLoopFunctionsMissingLibraryOrLabelAreClearErrors) {
   TempDir d;
   d.Write("c.lua", "");
   ErrorList e;
   EXPECT_FALSE(LoadText(d, Experiment("", kCtrl, 10, 1, "<loop_functions library=\"libz\" label=\"x\"/>"), &e));
-  EXPECT_NE(e.Format().find("library 'libz' not found (nor 'libz.so') beside the .argos file (in " + d.path() +
-                            ") or in the working directory"),
+  // As ARGoS tries them: the working directory ("."), as written then with .so; essaim then
+  // tries beside the .argos file.
+  EXPECT_NE(e.Format().find("library 'libz' not found; tried ./libz, ./libz.so, " + d.path() + "/libz, " + d.path() +
+                            "/libz.so (ARGOS_PLUGIN_PATH is not set)"),
             std::string::npos)
       << e.Format();
   ErrorList e2;

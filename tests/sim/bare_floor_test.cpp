@@ -87,7 +87,7 @@ void ExpectReplayComputesWhatTheRunComputed(BareAllocator allocator) {
     }
   }
   for (size_t i = 0; i < n; ++i) {
-    lua_State* real = w.controllers[i]->State();
+    lua_State* real = LuaStateOf(w.controllers[i].get());
     EXPECT_GT(Global(real, "messages"), 30) << "robot " << i << " heard too little to test the RAB replay";
     EXPECT_EQ(Global(bare[i]->State(), "messages"), Global(real, "messages")) << "robot " << i;
     EXPECT_EQ(Global(bare[i]->State(), "sum"), Global(real, "sum")) << "robot " << i;  // bit-identical

@@ -24,7 +24,7 @@ struct Timeseries {
 struct LoopContext {
   const Model* model = nullptr;
   EntityStore* entities = nullptr;
-  std::vector<std::unique_ptr<LuaController>>* controllers = nullptr;  // may be empty until init()
+  std::vector<std::unique_ptr<RobotController>>* controllers = nullptr;  // may be empty until init()
   std::string script;
   uint64_t tick = 0;
   const void* handle_meta = nullptr;  // the handle metatable, compared by address

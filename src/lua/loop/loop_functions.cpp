@@ -176,7 +176,7 @@ void LoopFunctions::SetPackagePath(const Model& model) {
 }
 
 bool LoopFunctions::Load(const Model& model, EntityStore* entities,
-                         std::vector<std::unique_ptr<LuaController>>* controllers, const std::string& output_dir,
+                         std::vector<std::unique_ptr<RobotController>>* controllers, const std::string& output_dir,
                          std::string* error) {
   context_.model = &model;
   context_.entities = entities;

@@ -28,7 +28,7 @@ class LoopFunctions {
   /// Loads the script and runs its top-level chunk. Everything passed must outlive it;
   /// `controllers` may still be empty (filled before init()). Scripts reach the World only
   /// through `entities`.
-  bool Load(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<LuaController>>* controllers,
+  bool Load(const Model& model, EntityStore* entities, std::vector<std::unique_ptr<RobotController>>* controllers,
             const std::string& output_dir, std::string* error);
   bool Loaded() const { return L_ != nullptr; }
   /// The watchdog's limits and the sandbox, as for controllers; set before Load.

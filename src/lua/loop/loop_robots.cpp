@@ -102,7 +102,7 @@ bool RunInController(lua_State* C, lua_CFunction fn, CopyJob* job) {
 
 lua_State* ControllerState(LoopContext* ctx, int i) {
   if (!ctx->controllers || static_cast<size_t>(i) >= ctx->controllers->size()) return nullptr;
-  return (*ctx->controllers)[i]->State();  // null: no script, or closed after its memory limit
+  return LuaStateOf((*ctx->controllers)[i].get());  // null: no script, or closed after its memory limit
 }
 
 int LuaGlobal(lua_State* L) {

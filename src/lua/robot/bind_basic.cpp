@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "devices/commands.h"
 #include "lua/robot/lua_devices.h"
 #include "lua/robot/lua_math_types.h"
 
@@ -13,9 +14,8 @@ int SetVelocity(lua_State* L) {
   if (lua_gettop(L) != 2) return luaL_error(L, "robot.wheels.set_velocity(left, right) expects 2 arguments");
   RobotState* r = UpvalueRobot(L);
   const char* fn = "robot.wheels.set_velocity";
-  r->cmd.wheel_left = std::clamp(CheckFiniteNumber(L, 1, fn) * 0.01, -kMaxWheelSpeed, kMaxWheelSpeed);
-  r->cmd.wheel_right = std::clamp(CheckFiniteNumber(L, 2, fn) * 0.01, -kMaxWheelSpeed, kMaxWheelSpeed);
-  r->cmd.wheels_new = true;
+  const double left = CheckFiniteNumber(L, 1, fn);
+  SetWheelVelocity(*r, left, CheckFiniteNumber(L, 2, fn));
   return 0;
 }
 

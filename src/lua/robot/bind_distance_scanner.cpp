@@ -9,6 +9,7 @@
 // new readings instead of the old ones; docs/compatibility.md.)
 #include <cmath>
 
+#include "devices/commands.h"
 #include "lua/robot/lua_devices.h"
 
 namespace essaim {
@@ -18,31 +19,27 @@ constexpr int kMaxReadings = 12;  // per array: 6 rays × 2 sensors when rotatin
 
 int Enable(lua_State* L) {
   if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.enable() expects no arguments");
-  UpvalueRobot(L)->cmd.scanner_mode = ScannerMode::Position;  // at the last requested angle
+  ScannerEnable(*UpvalueRobot(L));  // at the last requested angle
   return 0;
 }
 
 int Disable(lua_State* L) {
   if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.disable() expects no arguments");
-  UpvalueRobot(L)->cmd.scanner_mode = ScannerMode::Off;
+  ScannerDisable(*UpvalueRobot(L));
   return 0;
 }
 
 int SetAngle(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_angle(angle) expects 1 argument");
   const double a = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_angle");
-  RobotState* r = UpvalueRobot(L);
-  r->cmd.scanner_mode = ScannerMode::Position;
-  r->cmd.scanner_angle = a;
+  ScannerSetAngle(*UpvalueRobot(L), a);
   return 0;
 }
 
 int SetRpm(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_rpm(rpm) expects 1 argument");
   const double rpm = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_rpm");
-  RobotState* r = UpvalueRobot(L);
-  r->cmd.scanner_mode = ScannerMode::Speed;
-  r->cmd.scanner_speed = rpm * kPi / 30;
+  ScannerSetRpm(*UpvalueRobot(L), rpm);
   return 0;
 }
 

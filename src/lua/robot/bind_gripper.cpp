@@ -1,20 +1,21 @@
 // robot.gripper: lock_positive() / lock_negative() / unlock() set the
 // aperture (+pi/2, -pi/2, 0) applied in the next Act. Arguments are ignored, as ARGoS.
+#include "devices/commands.h"
 #include "lua/robot/lua_devices.h"
 
 namespace essaim {
 
 namespace {
 int LockPositive(lua_State* L) {
-  UpvalueRobot(L)->cmd.gripper_aperture = kPi / 2;
+  SetGripperAperture(*UpvalueRobot(L), kPi / 2);
   return 0;
 }
 int LockNegative(lua_State* L) {
-  UpvalueRobot(L)->cmd.gripper_aperture = -kPi / 2;
+  SetGripperAperture(*UpvalueRobot(L), -kPi / 2);
   return 0;
 }
 int Unlock(lua_State* L) {
-  UpvalueRobot(L)->cmd.gripper_aperture = 0;
+  SetGripperAperture(*UpvalueRobot(L), 0);
   return 0;
 }
 }  // namespace

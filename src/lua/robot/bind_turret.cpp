@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "devices/commands.h"
 #include "lua/robot/lua_devices.h"
 
 namespace essaim {
@@ -19,24 +20,24 @@ double OneNumber(lua_State* L, const char* fn) {
 }
 int SetRotation(lua_State* L) {
   double a = OneNumber(L, "set_rotation");
-  UpvalueRobot(L)->cmd.turret_rotation = a;
+  TurretSetRotation(*UpvalueRobot(L), a);
   return 0;
 }
 int SetRotationSpeed(lua_State* L) {
   double x = OneNumber(L, "set_rotation_speed");
-  UpvalueRobot(L)->cmd.turret_speed = std::clamp(x * kPi / 30, -kMaxTurretSpeed, kMaxTurretSpeed);
+  TurretSetRotationSpeed(*UpvalueRobot(L), x);
   return 0;
 }
 int SetPositionMode(lua_State* L) {
-  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Position;
+  TurretSetMode(*UpvalueRobot(L), TurretMode::Position);
   return 0;
 }
 int SetSpeedMode(lua_State* L) {
-  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Speed;
+  TurretSetMode(*UpvalueRobot(L), TurretMode::Speed);
   return 0;
 }
 int SetPassiveMode(lua_State* L) {
-  UpvalueRobot(L)->cmd.turret_mode = TurretMode::Passive;
+  TurretSetMode(*UpvalueRobot(L), TurretMode::Passive);
   return 0;
 }
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "devices/robot_controller.h"
 #include "devices/robot_state.h"
 #include "lua/host/lua_guard.h"
 #include "lua/host/stdout_lines.h"
@@ -17,10 +18,10 @@ struct lua_State;
 
 namespace essaim {
 
-class LuaController {
+class LuaController : public RobotController {
  public:
   LuaController() = default;
-  ~LuaController();
+  ~LuaController() override;
   // Lua keeps a pointer to guard_ and closures keep `this`: never copied or moved.
   LuaController(const LuaController&) = delete;
   LuaController& operator=(const LuaController&) = delete;
@@ -37,17 +38,23 @@ class LuaController {
   bool CallInit(std::string* error) { return Call("init", false, CallKind::Setup, error); }
   bool CallStep(std::string* error) { return Call("step", true, CallKind::Step, error); }
   bool CallDestroy(std::string* error) { return Call("destroy", false, CallKind::Setup, error); }
+  // RobotController: init(), PushReadings then step(), destroy().
+  bool Init(std::string* error) override { return CallInit(error); }
+  bool Step(std::string* error) override { return PushReadings(error) && CallStep(error); }
+  bool Destroy(std::string* error) override { return CallDestroy(error); }
+  bool HasStep() override { return HasFunction("step"); }
   /// The script defines global function `name` (false without a script or a state).
   bool HasFunction(const char* name);
 
   /// log()/logerr() output since the last take, in call order ("" if none). Buffered so
   /// robots stepped on several threads still print in robot order.
-  std::string& LogBuffer() { return log_; }
-  const LuaGuard& Memory() const { return guard_; }
+  std::string& LogBuffer() override { return log_; }
+  const LuaGuard& Guard() const { return guard_; }
+  ControllerMemory Memory() const override { return {guard_.bytes, guard_.peak, guard_.allocations}; }
   /// robot.params keys never read so far and those read (nothing once the state is closed).
-  void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const;
+  void ParamReads(std::vector<std::string>* unread, std::vector<std::string>* read) const override;
   /// The script called os.exit: the run ends (as an error), not just this robot.
-  bool ExitCalled() const { return !guard_.exit_called.empty(); }
+  bool ExitCalled() const override { return !guard_.exit_called.empty(); }
   ::lua_State* State() { return L_; }
 
  private:
@@ -75,5 +82,11 @@ class LuaController {
   LuaDeviceRefs refs_;    // device tables refreshed each tick
   TrackedParams params_;  // robot.params
 };
+
+/// The Lua state of a robot's controller; null for a C++ controller, or a Lua one with no state.
+inline ::lua_State* LuaStateOf(RobotController* c) {
+  auto* lua = dynamic_cast<LuaController*>(c);
+  return lua ? lua->State() : nullptr;
+}
 
 }  // namespace essaim

@@ -38,8 +38,6 @@ RobotState* UpvalueRobot(lua_State* L);
 /// and the value (a non-finite command would poison the physics).
 double CheckFiniteNumber(lua_State* L, int arg, const char* fn);
 /// Clamps of finite but absurd commands (docs/compatibility.md).
-constexpr double kMaxWheelSpeed = 10.0;  // m/s: 1 m per tick at 10 ticks/s, under Box2D's 2 m step cap
-constexpr double kMaxTurretSpeed = 20 * 3.141592653589793;  // rad/s (600 in set_rotation_speed units)
 
 // ---- device families (lua/robot/bind_*.cpp)
 void CreateWheelsActuator(lua_State* L, int t, RobotState* robot);
