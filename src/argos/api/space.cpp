@@ -86,7 +86,9 @@ CSpace& CSimulator::GetSpace() { return essaim::RequireSession("GetSpace").space
 
 CLoopFunctions& CSimulator::GetLoopFunctions() {
   essaim::ArgosSession::State& session = essaim::RequireSession("GetLoopFunctions");
-  if (!session.loop_functions) THROW_ARGOSEXCEPTION("GetLoopFunctions: the loop functions are being made");
+  if (!session.loop_functions)
+    THROW_ARGOSEXCEPTION("GetLoopFunctions: the experiment has no C++ loop functions"
+                         << " (none declared, or they are being made)");
   return *session.loop_functions;
 }
 
@@ -95,6 +97,22 @@ CMedium& CSimulator::GetMediumById(const std::string& str_id) {
   auto found = session.media.find(str_id);
   if (found == session.media.end()) THROW_ARGOSEXCEPTION("Medium \"" << str_id << "\" not found (only <led> media)");
   return *found->second;
+}
+
+CPhysicsEngine& CSimulator::GetPhysicsEngine(const std::string&) const {
+  return essaim::RequireSession("GetPhysicsEngine").physics;
+}
+CPhysicsEngine::TVector& CSimulator::GetPhysicsEngines() {
+  return essaim::RequireSession("GetPhysicsEngines").physics_engines;
+}
+
+namespace {
+Real simulation_clock_tick = 0.1;  // ARGoS's is a static too; each session sets it
+}  // namespace
+Real CPhysicsEngine::GetSimulationClockTick() { return simulation_clock_tick; }
+Real CPhysicsEngine::GetInverseSimulationClockTick() { return 1 / simulation_clock_tick; }
+void CPhysicsEngine::SetSimulationClockTick(Real f_simulation_clock_tick) {
+  simulation_clock_tick = f_simulation_clock_tick;
 }
 
 UInt32 CSimulator::GetRandomSeed() const {
