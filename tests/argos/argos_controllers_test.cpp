@@ -8,6 +8,7 @@
 #include <argos3/core/utility/logging/argos_log.h>
 #include <argos3/core/utility/math/rng.h>
 #include <argos3/plugins/robots/foot-bot/control_interface/ci_footbot_light_sensor.h>
+#include <argos3/plugins/robots/foot-bot/simulator/footbot_entity.h>
 #include <argos3/plugins/robots/foot-bot/simulator/footbot_motor_ground_rotzonly_sensor.h>
 #include <argos3/plugins/robots/foot-bot/simulator/footbot_proximity_default_sensor.h>
 #include <argos3/plugins/robots/generic/control_interface/ci_differential_steering_actuator.h>
@@ -124,6 +125,17 @@ TEST_F(ArgosControllers, AnUnknownLabelOrLibraryIsRefused) {
   spec.label = "probe_controller";
   EXPECT_FALSE(session.CreateController(0, "fb0", {"/nowhere/libother.so"}, spec, &io[0], &error));
   EXPECT_NE(error.find("registers it, but"), std::string::npos) << error;
+}
+
+TEST_F(ArgosControllers, AControllerBuiltForAnotherApiVersionIsRefused) {
+  RegisterController(
+      "old_probe", []() -> CCI_Controller* { return new CProbe; }, ARGOS_ESSAIM_API_VERSION - 1);
+  ArgosControllerSpec spec{"old_probe", "ctl", "test.argos:7", {}};
+  EXPECT_FALSE(session.CreateController(0, "fb0", {ProbeLibrary()}, spec, &io[0], &error));
+  EXPECT_NE(error.find("controller 'old_probe' was built for essaim's ARGoS API version 3, this essaim provides "
+                       "version 4: rebuild the library against this essaim"),
+            std::string::npos)
+      << error;
 }
 
 TEST_F(ArgosControllers, TheIdIsTheRobotsFromInitOnAndTheHooksRun) {
@@ -263,6 +275,19 @@ TEST_F(ArgosControllers, LogLinesGoToTheRobotWhoseControllerWroteThemOnAnyThread
   }
   EXPECT_TRUE(world.log.empty());
   EXPECT_EQ(session.ControllerLog(7), "");  // no controller, no lines
+}
+
+// Loop functions (or another robot's controller) reach the C++ controller itself through the
+// robot's entity, and cast it to its class.
+TEST_F(ArgosControllers, TheRobotsEntityGivesItsCppController) {
+  world.robots = {"fb0"};
+  ASSERT_TRUE(Create(0)) << error;
+  g_init["fb0"] = [](CProbe& c) {
+    CSpace::TMapPerType& robots = CSimulator::GetInstance().GetSpace().GetEntitiesByType("foot-bot");
+    CFootBotEntity* robot = any_cast<CFootBotEntity*>(robots.at("fb0"));
+    EXPECT_EQ(dynamic_cast<CProbe*>(&robot->GetControllableEntity().GetController()), &c);
+  };
+  ASSERT_TRUE(Init(0)) << error;
 }
 
 TEST_F(ArgosControllers, AControllerReachesTheSimulator) {

@@ -251,7 +251,8 @@ TEST_F(ArgosDevices, WheelsLedsAndGripperReachTheRobot) {
   EXPECT_EQ(io.leds[12].alpha, 255);
   EXPECT_EQ(io.leds[3].color.r, 0);
   EXPECT_EQ(io.leds[3].alpha, 100);  // an intensity is the colour's alpha
-  EXPECT_EQ(io.leds[0].sets, 0);     // only what changed is sent
+  EXPECT_EQ(io.leds[0].sets, 1);     // black after Init, as ARGoS's; then only what changed
+  EXPECT_EQ(io.leds[12].sets, 2);
   EXPECT_DOUBLE_EQ(io.gripper, ARGOS_PI / 2);
   probe->step = [&] {
     probe->leds->SetAllColors(CColor::GREEN);

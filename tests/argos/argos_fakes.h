@@ -13,7 +13,8 @@ namespace essaim {
 class FakeWorld : public ArgosWorld {
  public:
   uint64_t tick = 0, seed = 12345;
-  std::vector<std::string> log;  // "O text" / "E text"
+  std::vector<std::string> log;     // "O text" / "E text"
+  std::vector<std::string> robots;  // foot-bots' ids, by index
   uint64_t Tick() const override { return tick; }
   uint64_t Seed() const override { return seed; }
   uint64_t LengthTicks() const override { return 0; }
@@ -22,11 +23,16 @@ class FakeWorld : public ArgosWorld {
     for (int i = 0; i < 3; ++i) size[i] = 4, center[i] = 0;
   }
   std::vector<std::string> LedMedia() const override { return {}; }
-  std::vector<ArgosRef> Entities(int) const override { return {}; }
-  uint64_t LayoutVersion() const override { return 0; }
-  bool Live(const ArgosRef&) const override { return false; }
-  std::string Id(const ArgosRef&) const override { return ""; }
-  bool Pose(const ArgosRef&, ArgosPose*) const override { return false; }
+  std::vector<ArgosRef> Entities(int kind) const override {
+    std::vector<ArgosRef> out;
+    if (kind <= kArgosFootBot)
+      for (uint32_t i = 0; i < robots.size(); ++i) out.push_back({kArgosFootBot, i});
+    return out;
+  }
+  uint64_t LayoutVersion() const override { return robots.size(); }
+  bool Live(const ArgosRef& e) const override { return e.kind == kArgosFootBot && e.serial < robots.size(); }
+  std::string Id(const ArgosRef& e) const override { return Live(e) ? robots[e.serial] : ""; }
+  bool Pose(const ArgosRef& e, ArgosPose*) const override { return Live(e); }
   bool Movable(const ArgosRef&) const override { return false; }
   bool Move(const ArgosRef&, const ArgosPose&, bool, bool) override { return false; }
   ArgosBody Body(const ArgosRef&) const override { return {}; }

@@ -83,9 +83,11 @@ void CDifferentialSteeringDefaultActuator::Reset() {
   m_fCurrentVelocity[0] = m_fCurrentVelocity[1] = 0;
 }
 
+// ARGoS's actuator sets every LED at each act, black until told otherwise: the first Update
+// sends them all (no LED is transparent black), later ones what changed.
 void CLEDsDefaultActuator::SetRobotLEDs(size_t un_count) {
   m_tSettings.assign(un_count, CColor::BLACK);
-  m_tSent.assign(un_count, CColor::BLACK);
+  m_tSent.assign(un_count, CColor(0, 0, 0, 0));
 }
 void CLEDsDefaultActuator::Update() {
   for (size_t i = 0; i < m_tSettings.size(); ++i) {
