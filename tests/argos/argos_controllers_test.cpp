@@ -290,6 +290,26 @@ TEST_F(ArgosControllers, TheRobotsEntityGivesItsCppController) {
   ASSERT_TRUE(Init(0)) << error;
 }
 
+// The space's maps are made by the first lookup of a stage, under a lock while robots step at once.
+TEST_F(ArgosControllers, RobotsSteppingAtOnceLookUpTheSpace) {
+  world.robots = {"fb0", "fb1"};
+  for (uint32_t r = 0; r < 2; ++r) {
+    ASSERT_TRUE(Create(r)) << error;
+    ASSERT_TRUE(Init(r)) << error;
+    g_step["fb" + std::to_string(r)] = [](CProbe& c) {
+      CSpace& space = CSimulator::GetInstance().GetSpace();
+      CFootBotEntity* robot = any_cast<CFootBotEntity*>(space.GetEntitiesByType("foot-bot").at(c.GetId()));
+      EXPECT_EQ(&robot->GetControllableEntity().GetController(), &c);
+      EXPECT_EQ(space.GetEntity(c.GetId()).GetId(), c.GetId());
+    };
+  }
+  std::string errors[2];
+  std::thread first([&] { session.StepController(0, &errors[0]); });
+  std::thread second([&] { session.StepController(1, &errors[1]); });
+  first.join(), second.join();
+  EXPECT_EQ(errors[0] + errors[1], "");
+}
+
 TEST_F(ArgosControllers, AControllerReachesTheSimulator) {
   world.seed = 99, world.tick = 5;
   ASSERT_TRUE(Create(0)) << error;

@@ -178,6 +178,12 @@ TEST_F(ArgosDevices, ReadingsComeFromTheRobotEachStep) {
   EXPECT_EQ(probe->scanner->GetShortReadingsMap().size(), 2u);
   EXPECT_EQ(probe->scanner->GetLongReadingsMap().at(CRadians(0.8)), 70);
   EXPECT_EQ(probe->scanner->GetReadingsMap().size(), 3u);
+  io.short_scans = {{0.2, 13}}, io.long_scans = {{0.8, 71}, {0.2, 72}};  // the maps' nodes reused
+  Step();
+  EXPECT_EQ(probe->scanner->GetShortReadingsMap().size(), 1u);
+  EXPECT_EQ(probe->scanner->GetLongReadingsMap().at(CRadians(0.8)), 71);
+  EXPECT_EQ(probe->scanner->GetReadingsMap().size(), 2u);
+  EXPECT_EQ(probe->scanner->GetReadingsMap().at(CRadians(0.2)), 72);  // long after short, the last
 }
 
 // Packets' data are copied; PopFront reads network byte order.

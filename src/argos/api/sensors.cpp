@@ -121,25 +121,41 @@ void CFootBotBaseGroundRotZOnlySensor::Update() {
 }
 void CFootBotBaseGroundRotZOnlySensor::Reset() { ZeroValues(m_tReadings); }
 
-// The maps are made again each tick, as ARGoS's: only a robot with a scanner pays for it.
+// The maps are filled again each tick, as ARGoS's, with their nodes taken out and put back
+// rather than freed and allocated.
+void CFootBotDistanceScannerRotZOnlySensor::Recycle(TReadingsMap& t_map) {
+  while (!t_map.empty()) m_vecNodes.push_back(t_map.extract(t_map.begin()));
+}
+void CFootBotDistanceScannerRotZOnlySensor::Put(TReadingsMap& t_map, const CRadians& c_angle, Real f_distance) {
+  if (m_vecNodes.empty()) {
+    t_map[c_angle] = f_distance;
+    return;
+  }
+  TReadingsMap::node_type tNode = std::move(m_vecNodes.back());
+  m_vecNodes.pop_back();
+  tNode.key() = c_angle;
+  tNode.mapped() = f_distance;
+  auto tInserted = t_map.insert(std::move(tNode));
+  if (tInserted.inserted) return;
+  tInserted.position->second = f_distance;  // an angle seen twice: the last reading, as ARGoS's
+  m_vecNodes.push_back(std::move(tInserted.node));
+}
 void CFootBotDistanceScannerRotZOnlySensor::Update() {
   if (IsDisabled()) return;
-  m_tReadingsMap.clear();
-  m_tShortReadingsMap.clear();
-  m_tLongReadingsMap.clear();
+  Reset();
   for (bool bShort : {true, false}) {
     TReadingsMap& tMap = bShort ? m_tShortReadingsMap : m_tLongReadingsMap;
     for (int k = 0; k < m_pcRobotIo->ScanCount(bShort); ++k) {
       const essaim::ArgosScan sScan = m_pcRobotIo->Scan(bShort, k);
-      tMap[CRadians(sScan.angle)] = sScan.distance;
-      m_tReadingsMap[CRadians(sScan.angle)] = sScan.distance;
+      Put(tMap, CRadians(sScan.angle), sScan.distance);
+      Put(m_tReadingsMap, CRadians(sScan.angle), sScan.distance);
     }
   }
 }
 void CFootBotDistanceScannerRotZOnlySensor::Reset() {
-  m_tReadingsMap.clear();
-  m_tShortReadingsMap.clear();
-  m_tLongReadingsMap.clear();
+  Recycle(m_tReadingsMap);
+  Recycle(m_tShortReadingsMap);
+  Recycle(m_tLongReadingsMap);
 }
 
 void CFootBotTurretEncoderDefaultSensor::Update() {

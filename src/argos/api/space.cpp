@@ -33,8 +33,17 @@ CAny Typed(CEntity& c_entity, int kind) {
 CSpace::CSpace() : m_psEntities(new SWorldEntities) {}
 CSpace::~CSpace() = default;
 
+namespace {
+// The space's lock, taken only inside a robot's ControlStep (robots step on several threads).
+std::unique_lock<std::mutex> StepLock(std::mutex& lock) {
+  const essaim::ArgosControllerCall* call = essaim::CurrentControllerCall();
+  return call && call->parallel ? std::unique_lock<std::mutex>(lock) : std::unique_lock<std::mutex>();
+}
+}  // namespace
+
 CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
   essaim::ArgosWorld& world = *essaim::RequireSession("GetEntitiesByType").world;
+  const std::unique_lock<std::mutex> hold = StepLock(m_psEntities->step_lock);
   int kind = 0;
   while (kind < 4 && str_type != kTypeNames[kind]) ++kind;
   if (kind == 4) THROW_ARGOSEXCEPTION("Entity map for type \"" << str_type << "\" not found.");
@@ -56,6 +65,7 @@ CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
 
 CEntity& CSpace::GetEntity(const std::string& str_id) {
   essaim::ArgosWorld& world = *essaim::RequireSession("GetEntity").world;
+  const std::unique_lock<std::mutex> hold = StepLock(m_psEntities->step_lock);
   for (const essaim::ArgosRef& ref : world.Entities(-1))
     if (world.Id(ref) == str_id) return SEntityBinding::Wrapper(*this, ref);
   THROW_ARGOSEXCEPTION("No entity with id \"" << str_id << "\" in the space");
