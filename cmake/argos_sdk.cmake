@@ -13,6 +13,10 @@ add_library(essaim_argos_api SHARED
   argos/api/entity_specs.cpp
   argos/api/rng.cpp
   argos/api/log.cpp
+  argos/api/controllers.cpp
+  argos/api/devices.cpp
+  argos/api/sensors.cpp
+  argos/api/actuators.cpp
   argos/api/constants.cpp
 )
 target_include_directories(essaim_argos_api

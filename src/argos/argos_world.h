@@ -65,6 +65,7 @@ class ArgosWorld {
   virtual uint64_t Tick() const = 0;
   virtual uint64_t Seed() const = 0;
   virtual uint64_t LengthTicks() const = 0;
+  virtual double TickLength() const = 0;  // s
   virtual void Arena(double size[3], double center[3]) const = 0;
   virtual std::vector<std::string> LedMedia() const = 0;
   /// Live entities of `kind` (all when -1), in creation order.

@@ -28,6 +28,7 @@ class StoreWorld : public ArgosWorld {
   uint64_t Tick() const override { return tick_; }
   uint64_t Seed() const override { return model_.experiment.seed; }
   uint64_t LengthTicks() const override { return model_.experiment.length_ticks; }
+  double TickLength() const override { return model_.experiment.TickLength(); }
   void Arena(double size[3], double center[3]) const override;
   std::vector<std::string> LedMedia() const override;
   std::vector<ArgosRef> Entities(int kind) const override;

@@ -76,5 +76,14 @@ TEST(ArgosRng, ACategorySeedsItsGeneratorsAsArgosDoes) {
   CRandom::RemoveCategory("section_n");
   EXPECT_FALSE(CRandom::ExistsCategory("section_n"));
   EXPECT_THROW(CRandom::CreateRNG("section_n"), argos::CARGoSException);
-  EXPECT_TRUE(CRandom::ExistsCategory("argos"));  // the experiment's, always there
+}
+
+// "argos" is a category as any other: an experiment makes it with its seed; outside one it
+// is made as the others are, and seeds its generators as ARGoS's does.
+TEST(ArgosRng, TheArgosCategorySeedsAsArgossDoes) {
+  EXPECT_FALSE(CRandom::ExistsCategory("argos"));  // outside an experiment
+  ASSERT_TRUE(CRandom::CreateCategory("argos", 7));
+  EXPECT_EQ(CRandom::CreateRNG("argos")->GetSeed(), 327741615u);
+  EXPECT_EQ(CRandom::CreateRNG("argos")->GetSeed(), 976413892u);
+  CRandom::RemoveCategory("argos");
 }

@@ -17,79 +17,216 @@ INCLUDE = ROOT / "src" / "argos" / "include" / "argos3"
 # its #includes at ilpincy/argos3 421bd763 (by file name, without .h), also those it reaches
 # through headers essaim does not provide (a plugin factory, ray3.h, physics_engine.h...).
 ARGOS_REACHES = {
-    "core/control_interface/ci_controller.h": "argos_configuration argos_exception datatypes",
+    "core/control_interface/ci_actuator.h": "argos_configuration argos_exception datatypes",
+    "core/control_interface/ci_controller.h": "argos_configuration argos_exception ci_actuator ci_sensor datatypes",
+    "core/control_interface/ci_sensor.h": "argos_configuration argos_exception datatypes",
+    "core/simulator/actuator.h": "argos_exception",
     "core/simulator/entity/composable_entity.h": (
-        "ci_controller controllable_entity embodied_entity entity medium space argos_configuration "
-        "argos_exception any datatypes argos_log angles general quaternion range vector2 vector3 "
-        "string_utilities"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "controllable_entity datatypes embodied_entity entity general medium physics_engine "
+        "quaternion range space string_utilities vector2 vector3"),
     "core/simulator/entity/controllable_entity.h": (
-        "ci_controller entity argos_configuration argos_exception datatypes argos_log angles general "
-        "range vector2 vector3 string_utilities"),
+        "angles argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "datatypes entity general range string_utilities vector2 vector3"),
     "core/simulator/entity/embodied_entity.h": (
-        "entity argos_configuration argos_exception datatypes argos_log angles general quaternion range "
-        "vector2 vector3 string_utilities"),
-    "core/simulator/entity/entity.h": "argos_configuration argos_exception datatypes argos_log",
+        "angles argos_configuration argos_exception argos_log datatypes entity general physics_engine "
+        "quaternion range string_utilities vector2 vector3"),
+    "core/simulator/entity/entity.h": "argos_configuration argos_exception argos_log datatypes",
     "core/simulator/entity/floor_entity.h": (
-        "entity argos_configuration argos_exception color datatypes argos_log angles general range "
-        "vector2 vector3 string_utilities"),
+        "angles argos_configuration argos_exception argos_log color datatypes entity general range "
+        "string_utilities vector2 vector3"),
     "core/simulator/entity/positional_entity.h": (
-        "entity argos_configuration argos_exception datatypes argos_log angles general quaternion range "
-        "vector2 vector3 string_utilities"),
+        "angles argos_configuration argos_exception argos_log datatypes entity general quaternion "
+        "range string_utilities vector2 vector3"),
     "core/simulator/loop_functions.h": (
-        "ci_controller controllable_entity embodied_entity entity medium simulator space "
-        "argos_configuration argos_exception any color datatypes argos_log angles general quaternion "
-        "range rng vector2 vector3 string_utilities"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "color controllable_entity datatypes embodied_entity entity general medium physics_engine "
+        "quaternion range rng simulator space string_utilities vector2 vector3"),
     "core/simulator/medium/medium.h": "argos_configuration argos_exception datatypes",
+    "core/simulator/physics_engine/physics_engine.h": (
+        "angles argos_configuration argos_exception argos_log datatypes general range "
+        "string_utilities vector2"),
+    "core/simulator/sensor.h": "argos_exception",
     "core/simulator/simulator.h": (
-        "medium argos_configuration argos_exception datatypes argos_log angles general range rng vector2 "
-        "string_utilities"),
+        "angles argos_configuration argos_exception argos_log datatypes general medium physics_engine "
+        "range rng string_utilities vector2"),
     "core/simulator/space/space.h": (
-        "ci_controller controllable_entity embodied_entity entity medium argos_configuration "
-        "argos_exception any datatypes argos_log angles general quaternion range vector2 vector3 "
-        "string_utilities"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "controllable_entity datatypes embodied_entity entity general medium physics_engine "
+        "quaternion range string_utilities vector2 vector3"),
     "core/utility/configuration/argos_configuration.h": "argos_exception datatypes",
     "core/utility/configuration/argos_exception.h": "",
     "core/utility/datatypes/any.h": "argos_exception",
+    "core/utility/datatypes/byte_array.h": "argos_exception datatypes",
     "core/utility/datatypes/color.h": "argos_exception datatypes string_utilities",
     "core/utility/datatypes/datatypes.h": "",
     "core/utility/logging/argos_log.h": "datatypes",
     "core/utility/math/angles.h": "argos_exception datatypes general range string_utilities",
     "core/utility/math/general.h": "datatypes",
-    "core/utility/math/quaternion.h": "argos_exception datatypes angles general range vector2 vector3 string_utilities",
+    "core/utility/math/quaternion.h": (
+        "angles argos_exception datatypes general range string_utilities vector2 vector3"),
     "core/utility/math/range.h": "argos_exception datatypes string_utilities",
-    "core/utility/math/rng.h": "argos_exception datatypes angles general range string_utilities",
-    "core/utility/math/vector2.h": "argos_exception datatypes angles general range string_utilities",
-    "core/utility/math/vector3.h": "argos_exception datatypes angles general range vector2 string_utilities",
+    "core/utility/math/rng.h": "angles argos_exception datatypes general range string_utilities",
+    "core/utility/math/vector2.h": "angles argos_exception datatypes general range string_utilities",
+    "core/utility/math/vector3.h": "angles argos_exception datatypes general range string_utilities vector2",
     "core/utility/string_utilities.h": "argos_exception datatypes",
     "core/wrappers/lua/lua_controller.h": (
-        "ci_controller argos_configuration argos_exception datatypes angles general range rng "
+        "angles argos_configuration argos_exception ci_actuator ci_controller ci_sensor datatypes "
+        "general range rng string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_base_ground_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities vector2"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_distance_scanner_actuator.h": (
+        "angles argos_configuration argos_exception ci_actuator datatypes general range "
         "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_distance_scanner_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_gripper_actuator.h": (
+        "angles argos_configuration argos_exception ci_actuator datatypes general range "
+        "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_light_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_motor_ground_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities vector2"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_proximity_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_turret_actuator.h": (
+        "angles argos_configuration argos_exception ci_actuator datatypes general range "
+        "string_utilities"),
+    "plugins/robots/foot-bot/control_interface/ci_footbot_turret_encoder_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general range "
+        "string_utilities vector2"),
+    "plugins/robots/foot-bot/simulator/footbot_base_ground_rotzonly_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_base_ground_sensor ci_sensor controllable_entity datatypes embodied_entity entity "
+        "general medium physics_engine quaternion range rng sensor space string_utilities vector2 "
+        "vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_distance_scanner_default_actuator.h": (
+        "actuator angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_distance_scanner_actuator ci_sensor composable_entity controllable_entity "
+        "datatypes embodied_entity entity footbot_entity general medium physics_engine quaternion "
+        "range space string_utilities vector2 vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_distance_scanner_rotzonly_sensor.h": (
+        "angles argos_configuration argos_exception argos_log ci_footbot_distance_scanner_sensor "
+        "ci_sensor datatypes embodied_entity entity general physics_engine quaternion range rng "
+        "sensor string_utilities vector2 vector3"),
     "plugins/robots/foot-bot/simulator/footbot_entity.h": (
-        "ci_controller composable_entity controllable_entity embodied_entity entity medium space "
-        "argos_configuration argos_exception any datatypes argos_log angles general quaternion range "
-        "vector2 vector3 string_utilities"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "composable_entity controllable_entity datatypes embodied_entity entity general medium "
+        "physics_engine quaternion range space string_utilities vector2 vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_gripper_default_actuator.h": (
+        "actuator angles argos_configuration argos_exception argos_log ci_actuator "
+        "ci_footbot_gripper_actuator datatypes entity general quaternion range string_utilities "
+        "vector2 vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_light_rotzonly_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_light_sensor ci_sensor controllable_entity datatypes embodied_entity entity "
+        "general medium physics_engine quaternion range rng sensor space string_utilities vector2 "
+        "vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_motor_ground_rotzonly_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_motor_ground_sensor ci_sensor controllable_entity datatypes embodied_entity "
+        "entity general medium physics_engine quaternion range rng sensor space string_utilities "
+        "vector2 vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_proximity_default_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_proximity_sensor ci_sensor controllable_entity datatypes embodied_entity entity "
+        "general medium physics_engine quaternion range rng sensor space string_utilities vector2 "
+        "vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_turret_default_actuator.h": (
+        "actuator angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_footbot_turret_actuator ci_sensor composable_entity controllable_entity datatypes "
+        "embodied_entity entity footbot_entity general medium physics_engine quaternion range space "
+        "string_utilities vector2 vector3"),
+    "plugins/robots/foot-bot/simulator/footbot_turret_encoder_default_sensor.h": (
+        "angles argos_configuration argos_exception argos_log ci_footbot_turret_encoder_sensor "
+        "ci_sensor datatypes entity general range sensor string_utilities vector2 vector3"),
+    "plugins/robots/generic/control_interface/ci_battery_sensor.h": (
+        "argos_configuration argos_exception ci_sensor datatypes"),
+    "plugins/robots/generic/control_interface/ci_colored_blob_omnidirectional_camera_sensor.h": (
+        "angles argos_configuration argos_exception argos_log ci_sensor color datatypes general range "
+        "string_utilities"),
+    "plugins/robots/generic/control_interface/ci_differential_steering_actuator.h": (
+        "argos_configuration argos_exception ci_actuator datatypes"),
+    "plugins/robots/generic/control_interface/ci_differential_steering_sensor.h": (
+        "argos_configuration argos_exception ci_sensor datatypes"),
+    "plugins/robots/generic/control_interface/ci_leds_actuator.h": (
+        "argos_configuration argos_exception ci_actuator color datatypes string_utilities"),
+    "plugins/robots/generic/control_interface/ci_positioning_sensor.h": (
+        "angles argos_configuration argos_exception ci_sensor datatypes general quaternion range "
+        "string_utilities vector2 vector3"),
+    "plugins/robots/generic/control_interface/ci_range_and_bearing_actuator.h": (
+        "argos_configuration argos_exception byte_array ci_actuator datatypes"),
+    "plugins/robots/generic/control_interface/ci_range_and_bearing_sensor.h": (
+        "angles argos_configuration argos_exception byte_array ci_sensor datatypes general quaternion "
+        "range string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/battery_default_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_battery_sensor "
+        "ci_controller ci_sensor controllable_entity datatypes embodied_entity entity general medium "
+        "physics_engine quaternion range rng sensor space string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/colored_blob_omnidirectional_camera_rotzonly_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator "
+        "ci_colored_blob_omnidirectional_camera_sensor ci_controller ci_sensor color "
+        "controllable_entity datatypes embodied_entity entity general medium physics_engine "
+        "quaternion range rng sensor space string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/differential_steering_default_actuator.h": (
+        "actuator angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_differential_steering_actuator ci_sensor composable_entity controllable_entity datatypes "
+        "embodied_entity entity general medium physics_engine quaternion range rng space "
+        "string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/differential_steering_default_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_differential_steering_sensor ci_sensor controllable_entity datatypes embodied_entity "
+        "entity general medium physics_engine quaternion range rng sensor space string_utilities "
+        "vector2 vector3"),
+    "plugins/robots/generic/simulator/leds_default_actuator.h": (
+        "actuator angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_leds_actuator ci_sensor color composable_entity controllable_entity datatypes "
+        "embodied_entity entity general led_entity led_equipped_entity medium physics_engine "
+        "positional_entity quaternion range space string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/positioning_default_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller "
+        "ci_positioning_sensor ci_sensor controllable_entity datatypes embodied_entity entity general "
+        "medium physics_engine quaternion range rng sensor space string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/range_and_bearing_default_actuator.h": (
+        "actuator angles argos_configuration argos_exception argos_log byte_array ci_actuator "
+        "ci_range_and_bearing_actuator datatypes entity general positional_entity quaternion range "
+        "string_utilities vector2 vector3"),
+    "plugins/robots/generic/simulator/range_and_bearing_medium_sensor.h": (
+        "angles any argos_configuration argos_exception argos_log byte_array ci_actuator "
+        "ci_controller ci_range_and_bearing_sensor ci_sensor controllable_entity datatypes "
+        "embodied_entity entity general medium physics_engine quaternion range rng sensor space "
+        "string_utilities vector2 vector3"),
     "plugins/simulator/entities/box_entity.h": (
-        "ci_controller composable_entity controllable_entity embodied_entity entity positional_entity "
-        "medium space argos_configuration argos_exception any color datatypes argos_log angles general "
-        "quaternion range vector2 vector3 string_utilities led_entity led_equipped_entity"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "color composable_entity controllable_entity datatypes embodied_entity entity general "
+        "led_entity led_equipped_entity medium physics_engine positional_entity quaternion range "
+        "space string_utilities vector2 vector3"),
     "plugins/simulator/entities/cylinder_entity.h": (
-        "ci_controller composable_entity controllable_entity embodied_entity entity positional_entity "
-        "medium space argos_configuration argos_exception any color datatypes argos_log angles general "
-        "quaternion range vector2 vector3 string_utilities led_entity led_equipped_entity"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "color composable_entity controllable_entity datatypes embodied_entity entity general "
+        "led_entity led_equipped_entity medium physics_engine positional_entity quaternion range "
+        "space string_utilities vector2 vector3"),
     "plugins/simulator/entities/led_entity.h": (
-        "entity positional_entity argos_configuration argos_exception color datatypes argos_log angles "
-        "general quaternion range vector2 vector3 string_utilities"),
+        "angles argos_configuration argos_exception argos_log color datatypes entity general "
+        "positional_entity quaternion range string_utilities vector2 vector3"),
     "plugins/simulator/entities/led_equipped_entity.h": (
-        "ci_controller composable_entity controllable_entity embodied_entity entity positional_entity "
-        "medium space argos_configuration argos_exception any color datatypes argos_log angles general "
-        "quaternion range vector2 vector3 string_utilities led_entity"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "color composable_entity controllable_entity datatypes embodied_entity entity general "
+        "led_entity medium physics_engine positional_entity quaternion range space string_utilities "
+        "vector2 vector3"),
     "plugins/simulator/entities/light_entity.h": (
-        "ci_controller composable_entity controllable_entity embodied_entity entity positional_entity "
-        "medium space argos_configuration argos_exception any color datatypes argos_log angles general "
-        "quaternion range vector2 vector3 string_utilities led_entity led_equipped_entity"),
+        "angles any argos_configuration argos_exception argos_log ci_actuator ci_controller ci_sensor "
+        "color composable_entity controllable_entity datatypes embodied_entity entity general "
+        "led_entity led_equipped_entity medium physics_engine positional_entity quaternion range "
+        "space string_utilities vector2 vector3"),
     "plugins/simulator/media/led_medium.h": (
-        "entity positional_entity medium argos_configuration argos_exception color datatypes argos_log "
-        "angles general quaternion range vector2 vector3 string_utilities led_entity"),
+        "angles argos_configuration argos_exception argos_log color datatypes entity general "
+        "led_entity medium positional_entity quaternion range string_utilities vector2 vector3"),
 }
 
 # What each header declares, used as a project would: a complete type, a constant, a call.
@@ -127,6 +264,48 @@ USES = {
     "led_equipped_entity": "(void)sizeof(argos::CLEDEquippedEntity);",
     "light_entity": "(void)sizeof(argos::CLightEntity);",
     "led_medium": "(void)sizeof(argos::CLEDMedium);",
+    "physics_engine": "(void)argos::CPhysicsEngine::GetSimulationClockTick;",
+    "ci_sensor": "(void)sizeof(argos::CCI_Sensor::TMap);",
+    "ci_actuator": "(void)sizeof(argos::CCI_Actuator::TMap);",
+    "sensor": "(void)sizeof(argos::CSimulatedSensor);",
+    "actuator": "(void)sizeof(argos::CSimulatedActuator);",
+    "byte_array": "(void)argos::CByteArray(2).Size();",
+    "ci_footbot_base_ground_sensor": "(void)sizeof(argos::CCI_FootBotBaseGroundSensor::SReading);",
+    "ci_footbot_distance_scanner_actuator": "(void)sizeof(argos::CCI_FootBotDistanceScannerActuator);",
+    "ci_footbot_distance_scanner_sensor": "(void)sizeof(argos::CCI_FootBotDistanceScannerSensor::TReadingsMap);",
+    "ci_footbot_gripper_actuator": "(void)argos::CCI_FootBotGripperActuator::LOCKED_POSITIVE;",
+    "ci_footbot_light_sensor": "(void)sizeof(argos::CCI_FootBotLightSensor::TReadings);",
+    "ci_footbot_motor_ground_sensor": "(void)sizeof(argos::CCI_FootBotMotorGroundSensor::SReading);",
+    "ci_footbot_proximity_sensor": "(void)sizeof(argos::CCI_FootBotProximitySensor::TReadings);",
+    "ci_footbot_turret_actuator": "(void)argos::CCI_FootBotTurretActuator::MODE_SPEED_CONTROL;",
+    "ci_footbot_turret_encoder_sensor": "(void)sizeof(argos::CCI_FootBotTurretEncoderSensor);",
+    "ci_battery_sensor": "(void)argos::CCI_BatterySensor::SReading().TimeLeft;",
+    "ci_colored_blob_omnidirectional_camera_sensor": (
+        "(void)argos::CCI_ColoredBlobOmnidirectionalCameraSensor::SReadings().Counter;"),
+    "ci_differential_steering_actuator": "(void)sizeof(argos::CCI_DifferentialSteeringActuator);",
+    "ci_differential_steering_sensor": "(void)argos::CCI_DifferentialSteeringSensor::SReading().WheelAxisLength;",
+    "ci_leds_actuator": "(void)sizeof(argos::CCI_LEDsActuator::TSettings);",
+    "ci_positioning_sensor": "(void)sizeof(argos::CCI_PositioningSensor::SReading);",
+    "ci_range_and_bearing_actuator": "(void)sizeof(argos::CCI_RangeAndBearingActuator);",
+    "ci_range_and_bearing_sensor": "(void)argos::CCI_RangeAndBearingSensor::SPacket().Data.Size();",
+    "footbot_base_ground_rotzonly_sensor": "(void)sizeof(argos::CFootBotBaseGroundRotZOnlySensor);",
+    "footbot_distance_scanner_default_actuator": "(void)sizeof(argos::CFootBotDistanceScannerDefaultActuator);",
+    "footbot_distance_scanner_rotzonly_sensor": "(void)sizeof(argos::CFootBotDistanceScannerRotZOnlySensor);",
+    "footbot_gripper_default_actuator": "(void)sizeof(argos::CFootBotGripperDefaultActuator);",
+    "footbot_light_rotzonly_sensor": "(void)sizeof(argos::CFootBotLightRotZOnlySensor);",
+    "footbot_motor_ground_rotzonly_sensor": "(void)sizeof(argos::CFootBotMotorGroundRotZOnlySensor);",
+    "footbot_proximity_default_sensor": "(void)sizeof(argos::CFootBotProximityDefaultSensor);",
+    "footbot_turret_default_actuator": "(void)sizeof(argos::CFootBotTurretDefaultActuator);",
+    "footbot_turret_encoder_default_sensor": "(void)sizeof(argos::CFootBotTurretEncoderDefaultSensor);",
+    "battery_default_sensor": "(void)sizeof(argos::CBatteryDefaultSensor);",
+    "colored_blob_omnidirectional_camera_rotzonly_sensor": (
+        "(void)sizeof(argos::CColoredBlobOmnidirectionalCameraRotZOnlySensor);"),
+    "differential_steering_default_actuator": "(void)sizeof(argos::CDifferentialSteeringDefaultActuator);",
+    "differential_steering_default_sensor": "(void)sizeof(argos::CDifferentialSteeringDefaultSensor);",
+    "leds_default_actuator": "(void)sizeof(argos::CLEDsDefaultActuator);",
+    "positioning_default_sensor": "(void)sizeof(argos::CPositioningDefaultSensor);",
+    "range_and_bearing_default_actuator": "(void)sizeof(argos::CRangeAndBearingDefaultActuator);",
+    "range_and_bearing_medium_sensor": "(void)sizeof(argos::CRangeAndBearingMediumSensor);",
 }
 
 

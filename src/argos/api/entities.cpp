@@ -237,8 +237,11 @@ void CLightEntity::AddToMedium(CLEDMedium& c_medium) {
 
 CControllableEntity::~CControllableEntity() { delete m_pcController; }
 
+// A robot's C++ controller itself (loop functions cast it to their class), else the wrapper
+// of its Lua one.
 CCI_Controller& CControllableEntity::GetController() {
   const essaim::ArgosRef ref = SEntityBinding::Require(*this, "GetController");
+  if (CCI_Controller* pcCpp = essaim::CurrentController(ref.serial)) return *pcCpp;
   if (!m_pcController) m_pcController = new CLuaController(m_strControllerId, ref.serial);
   return *m_pcController;
 }

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 
 #include "argos/argos_world.h"
 
@@ -19,6 +20,9 @@ struct CSpace::SWorldEntities {
   /// GetEntitiesByType's maps, kept until an entity is added or removed (LayoutVersion).
   CSpace::TMapPerType by_type[4];
   uint64_t by_type_version[4] = {~0ull, ~0ull, ~0ull, ~0ull};
+  /// Held by the space's lookups made from a robot's ControlStep, which runs beside other
+  /// robots': the wrappers and maps are made once, then only read until the next stage.
+  std::mutex step_lock;
 };
 
 struct SEntityBinding {

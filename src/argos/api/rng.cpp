@@ -1,9 +1,12 @@
 // CRandom over essaim's random streams (core/rng.h), whose generator and distributions are
 // ARGoS's: a CRNG made with a seed is seeded as ARGoS's (init_genrand), so it draws ARGoS's
-// numbers. Category "argos" is the experiment's: the n-th generator a session makes draws
-// stream (LoopFunctions, n) of the experiment's seed, skipping stream 1 (the Lua loop
-// functions' math.random), so the first is experiment.random's. Other categories seed
-// their generators as ARGoS's CCategory does, from a seeder of their own.
+// numbers. Every category seeds its generators as ARGoS's CCategory does: each takes the next
+// draw of the category's seeder. "argos" is made with the session, seeded with the
+// experiment's seed, so loop functions and controllers made in ARGoS's order (serially, robots
+// in order) draw ARGoS's numbers. A generator made during a robot's ControlStep, which runs
+// beside other robots' on other threads, takes the next draw of that robot's own seeder for
+// the category instead, seeded from the category's seed and the robot's index: the same
+// numbers at any thread count.
 #include "core/rng.h"
 
 #include <argos3/core/utility/math/rng.h>
@@ -17,14 +20,8 @@ namespace argos {
 
 struct CRandom::CRNG::SStream {
   UInt64 Seed = 0;
-  bool Plain = true;  // seeded as ARGoS's CRNG(seed); false: an experiment stream
   essaim::Rng Stream;
-  void Start() {
-    if (Plain)
-      Stream.SeedPlain(static_cast<UInt32>(Seed));
-    else
-      Stream.Seed(Seed);
-  }
+  void Start() { Stream.SeedPlain(static_cast<UInt32>(Seed)); }  // as ARGoS's CRNG(seed)
 };
 
 namespace {
@@ -42,7 +39,6 @@ CRandom::CRNG::~CRNG() { delete m_psStream; }
 void CRandom::CRNG::Reset() { m_psStream->Start(); }
 void CRandom::CRNG::SetSeed(UInt32 un_seed) {
   m_psStream->Seed = un_seed;
-  m_psStream->Plain = true;
   m_psStream->Start();
 }
 UInt64 CRandom::CRNG::GetSeed() const { return m_psStream->Seed; }
@@ -101,52 +97,60 @@ ArgosRngCategory& Category(const std::string& name) {
   return it->second;
 }
 
+// Changing the categories while robots step on several threads would race with their reads.
+void RequireSerial(const char* what) {
+  const ArgosControllerCall* call = CurrentControllerCall();
+  if (call && call->parallel) THROW_ARGOSEXCEPTION(what << ": not from ControlStep (robots step on several threads)");
+}
+
+// The seed of robot `robot`'s own seeder for a category of seed `category_seed`.
+argos::UInt32 RobotSeederSeed(argos::UInt32 category_seed, uint32_t robot) {
+  return static_cast<argos::UInt32>(DeriveSeed(category_seed, StreamKind::Controller, robot));
+}
+
+argos::UInt32 NextSeed(argos::CRandom::CRNG& seeder) {
+  return seeder.Uniform(argos::CRange<argos::UInt32>(1, std::numeric_limits<argos::UInt32>::max()));
+}
+
 }  // namespace
 }  // namespace essaim
 
 namespace argos {
 
 CRandom::CRNG* CRandom::CreateRNG(const std::string& str_category) {
-  if (str_category == "argos") {
-    essaim::ArgosSession::State& session = essaim::RequireSession("CRandom::CreateRNG(\"argos\")");
-    const size_t made = session.rngs.size();
-    auto* stream = new CRNG::SStream;
-    stream->Seed =
-        essaim::DeriveSeed(session.world->Seed(), essaim::StreamKind::LoopFunctions, made == 0 ? 0 : made + 1);
-    stream->Plain = false;
-    stream->Start();
-    session.rngs.emplace_back(new CRNG(stream));
-    return session.rngs.back().get();
-  }
   essaim::ArgosRngCategory& category = essaim::Category(str_category);
-  const UInt32 unSeed = category.seeder.Uniform(CRange<UInt32>(1, std::numeric_limits<UInt32>::max()));
-  category.rngs.emplace_back(new CRNG(unSeed));
-  return category.rngs.back().get();
+  const essaim::ArgosControllerCall* call = essaim::CurrentControllerCall();
+  if (!call || !call->parallel) {
+    category.rngs.emplace_back(new CRNG(essaim::NextSeed(category.seeder)));
+    return category.rngs.back().get();
+  }
+  essaim::ArgosControllerSlot& slot = *call->slot;  // this robot's alone: no other thread touches it
+  auto seeder = slot.step_seeders.find(str_category);
+  if (seeder == slot.step_seeders.end())
+    seeder = slot.step_seeders.emplace(str_category, essaim::RobotSeederSeed(category.seed, slot.robot)).first;
+  slot.step_rngs.emplace_back(new CRNG(essaim::NextSeed(seeder->second)));
+  return slot.step_rngs.back().get();
 }
 
 bool CRandom::CreateCategory(const std::string& str_category, UInt32 un_seed) {
+  essaim::RequireSerial("CRandom::CreateCategory");
   if (ExistsCategory(str_category)) return false;
   essaim::Categories().emplace(str_category, un_seed);
   return true;
 }
 
-bool CRandom::ExistsCategory(const std::string& str_category) {
-  return str_category == "argos" || essaim::Categories().count(str_category) > 0;
-}
+bool CRandom::ExistsCategory(const std::string& str_category) { return essaim::Categories().count(str_category) > 0; }
 
 void CRandom::RemoveCategory(const std::string& str_category) {
-  if (str_category == "argos") THROW_ARGOSEXCEPTION("CRandom::RemoveCategory: \"argos\" is the experiment's");
+  essaim::RequireSerial("CRandom::RemoveCategory");
   essaim::Category(str_category);
   essaim::Categories().erase(str_category);
 }
 
-UInt32 CRandom::GetSeedOf(const std::string& str_category) {
-  if (str_category == "argos") return static_cast<UInt32>(essaim::RequireSession("CRandom::GetSeedOf").world->Seed());
-  return essaim::Category(str_category).seed;
-}
+UInt32 CRandom::GetSeedOf(const std::string& str_category) { return essaim::Category(str_category).seed; }
 
 void CRandom::SetSeedOf(const std::string& str_category, UInt32 un_seed) {
-  if (str_category == "argos") THROW_ARGOSEXCEPTION("CRandom::SetSeedOf: \"argos\" is the experiment's random_seed");
+  essaim::RequireSerial("CRandom::SetSeedOf");
   essaim::ArgosRngCategory& category = essaim::Category(str_category);
   category.seed = un_seed;
   category.seeder.SetSeed(un_seed);

@@ -33,8 +33,17 @@ CAny Typed(CEntity& c_entity, int kind) {
 CSpace::CSpace() : m_psEntities(new SWorldEntities) {}
 CSpace::~CSpace() = default;
 
+namespace {
+// The space's lock, taken only inside a robot's ControlStep (robots step on several threads).
+std::unique_lock<std::mutex> StepLock(std::mutex& lock) {
+  const essaim::ArgosControllerCall* call = essaim::CurrentControllerCall();
+  return call && call->parallel ? std::unique_lock<std::mutex>(lock) : std::unique_lock<std::mutex>();
+}
+}  // namespace
+
 CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
   essaim::ArgosWorld& world = *essaim::RequireSession("GetEntitiesByType").world;
+  const std::unique_lock<std::mutex> hold = StepLock(m_psEntities->step_lock);
   int kind = 0;
   while (kind < 4 && str_type != kTypeNames[kind]) ++kind;
   if (kind == 4) THROW_ARGOSEXCEPTION("Entity map for type \"" << str_type << "\" not found.");
@@ -56,6 +65,7 @@ CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
 
 CEntity& CSpace::GetEntity(const std::string& str_id) {
   essaim::ArgosWorld& world = *essaim::RequireSession("GetEntity").world;
+  const std::unique_lock<std::mutex> hold = StepLock(m_psEntities->step_lock);
   for (const essaim::ArgosRef& ref : world.Entities(-1))
     if (world.Id(ref) == str_id) return SEntityBinding::Wrapper(*this, ref);
   THROW_ARGOSEXCEPTION("No entity with id \"" << str_id << "\" in the space");
@@ -86,7 +96,9 @@ CSpace& CSimulator::GetSpace() { return essaim::RequireSession("GetSpace").space
 
 CLoopFunctions& CSimulator::GetLoopFunctions() {
   essaim::ArgosSession::State& session = essaim::RequireSession("GetLoopFunctions");
-  if (!session.loop_functions) THROW_ARGOSEXCEPTION("GetLoopFunctions: the loop functions are being made");
+  if (!session.loop_functions)
+    THROW_ARGOSEXCEPTION("GetLoopFunctions: the experiment has no C++ loop functions"
+                         << " (none declared, or they are being made)");
   return *session.loop_functions;
 }
 
@@ -95,6 +107,22 @@ CMedium& CSimulator::GetMediumById(const std::string& str_id) {
   auto found = session.media.find(str_id);
   if (found == session.media.end()) THROW_ARGOSEXCEPTION("Medium \"" << str_id << "\" not found (only <led> media)");
   return *found->second;
+}
+
+CPhysicsEngine& CSimulator::GetPhysicsEngine(const std::string&) const {
+  return essaim::RequireSession("GetPhysicsEngine").physics;
+}
+CPhysicsEngine::TVector& CSimulator::GetPhysicsEngines() {
+  return essaim::RequireSession("GetPhysicsEngines").physics_engines;
+}
+
+namespace {
+Real simulation_clock_tick = 0.1;  // ARGoS's is a static too; each session sets it
+}  // namespace
+Real CPhysicsEngine::GetSimulationClockTick() { return simulation_clock_tick; }
+Real CPhysicsEngine::GetInverseSimulationClockTick() { return 1 / simulation_clock_tick; }
+void CPhysicsEngine::SetSimulationClockTick(Real f_simulation_clock_tick) {
+  simulation_clock_tick = f_simulation_clock_tick;
 }
 
 UInt32 CSimulator::GetRandomSeed() const {

@@ -3,6 +3,7 @@
 // <loop_functions library="build/libNAME" label="NAME"> (docs/loop-functions.md). Hooks run
 // at the points of the tick where Lua loop functions' do.
 #pragma once
+#include <argos3/core/control_interface/ci_controller.h>  // ARGoS: through space.h; the API version
 #include <argos3/core/simulator/entity/embodied_entity.h>
 #include <argos3/core/simulator/entity/positional_entity.h>
 #include <argos3/core/simulator/simulator.h>
@@ -15,10 +16,6 @@
 #include <argos3/core/utility/math/vector3.h>
 
 #include <functional>
-
-/// The version of this API a library is built for; a library built for another one is
-/// refused when it is loaded.
-#define ARGOS_ESSAIM_API_VERSION 3
 
 namespace argos {
 
@@ -69,8 +66,6 @@ bool RegisterLoopFunctions(const char* str_label, TLoopFunctionsCreator pf_creat
 
 }  // namespace argos
 
-#define ARGOS_ESSAIM_CONCAT2(a, b) a##b
-#define ARGOS_ESSAIM_CONCAT(a, b) ARGOS_ESSAIM_CONCAT2(a, b)
 /// Makes class CLASSNAME the loop functions named LABEL in <loop_functions label="LABEL">.
 #define REGISTER_LOOP_FUNCTIONS(CLASSNAME, LABEL)                                                            \
   namespace {                                                                                                \

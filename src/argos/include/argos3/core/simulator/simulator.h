@@ -1,7 +1,9 @@
 // ARGoS's CSimulator (argos3/core/simulator/simulator.h): the running experiment, reached
-// from loop functions through CSimulator::GetInstance() while one of their hooks runs.
+// through CSimulator::GetInstance() while one of the loop functions' hooks or a robot's C++
+// controller runs.
 #pragma once
 #include <argos3/core/simulator/medium/medium.h>
+#include <argos3/core/simulator/physics_engine/physics_engine.h>
 #include <argos3/core/simulator/space/space.h>
 #include <argos3/core/utility/configuration/argos_configuration.h>
 #include <argos3/core/utility/configuration/argos_exception.h>
@@ -28,6 +30,9 @@ class CSimulator {
     return *medium;
   }
   CMedium& GetMediumById(const std::string& str_id);
+  /// The physics engine: one object for any id (ARGoS's Release build checks none).
+  CPhysicsEngine& GetPhysicsEngine(const std::string& str_id) const;
+  CPhysicsEngine::TVector& GetPhysicsEngines();
   UInt32 GetRandomSeed() const;
   /// The experiment's length in ticks (0: unlimited).
   UInt32 GetMaxSimulationClock() const;

@@ -15,12 +15,13 @@ class CControllableEntity : public CEntity {
       : CEntity(pc_parent, str_id), m_strControllerId(str_controller_id) {}
   ~CControllableEntity() override;
   std::string GetTypeDescription() const override { return "controller"; }
-  /// The robot's controller (a CLuaController); throws before the robot is in the space.
+  /// The robot's controller: its C++ controller, or a CLuaController for a Lua one; throws
+  /// before the robot is in the space.
   CCI_Controller& GetController();
 
  private:
   std::string m_strControllerId;
-  CCI_Controller* m_pcController = nullptr;  // made at the first GetController
+  CCI_Controller* m_pcController = nullptr;  // a Lua controller's wrapper, made at the first GetController
 };
 
 }  // namespace argos

@@ -5,6 +5,7 @@
 #pragma once
 #include <argos3/core/simulator/entity/entity.h>
 #include <argos3/core/simulator/entity/positional_entity.h>
+#include <argos3/core/simulator/physics_engine/physics_engine.h>
 #include <argos3/core/utility/math/quaternion.h>
 
 #include <string>

@@ -3,7 +3,9 @@
 #include <argos3/core/utility/datatypes/datatypes.h>
 #include <argos3/core/utility/string_utilities.h>
 
+#include <istream>
 #include <ostream>
+#include <string>
 
 namespace argos {
 
@@ -21,6 +23,14 @@ class CColor {
   void SetBlue(UInt8 u) { m_unBlue = u; }
   void SetAlpha(UInt8 u) { m_unAlpha = u; }
   void Set(UInt8 r, UInt8 g, UInt8 b, UInt8 a = 255) { m_unRed = r, m_unGreen = g, m_unBlue = b, m_unAlpha = a; }
+  /// A name ("red", "gray50": ARGoS's constants in lower case) or "r,g,b,a"; throws otherwise.
+  void Set(const std::string& str_color);
+  /// The four channels as one number, red in the low byte (ARGoS's bytes read as a
+  /// little-endian UInt32): a key for maps of colours.
+  operator UInt32() {
+    return static_cast<UInt32>(m_unRed) | static_cast<UInt32>(m_unGreen) << 8 | static_cast<UInt32>(m_unBlue) << 16 |
+           static_cast<UInt32>(m_unAlpha) << 24;
+  }
   /// 0.299 R + 0.587 G + 0.114 B, as ARGoS's ground sensors see a colour.
   Real ToGrayScale() const { return 0.299 * m_unRed + 0.587 * m_unGreen + 0.114 * m_unBlue; }
   bool operator==(const CColor& c) const {
@@ -28,6 +38,12 @@ class CColor {
   }
   bool operator!=(const CColor& c) const { return !(*this == c); }
   friend std::ostream& operator<<(std::ostream& os, const CColor& c);
+  friend std::istream& operator>>(std::istream& is, CColor& c) {
+    std::string strColor;
+    is >> strColor;
+    c.Set(strColor);
+    return is;
+  }
 
   static const CColor BLACK, WHITE, RED, GREEN, BLUE, MAGENTA, CYAN, YELLOW, ORANGE, BROWN, PURPLE, GRAY10, GRAY20,
       GRAY30, GRAY40, GRAY50, GRAY60, GRAY70, GRAY80, GRAY90;

@@ -79,11 +79,22 @@ class CDegrees {
     return *this;
   }
   CDegrees operator-() const { return CDegrees(-m_fValue); }
+  CDegrees& operator+=(const CDegrees& c) { return m_fValue += c.m_fValue, *this; }
+  CDegrees& operator-=(const CDegrees& c) { return m_fValue -= c.m_fValue, *this; }
+  CDegrees& operator*=(Real f) { return m_fValue *= f, *this; }
+  CDegrees& operator/=(Real f) { return m_fValue /= f, *this; }
   CDegrees operator+(const CDegrees& c) const { return CDegrees(m_fValue + c.m_fValue); }
   CDegrees operator-(const CDegrees& c) const { return CDegrees(m_fValue - c.m_fValue); }
   CDegrees operator*(Real f) const { return CDegrees(m_fValue * f); }
+  friend CDegrees operator*(Real f, const CDegrees& c) { return CDegrees(f * c.m_fValue); }
+  CDegrees operator/(Real f) const { return CDegrees(m_fValue / f); }
+  Real operator/(const CDegrees& c) const { return m_fValue / c.m_fValue; }
   bool operator<(const CDegrees& c) const { return m_fValue < c.m_fValue; }
+  bool operator<=(const CDegrees& c) const { return m_fValue <= c.m_fValue; }
+  bool operator>(const CDegrees& c) const { return m_fValue > c.m_fValue; }
+  bool operator>=(const CDegrees& c) const { return m_fValue >= c.m_fValue; }
   bool operator==(const CDegrees& c) const { return m_fValue == c.m_fValue; }
+  bool operator!=(const CDegrees& c) const { return m_fValue != c.m_fValue; }
   friend std::ostream& operator<<(std::ostream& os, const CDegrees& c) {
     return os << "CDegrees(" << c.m_fValue << ")";
   }

@@ -1,8 +1,7 @@
 // ARGoS's random numbers (argos3/core/utility/math/rng.h): ARGoS's Mersenne Twister and
 // distributions, so a CRNG of seed S draws what ARGoS's does. CRandom::CreateRNG("argos")
-// gives a generator drawn from the experiment's random_seed: the first one made draws the
-// stream the Lua loop functions' experiment.random draws, so a C++ port of Lua loop
-// functions draws the same numbers (docs/loop-functions.md).
+// seeds each generator with the next draw of the category "argos", itself seeded with the
+// experiment's random_seed, as ARGoS does (docs/compatibility.md).
 #pragma once
 #include <argos3/core/utility/configuration/argos_exception.h>
 #include <argos3/core/utility/math/angles.h>
@@ -48,11 +47,11 @@ class CRandom {
     SStream* m_psStream;
   };
 
-  /// A new generator of `str_category`. "argos" always exists and is the experiment's: its
-  /// n-th generator draws stream n of the experiment's seed, the first one the stream the Lua
-  /// loop functions' experiment.random draws (docs/loop-functions.md). Other categories are
-  /// made by CreateCategory and seed their generators as ARGoS does: each takes the next
-  /// draw of the category's own seeder. The experiment owns what this returns.
+  /// A new generator of `str_category`, seeded as ARGoS does: with the next draw of the
+  /// category's own seeder. "argos" exists in every experiment, seeded with its random_seed;
+  /// others are made by CreateCategory. Made in a robot's ControlStep (robots step on several
+  /// threads), it takes the next draw of that robot's own seeder for the category instead,
+  /// so the numbers do not depend on the threads. The experiment owns what this returns.
   static CRNG* CreateRNG(const std::string& str_category);
   /// ARGoS's until 3.0.0-beta42, which let a GSL generator type be chosen; essaim has the
   /// Mersenne Twister, ARGoS's default, alone.
@@ -63,8 +62,8 @@ class CRandom {
     return CreateRNG(str_category);
   }
   /// Makes category `str_category` seeded with `un_seed`; false when it exists already
-  /// ("argos" always does). Categories belong to the running experiment (outside any, to
-  /// the process).
+  /// (in an experiment "argos" does). Categories belong to the running experiment (outside
+  /// any, to the process).
   static bool CreateCategory(const std::string& str_category, UInt32 un_seed);
   static bool ExistsCategory(const std::string& str_category);
   static void RemoveCategory(const std::string& str_category);

@@ -20,7 +20,8 @@ namespace argos {
 
 class CLuaController : public CCI_Controller {
  public:
-  CLuaController(const std::string& str_id, UInt32 un_robot) : CCI_Controller(str_id), m_unRobot(un_robot) {}
+  /// GetId() gives `str_id`, the <lua_controller id> the robot runs.
+  CLuaController(const std::string& str_id, UInt32 un_robot) : m_unRobot(un_robot) { SetId(str_id); }
   /// The robot's Lua state (its globals, the `robot` table), kept after a Lua error.
   lua_State* GetLuaState();
   /// Whether the controller runs (ARGoS: false after a Lua error).

@@ -1,0 +1,18 @@
+// ARGoS's CBatteryDefaultSensor (argos3/plugins/robots/generic/simulator/battery_default_sensor.h): the
+// <battery implementation="default"> sensor a C++ controller's GetSensor returns. Enabled from the start.
+#pragma once
+#include <argos3/core/simulator/sensor.h>
+#include <argos3/core/simulator/space/space.h>
+#include <argos3/core/utility/math/range.h>
+#include <argos3/core/utility/math/rng.h>
+#include <argos3/plugins/robots/generic/control_interface/ci_battery_sensor.h>
+
+namespace argos {
+
+class CBatteryDefaultSensor : public CCI_BatterySensor, public CSimulatedSensor {
+ public:
+  void Update() override;
+  void Reset() override;
+};
+
+}  // namespace argos
