@@ -216,6 +216,7 @@ TEST_F(ArgosControllers, ADeviceEssaimHasNoClassForFailsCreation) {
             std::string::npos)
       << error;
   EXPECT_NE(error.find("footbot_motor_ground (rot_z_only)"), std::string::npos) << error;  // what it has
+  EXPECT_TRUE(session.LastErrorIsConfiguration());                                         // a bad .argos element
   EXPECT_EQ(g_deleted, 1);  // the controller made is deleted
   EXPECT_FALSE(session.StepController(0, &error));
 }

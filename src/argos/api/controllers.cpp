@@ -124,7 +124,9 @@ bool ArgosSession::CreateController(uint32_t robot, const std::string& robot_id,
   if (Guarded(
           state_.get(), slot, "constructor", false, [&] { Make(slot, found->creator, spec, io); }, error))
     return true;
+  const bool configuration = state_->configuration_error;  // an undeclarable device: a bad element
   DeleteController(robot);
+  state_->configuration_error = configuration;
   return false;
 }
 

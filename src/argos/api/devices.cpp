@@ -104,8 +104,9 @@ std::string Known(const Row (&rows)[N]) {
 
 [[noreturn]] void Unknown(const ArgosDeviceDecl& device, const std::string& where, const std::string& known) {
   const char* kind = device.sensor ? "sensor" : "actuator";
-  throw argos::CARGoSException(where + ": essaim has no " + kind + " <" + device.tag + " implementation=\"" +
-                               device.implementation + "\"> for C++ controllers; it has " + known);
+  throw argos::CARGoSException::Configuration(where + ": essaim has no " + kind + " <" + device.tag +
+                                              " implementation=\"" + device.implementation +
+                                              "\"> for C++ controllers; it has " + known);
 }
 
 void AddSensor(const ArgosDeviceDecl& device, ArgosRobotIo* io, const std::string& where, ArgosControllerSlot& slot) {
