@@ -209,8 +209,10 @@ bool RegisterController(const char* str_label, TControllerCreator pf_creator, in
 void CCI_Controller::ThrowUnknownDevice(bool b_sensor, const std::string& str_type) {
   const essaim::ArgosControllerCall* call = essaim::CurrentControllerCall();
   const std::string where = call ? " (" + call->slot->where + ")" : "";
-  throw CARGoSException(std::string("Unknown ") + (b_sensor ? "sensor" : "actuator") + " type " + str_type +
-                        " requested in controller" + where + ". Did you add it to the XML file?");
+  // A configuration error: the .argos entry lacks the device (bad input, exit 2).
+  throw CARGoSException::Configuration(std::string("Unknown ") + (b_sensor ? "sensor" : "actuator") + " type " +
+                                       str_type + " requested in controller" + where +
+                                       ". Did you add it to the XML file?");
 }
 
 // Names the class the declared implementation made, which tells which implementation to declare.

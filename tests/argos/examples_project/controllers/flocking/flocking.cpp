@@ -27,7 +27,9 @@ void CFlocking::Reset() {
 
 Real CFlocking::Heading() const {
   const CQuaternion& cOrientation = m_pcPosition->GetReading().Orientation;
-  return 2.0 * std::atan2(cOrientation.GetZ(), cOrientation.GetW());
+  /* In (-pi, pi]: the byte sent below stays in 0..255. */
+  const Real fZ = cOrientation.GetZ(), fW = cOrientation.GetW();
+  return std::atan2(2.0 * fW * fZ, 1.0 - 2.0 * fZ * fZ);
 }
 
 void CFlocking::ControlStep() {

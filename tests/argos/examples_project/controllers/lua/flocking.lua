@@ -16,7 +16,7 @@ end
 
 local function heading()
   local q = robot.positioning.orientation
-  return 2.0 * math.atan(q.z, q.w)
+  return math.atan(2.0 * q.w * q.z, 1.0 - 2.0 * q.z * q.z)  -- in (-pi, pi]: the byte sent stays in 0..255
 end
 
 function step()
