@@ -28,6 +28,27 @@ std::string CMakeHint(const fs::path& binary) {
   return "";
 }
 
+/// The folder holding lib/pkgconfig/argos3_simulator.pc for this binary: build/argos3-sdk
+/// beside it (a build folder) or PREFIX (an install); "" when neither has one.
+std::string ArgosPrefix(const fs::path& binary) {
+  for (const fs::path& dir : {binary.parent_path() / "argos3-sdk", binary.parent_path().parent_path()})
+    if (fs::exists(dir / "lib/pkgconfig/argos3_simulator.pc")) return dir.lexically_normal().string();
+  return "";
+}
+
+/// What to type next.
+void PrintNext(const NewArgs& args) {
+  const char* n = args.name.c_str();
+  std::printf("essaim new: %s/ made from the '%s' template. Next:\n", n, args.templ.c_str());
+  if (args.templ == "cpp")
+    std::printf(
+        "  cd %s && ctest    (configures and builds into build/, then tests)\n"
+        "  essaim run experiments/%s.argos\n",
+        n, n);
+  else
+    std::printf("  cd %s && essaim run %s.argos && ctest\n", n, n);
+}
+
 int New(const NewArgs& args) {
   if (!std::regex_match(args.name, std::regex("[A-Za-z][A-Za-z0-9_-]*"))) {
     std::fprintf(stderr, "essaim new: '%s': a name is a letter, then letters, digits, _ or -\n", args.name.c_str());
@@ -40,7 +61,7 @@ int New(const NewArgs& args) {
     return kExitBadInput;
   }
   fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  ProjectContext context{args.name, args.templ, self.string(), CMakeHint(self)};
+  ProjectContext context{args.name, args.templ, self.string(), CMakeHint(self), ArgosPrefix(self)};
   for (const auto& [path, text] : ProjectFiles(context)) {
     fs::create_directories((folder / path).parent_path(), ec);
     std::ofstream out(folder / path, std::ios::binary);
@@ -50,8 +71,7 @@ int New(const NewArgs& args) {
       return kExitRunFailed;
     }
   }
-  std::printf("essaim new: %s/ made from the '%s' template. Next:\n  cd %s && essaim run %s.argos && ctest\n",
-              args.name.c_str(), args.templ.c_str(), args.name.c_str(), args.name.c_str());
+  PrintNext(args);
   return kExitOk;
 }
 }  // namespace
@@ -60,10 +80,12 @@ CommandMain AddNewCommand(CLI::App& app) {
   auto args = std::make_shared<NewArgs>();
   CLI::App* sub = app.add_subcommand("new", "make a new experiment folder: .argos, controller, loop functions, test");
   sub->add_option("NAME", args->name, "the experiment's name: its folder and files")->required();
-  sub->add_option("--template", args->templ, "what the robots do")
+  sub->add_option("--template", args->templ,
+                  "what the robots do: empty, aggregation, foraging (Lua scripts), or cpp (an ARGoS C++ controller and "
+                  "loop functions, built with CMake)")
       ->check(CLI::IsMember(ProjectTemplateNames()))
       ->capture_default_str();
-  sub->footer("Example:\n  essaim new demo --template aggregation");
+  sub->footer("Examples:\n  essaim new demo --template aggregation\n  essaim new demo --template cpp");
   return [args] { return New(*args); };
 }
 

@@ -31,14 +31,15 @@ std::string DeviceElement(const DeviceRow& row) {
   return element + "/>";
 }
 
-/// The declared devices, each under its comment; the ground sensors only over a floor (ARGoS
-/// refuses them without one).
-std::string DeviceLines(bool sensors, bool floor) {
+/// The declared devices, each under its comment (what robot.<key> holds, or for C++ the
+/// control interface); the ground sensors only over a floor (ARGoS refuses them without one).
+std::string DeviceLines(bool sensors, bool floor, bool cpp) {
   std::string declared, others;
   for (const DeviceRow& row : kDeviceRows) {
     if (row.is_sensor != sensors || !row.supported) continue;
+    const std::string doc = cpp ? CppDeviceDoc(row.xml_name, row.is_sensor) : row.doc;
     if (kDeclared.count(row.type) || (floor && row.type == DeviceType::MotorGroundSensor))
-      declared += std::string("        <!-- ") + row.doc + " -->\n        " + DeviceElement(row) + "\n";
+      declared += "        <!-- " + doc + " -->\n        " + DeviceElement(row) + "\n";
     else
       others += "             " + DeviceElement(row) + "\n";
   }
@@ -49,9 +50,31 @@ const char* kFloor =
     "    <!-- the floor's colours: floor_color(x, y) of the loop functions, sampled once at start -->\n"
     "    <floor id=\"floor\" source=\"loop_functions\" pixels_per_meter=\"50\"/>\n";
 
+}  // namespace
+
+const char* const kProjectGitignore = "build/\nruns/\nessaim-test/\n*.junit.xml\n";
+
+namespace {
+// The .argos file's and the spec's parts of a project of Lua scripts.
+const ProjectLayout kLuaLayout = {
+    "     Run it:  essaim run @NAME@.argos        Test it:  ctest  (or essaim test @NAME@.test.toml)",
+    R"(    <lua_controller id="@NAME@">
+      <actuators>
+@ACTUATORS@      </actuators>
+      <sensors>
+@SENSORS@      </sensors>
+      <!-- robot.params: every attribute but script, as strings -->
+      <params script="@NAME@.lua" speed="10"/>
+    </lua_controller>
+)",
+    R"(  <!-- the loop functions: the experiment's metric (metrics.json) -->
+  <loop_functions script="@NAME@_loop.lua"/>
+)",
+    "@NAME@.argos"};
+
 const char* kArgos = R"(<?xml version="1.0" ?>
 <!-- @NAME@ (essaim new @NAME@ --template @TEMPLATE@): @ABOUT@.
-     Run it:  essaim run @NAME@.argos        Test it:  ctest  (or essaim test @NAME@.test.toml) -->
+@RUN@ -->
 <argos-configuration>
   <framework>
     <system threads="0"/>
@@ -60,19 +83,9 @@ const char* kArgos = R"(<?xml version="1.0" ?>
   </framework>
 
   <controllers>
-    <lua_controller id="@NAME@">
-      <actuators>
-@ACTUATORS@      </actuators>
-      <sensors>
-@SENSORS@      </sensors>
-      <!-- robot.params: every attribute but script, as strings -->
-      <params script="@NAME@.lua" speed="10"/>
-    </lua_controller>
-  </controllers>
+@CONTROLLER@  </controllers>
 
-  <!-- the loop functions: the experiment's metric (metrics.json) -->
-  <loop_functions script="@NAME@_loop.lua"/>
-
+@LOOP_FUNCTIONS@
   <arena size="4.2,4.2,1" center="0,0,0.5">
 @FLOOR@    <box id="wall_north" size="4,0.1,0.5" movable="false"><body position="0,2.05,0" orientation="0,0,0"/></box>
     <box id="wall_south" size="4,0.1,0.5" movable="false"><body position="0,-2.05,0" orientation="0,0,0"/></box>
@@ -97,7 +110,7 @@ const char* kArgos = R"(<?xml version="1.0" ?>
 )";
 
 const char* kSpec = R"(# The behaviour test of @NAME@ (docs/testing.md): `essaim test @NAME@.test.toml`, or `ctest`.
-experiment = "@NAME@.argos"
+experiment = "@EXPERIMENT@"
 ticks = @TICKS@
 seeds = 10            # seeds 1..10, run side by side (essaim test -j N)
 timeout = 300         # seconds: ctest's limit for the whole test
@@ -158,8 +171,18 @@ Regenerate the editor files after an upgrade of essaim:
 `essaim devices --lua-defs > types/essaim.lua` and `essaim devices --luacheck > .luacheckrc`.
 )";
 
-std::string Filled(const std::string& text, const ProjectContext& c, const ProjectTemplate& t) {
-  std::string out = Replaced(text, "@NAME@", c.name);
+/// The layout's parts first: they hold placeholders of their own.
+std::string WithLayout(const std::string& text, const ProjectLayout& layout) {
+  std::string out = Replaced(text, "@RUN@", layout.run);
+  out = Replaced(out, "@CONTROLLER@", layout.controller);
+  out = Replaced(out, "@LOOP_FUNCTIONS@", layout.loop_functions);
+  return Replaced(out, "@EXPERIMENT@", layout.experiment);
+}
+}  // namespace
+
+std::string FilledProjectText(const std::string& text, const ProjectContext& c, const ProjectTemplate& t) {
+  std::string out = WithLayout(text, t.cpp ? kCppLayout : kLuaLayout);
+  out = Replaced(out, "@NAME@", c.name);
   out = Replaced(out, "@TEMPLATE@", c.templ);
   out = Replaced(out, "@ABOUT@", t.about);
   out = Replaced(out, "@TICKS@", t.ticks);
@@ -167,25 +190,31 @@ std::string Filled(const std::string& text, const ProjectContext& c, const Proje
   out = Replaced(out, "@EXPECT@", t.expectations);
   out = Replaced(out, "@ESSAIM@", c.essaim_path);
   out = Replaced(out, "@HINTS@", c.cmake_hint.empty() ? "" : " HINTS \"" + c.cmake_hint + "\"");
-  out = Replaced(out, "@ACTUATORS@", DeviceLines(false, t.uses_floor));
-  return Replaced(out, "@SENSORS@", DeviceLines(true, t.uses_floor));
+  out = Replaced(out, "@ARGOS_PREFIX@", c.argos_prefix);
+  out = Replaced(out, "@ACTUATORS@", DeviceLines(false, t.uses_floor, t.cpp));
+  return Replaced(out, "@SENSORS@", DeviceLines(true, t.uses_floor, t.cpp));
 }
-}  // namespace
+
+std::string ArgosFileText(const ProjectContext& c, const ProjectTemplate& t) { return FilledProjectText(kArgos, c, t); }
+
+std::string SpecText(const ProjectContext& c, const ProjectTemplate& t) { return FilledProjectText(kSpec, c, t); }
 
 std::vector<std::pair<std::string, std::string>> ProjectFiles(const ProjectContext& c) {
   const ProjectTemplate& t = *FindProjectTemplate(c.templ);
+  if (t.cpp) return CppProjectFiles(c, t);
   const std::string& n = c.name;
-  return {{n + ".argos", Filled(kArgos, c, t)},
-          {n + ".lua", Filled(t.controller, c, t)},
-          {n + "_loop.lua", Filled(t.loop, c, t)},
-          {n + ".test.toml", Filled(kSpec, c, t)},
-          {"CMakeLists.txt", Filled(kCMakeLists, c, t)},
-          {"CTestTestfile.cmake", Filled(kCTestFile, c, t)},
+  auto filled = [&](const char* text) { return FilledProjectText(text, c, t); };
+  return {{n + ".argos", ArgosFileText(c, t)},
+          {n + ".lua", filled(t.controller)},
+          {n + "_loop.lua", filled(t.loop)},
+          {n + ".test.toml", SpecText(c, t)},
+          {"CMakeLists.txt", filled(kCMakeLists)},
+          {"CTestTestfile.cmake", filled(kCTestFile)},
           {".luarc.json", kLuarc},
           {"types/essaim.lua", LuaLanguageServerDefs()},
           {".luacheckrc", LuacheckConfig() + "exclude_files = {\"types/*.lua\", \"build/**\"}\n"},
-          {".gitignore", "build/\nruns/\nessaim-test/\n*.junit.xml\n"},
-          {"README.md", Filled(kReadme, c, t)}};
+          {".gitignore", kProjectGitignore},
+          {"README.md", filled(kReadme)}};
 }
 
 }  // namespace essaim

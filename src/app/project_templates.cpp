@@ -253,11 +253,17 @@ const ProjectTemplate kTemplates[] = {
      "  \"median deliveries >= 20\",             # food brought to the nest, over the swarm\n"
      "  \"fraction(deliveries >= 10) >= 0.9\",   # 10 or more in at least 9 runs of 10\n",
      "1500", "the robots fetch food from grey patches and bring it to the black nest in the middle", true},
+    {"cpp", nullptr, nullptr,
+     "  \"each errors == 0\",\n"
+     "  \"median files/spread.csv[shrink].last < 0.6\",             # the spread at least 40% smaller\n"
+     "  \"fraction(files/spread.csv[shrink].last < 0.8) >= 0.8\",   # and gathered in 8 runs of 10\n",
+     "600", "the robots gather (aggregation, in C++): each steers towards the robots it hears over range-and-bearing",
+     false, true},
 };
 }  // namespace
 
 const std::vector<std::string>& ProjectTemplateNames() {
-  static const std::vector<std::string> names = {"empty", "aggregation", "foraging"};
+  static const std::vector<std::string> names = {"empty", "aggregation", "foraging", "cpp"};
   return names;
 }
 

@@ -1,6 +1,7 @@
 """`essaim new NAME` (docs/testing.md): the folder runs, its `ctest` passes at once and fails
 with the expectation and the seeds named once the controller is broken; luacheck is clean on it."""
 import json
+import os
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
@@ -85,3 +86,56 @@ def test_bad_names_and_existing_folders_are_refused(tmp_path):
     assert r.returncode == 2 and "a name is a letter" in r.stderr
     r = essaim("new", "x", "--template", "swarming", cwd=tmp_path)
     assert r.returncode == 2 and not (tmp_path / "x").exists()
+
+
+CPP_FILES = ["CMakeLists.txt", "CTestTestfile.cmake", "README.md", "controllers/CMakeLists.txt",
+             "controllers/my-swarm/CMakeLists.txt", "controllers/my-swarm/my-swarm.cpp",
+             "controllers/my-swarm/my-swarm.h", "experiments/my-swarm.argos", "loop_functions/CMakeLists.txt",
+             "loop_functions/my-swarm_loop_functions/CMakeLists.txt",
+             "loop_functions/my-swarm_loop_functions/my-swarm_loop_functions.cpp",
+             "loop_functions/my-swarm_loop_functions/my-swarm_loop_functions.h", "my-swarm.test.toml"]
+
+
+@pytest.mark.skipif(not CTEST or not shutil.which("cmake") or not shutil.which("pkg-config"),
+                    reason="ctest, cmake and pkg-config are needed to build a C++ project")
+def test_the_cpp_template_builds_and_passes_its_test_from_a_fresh_folder(tmp_path):
+    """`--template cpp`: argos3-examples' layout, found through pkg-config in the essaim that made it
+    (no variable set); a plain `ctest` configures, builds and tests; the build folder's ctest
+    rebuilds first, so a broken controller fails it, naming the robots' error."""
+    r = essaim("new", "my-swarm", "--template", "cpp", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert "cd my-swarm && ctest" in r.stdout and "essaim run experiments/my-swarm.argos" in r.stdout
+    folder = tmp_path / "my-swarm"
+    made = sorted(str(p.relative_to(folder)) for p in folder.rglob("*") if p.is_file())
+    assert made == sorted(CPP_FILES + [".gitignore"])
+    controller = (folder / "controllers/my-swarm/my-swarm.cpp").read_text()
+    assert "REGISTER_CONTROLLER(CMySwarm, \"my-swarm_controller\")" in controller
+    env = {k: v for k, v in os.environ.items() if k not in ("PKG_CONFIG_PATH", "CMAKE_PREFIX_PATH")}
+
+    passed = subprocess.run([CTEST, "--output-on-failure"], cwd=folder, capture_output=True, text=True,
+                            timeout=600, env=env)
+    assert passed.returncode == 0, passed.stdout + passed.stderr
+    assert "my-swarm_configure" in passed.stdout and "my-swarm_build" in passed.stdout
+    suite = ET.parse(folder / "my-swarm.junit.xml").getroot().find("testsuite")
+    assert suite.get("failures") == "0" and int(suite.get("tests")) >= 3
+
+    run = essaim("run", "experiments/my-swarm.argos", "-q", "--ticks", "100", cwd=folder)
+    assert run.returncode == 0, run.stderr
+    rows = (folder / "runs/my-swarm-1/files/spread.csv").read_text().splitlines()
+    assert rows[0] == "tick,spread,shrink" and [r.split(",")[0] for r in rows[1:]] == ["0", "50", "100"]
+    summary = json.loads((folder / "runs/my-swarm-1/summary.json").read_text())
+    assert summary["status"] == "ok" and summary["robots"] == 10 and summary["unread_params"] == []
+
+    source = folder / "controllers/my-swarm/my-swarm.cpp"
+    source.write_text(controller.replace("void CMySwarm::ControlStep() {",
+                                         "void CMySwarm::ControlStep() {\n  THROW_ARGOSEXCEPTION(\"no step\");"))
+    failed = subprocess.run([CTEST, "--test-dir", "build", "--output-on-failure"], cwd=folder, capture_output=True,
+                            text=True, timeout=600, env=env)
+    assert failed.returncode != 0
+    assert "each errors == 0" in failed.stdout and "FAIL     1, 2, 3, 4, 5, 6, 7, 8, 9, 10" in failed.stdout
+    assert "my-swarm.cpp:" in failed.stdout and "no step" in failed.stdout
+
+
+def test_new_help_lists_the_cpp_template(tmp_path):
+    r = essaim("new", "--help", cwd=tmp_path)
+    assert r.returncode == 0 and "cpp" in r.stdout and "essaim new demo --template cpp" in r.stdout

@@ -7,9 +7,12 @@
 namespace argos {
 const Real ARGOS_PI = 3.14159265358979323846264338327950288;
 
+// As ARGoS's: compared with T(0), so Abs(CRadians) and Abs(CDegrees) work too.
 template <typename T>
 T Abs(const T& t_value) {
-  return t_value < 0 ? -t_value : t_value;
+  if (t_value > T(0)) return t_value;
+  if (t_value < T(0)) return -t_value;
+  return T(0);
 }
 template <typename T>
 T Min(const T& a, const T& b) {
