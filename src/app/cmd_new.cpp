@@ -6,6 +6,7 @@
 #include <fstream>
 #include <memory>
 #include <regex>
+#include <set>
 
 #include "app/commands.h"
 #include "app/project_templates.h"
@@ -36,6 +37,14 @@ std::string ArgosPrefix(const fs::path& binary) {
   return "";
 }
 
+/// The target names CMake keeps for itself: the C++ template's library cannot take one.
+bool IsCMakeReservedName(const std::string& name) {
+  static const std::set<std::string> reserved = {
+      "all",           "clean",  "help",      "install",    "test",      "package", "package_source", "edit_cache",
+      "rebuild_cache", "depend", "ALL_BUILD", "ZERO_CHECK", "RUN_TESTS", "INSTALL", "PACKAGE"};
+  return reserved.count(name) > 0;
+}
+
 /// What to type next.
 void PrintNext(const NewArgs& args) {
   const char* n = args.name.c_str();
@@ -52,6 +61,11 @@ void PrintNext(const NewArgs& args) {
 int New(const NewArgs& args) {
   if (!std::regex_match(args.name, std::regex("[A-Za-z][A-Za-z0-9_-]*"))) {
     std::fprintf(stderr, "essaim new: '%s': a name is a letter, then letters, digits, _ or -\n", args.name.c_str());
+    return kExitBadInput;
+  }
+  if (args.templ == "cpp" && IsCMakeReservedName(args.name)) {
+    std::fprintf(stderr, "essaim new: '%s' is a target name CMake reserves; the C++ template names its library so\n",
+                 args.name.c_str());
     return kExitBadInput;
   }
   fs::path folder = args.name;
@@ -85,7 +99,7 @@ CommandMain AddNewCommand(CLI::App& app) {
                   "loop functions, built with CMake)")
       ->check(CLI::IsMember(ProjectTemplateNames()))
       ->capture_default_str();
-  sub->footer("Examples:\n  essaim new demo --template aggregation\n  essaim new demo --template cpp");
+  sub->footer("Examples:\n  essaim new demo --template aggregation\n  essaim new swarm --template cpp");
   return [args] { return New(*args); };
 }
 

@@ -138,4 +138,9 @@ def test_the_cpp_template_builds_and_passes_its_test_from_a_fresh_folder(tmp_pat
 
 def test_new_help_lists_the_cpp_template(tmp_path):
     r = essaim("new", "--help", cwd=tmp_path)
-    assert r.returncode == 0 and "cpp" in r.stdout and "essaim new demo --template cpp" in r.stdout
+    assert r.returncode == 0 and "cpp" in r.stdout and "essaim new swarm --template cpp" in r.stdout
+
+
+def test_the_cpp_template_refuses_a_name_cmake_reserves(tmp_path):
+    r = essaim("new", "test", "--template", "cpp", cwd=tmp_path)
+    assert r.returncode == 2 and "CMake reserves" in r.stderr and not (tmp_path / "test").exists()
