@@ -5,10 +5,11 @@ import os
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 
-from clitest import check_junit_shape, essaim, need_essaim
+from clitest import ESSAIM, check_junit_shape, essaim, need_essaim
 
 pytestmark = need_essaim
 CTEST = shutil.which("ctest")
@@ -144,3 +145,22 @@ def test_new_help_lists_the_cpp_template(tmp_path):
 def test_the_cpp_template_refuses_a_name_cmake_reserves(tmp_path):
     r = essaim("new", "test", "--template", "cpp", cwd=tmp_path)
     assert r.returncode == 2 and "CMake reserves" in r.stderr and not (tmp_path / "test").exists()
+
+
+@pytest.mark.skipif(not CTEST or not shutil.which("cmake") or not shutil.which("pkg-config"),
+                    reason="ctest, cmake and pkg-config are needed to build a C++ project")
+def test_an_installed_essaim_makes_a_cpp_project_that_builds_against_it(tmp_path):
+    """From PREFIX/bin/essaim: the project finds PREFIX/lib/pkgconfig and PREFIX/lib/cmake/essaim."""
+    prefix = tmp_path / "prefix"
+    build = Path(ESSAIM).resolve().parent
+    done = subprocess.run(["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    r = subprocess.run([str(prefix / "bin" / "essaim"), "new", "demo", "--template", "cpp"], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    top = (tmp_path / "demo" / "CMakeLists.txt").read_text()
+    assert f'set(ARGOS_PREFIX "{prefix}"' in top and f'HINTS "{prefix / "lib/cmake/essaim"}"' in top
+    env = {k: v for k, v in os.environ.items() if k not in ("PKG_CONFIG_PATH", "CMAKE_PREFIX_PATH")}
+    passed = subprocess.run([CTEST, "--output-on-failure"], cwd=tmp_path / "demo", capture_output=True, text=True,
+                            timeout=600, env=env)
+    assert passed.returncode == 0, passed.stdout + passed.stderr
