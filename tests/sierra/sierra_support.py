@@ -24,7 +24,7 @@ SIZES = [2, 4]
 
 def sierra_venv() -> Path:
     venv = Path(os.environ.get("ESSAIM_SIERRA_VENV", ROOT / ".venv-sierra"))
-    if not (venv / "bin" / "sierra-cli").exists():
+    if not (venv / "bin" / "sierra").exists():
         pytest.skip(f"SIERRA is not installed in {venv} (scripts/setup.sh makes it; "
                     "ESSAIM_SIERRA_VENV names another)")
     if shutil.which("parallel") is None:
@@ -50,10 +50,10 @@ def sierra_env(**extra: str) -> dict:
 
 
 def sierra_cli(args: list[str], env: dict, cwd: Path, timeout: int = 300):
-    cli = Path(env["PATH"].split(":")[0]) / "sierra-cli"
+    cli = Path(env["PATH"].split(":")[0]) / "sierra"  # sierra-cli's new name in 1.5.x
     r = subprocess.run([str(cli), *args], cwd=cwd, env=env, capture_output=True, text=True,
                        timeout=timeout)
-    assert r.returncode == 0, f"sierra-cli {' '.join(args)}: exit {r.returncode}\n" \
+    assert r.returncode == 0, f"sierra {' '.join(args)}: exit {r.returncode}\n" \
                               f"{r.stdout[-4000:]}\n{r.stderr[-4000:]}"
     return r
 

@@ -30,8 +30,10 @@ class PopulationConstantDensity(bc.UnivarBatchCriteria, bcbridge.IGraphable,
                                 bc.IQueryableBatchCriteria):
     def __init__(self, cli_arg: str, main_config: types.YAMLDict,
                  batch_input_root: pathlib.Path, density: float,
-                 extents: list[utils.ArenaExtent], center: tuple[float, float]) -> None:
+                 extents: list[utils.ArenaExtent], center: tuple[float, float],
+                 scenario_tag: str) -> None:
         bc.UnivarBatchCriteria.__init__(self, cli_arg, main_config, batch_input_root)
+        self.scenario_tag = scenario_tag
         self.density = density  # robots per m²
         self.extents = extents
         self.center = center
@@ -44,7 +46,7 @@ class PopulationConstantDensity(bc.UnivarBatchCriteria, bcbridge.IGraphable,
 
     def exp_scenario_name(self, exp_num: int) -> str:
         e = self.extents[exp_num]
-        return f"{self.cli_arg.split('.')[0]}.{int(e.xsize())}x{int(e.ysize())}x{int(e.zsize())}"
+        return f"{self.scenario_tag}.{int(e.xsize())}x{int(e.ysize())}x{int(e.zsize())}"
 
     def arena_dims(self, cmdopts: types.Cmdopts) -> list[utils.ArenaExtent]:
         return self.extents
@@ -103,7 +105,7 @@ def factory(cli_arg: str, main_config: types.YAMLDict, cmdopts: types.Cmdopts,
                for k in range(attr["cardinality"])]
     return PopulationConstantDensity(cli_arg, main_config, batch_input_root,
                                      attr["target_density"] / 100.0, extents,
-                                     template_center(cmdopts))
+                                     template_center(cmdopts), kw["scenario_tag"])
 
 
 __all__ = ["PopulationConstantDensity", "factory"]

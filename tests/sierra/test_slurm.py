@@ -1,5 +1,5 @@
 """The local test's pipeline through hpc.slurm on a single-node SLURM cluster the test
-starts itself (slurm_cluster.py): `sbatch --wait` submits a job that runs sierra-cli
+starts itself (slurm_cluster.py): `sbatch --wait` submits a job that runs SIERRA
 inside its allocation, as SIERRA's hpc.slurm expects; GNU parallel reaches the job's node
 through scripts/sierra/srun-ssh, so each essaim run is a step of the job (srun); the job
 ends, and its runs, averages and graphs are back in the test's folder."""
@@ -18,7 +18,7 @@ def test_slurm_pipeline_runs_through_sbatch_and_comes_back(tmp_path):
         args = " ".join(f"'{a}'" for a in PIPELINE)
         job.write_text("#!/bin/bash\nset -e\n"
                        f"export PARALLEL_SSH={PLUGINS / 'srun-ssh'}\n"
-                       f"sierra-cli {args} --execenv=hpc.slurm "
+                       f"sierra {args} --execenv=hpc.slurm "
                        f"--sierra-root={tmp_path / 'sierra'} --pipeline 1 2 3 4\n")
         r = subprocess.run(["sbatch", "--wait", "--nodes=1", "--ntasks-per-node=2",
                             "--cpus-per-task=1", f"--output={tmp_path / 'job.out'}", str(job)],
