@@ -96,9 +96,11 @@ class ExpShellCmdsGenerator(bindings.IExpShellCmdsGenerator):
         self.cmdopts = cmdopts
 
     def pre_exp_cmds(self) -> list[types.ShellCmdSpec]:
-        # GNU parallel passes no variables to what it runs on other hosts; these matter.
-        return [types.ShellCmdSpec(cmd='export PARALLEL="--env ESSAIM --env LUA_PATH '
-                                       '--env LUA_CPATH"', shell=True, wait=True, env=True)]
+        # GNU parallel passes no variables to what it runs on other hosts: Lua's search
+        # paths matter to controllers that `require`; added to what the execution
+        # environment asked for (hpc.slurm, hpc.adhoc: LD_LIBRARY_PATH, PYTHONPATH).
+        cmd = 'export PARALLEL="${PARALLEL:+$PARALLEL }--env LUA_PATH --env LUA_CPATH"'
+        return [types.ShellCmdSpec(cmd=cmd, shell=True, wait=True, env=True)]
 
     def exec_exp_cmds(self, exec_opts: types.StrDict) -> list[types.ShellCmdSpec]:
         return []

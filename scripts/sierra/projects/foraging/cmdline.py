@@ -1,7 +1,6 @@
-"""--scenario and --controller, the two options every SIERRA project defines. Neither
-changes the template here: the scenario names the batch's folder (`NAME`, or `NAME.XxYxZ`
-to give the constant-density criteria the starting arena), the controller is the template's
-own (no controllers.yaml, so any name)."""
+"""--scenario and --controller, the two options every SIERRA project defines. The scenario
+names the batch's folder (`NAME`, or `NAME.XxYxZ` to give the constant-density criteria the
+starting arena); the controller is one of config/controllers.yaml."""
 from __future__ import annotations
 
 import argparse
@@ -16,8 +15,9 @@ def build(parents: list[argparse.ArgumentParser], stages: list[int]) -> PluginCm
         "--scenario", default="foraging",
         help="NAME or NAME.XxYxZ (arena in metres)." + cmdline.stage_usage_doc([1, 2, 3, 4]))
     cmdline.multistage.add_argument(
-        "--controller", default="foraging.lua",
-        help="A name for the controller of the template." + cmdline.stage_usage_doc([1, 2, 3, 4]))
+        "--controller", default="foraging.default",
+        help="CATEGORY.NAME of config/controllers.yaml: foraging.default (the template as "
+             "it is), foraging.greedy, foraging.explorer." + cmdline.stage_usage_doc([1, 2, 3, 4]))
     return cmdline
 
 
