@@ -23,7 +23,7 @@ SIZES = [2, 4]
 
 
 def sierra_venv() -> Path:
-    venv = Path(os.environ.get("ESSAIM_SIERRA_VENV", ROOT / ".venv-sierra"))
+    venv = Path(os.environ.get("ESSAIM_SIERRA_VENV", ROOT / ".venv-sierra")).absolute()
     if not (venv / "bin" / "sierra").exists():
         pytest.skip(f"SIERRA is not installed in {venv} (scripts/setup.sh makes it; "
                     "ESSAIM_SIERRA_VENV names another)")

@@ -50,3 +50,8 @@ def test_constant_density_grows_arena_walls_and_swarm(tmp_path):
     assert [x.find(".//arena/distribute/entity").get("quantity") for x in xmls] == ["10", "19"]
     north = xmls[1].find(".//arena/box[@id='wall_north']/body").get("position")
     assert north == "0,6.95,0"
+
+
+def test_monte_carlo_with_n_agents(tmp_path):
+    _, xmls = generate(tmp_path, "builtin.MonteCarlo.C2", "--n-agents=3")
+    assert [x.find(".//arena/distribute/entity").get("quantity") for x in xmls] == ["3", "3"]
