@@ -8,12 +8,7 @@ PACKAGES=(build-essential cmake ninja-build pkg-config
           libbox2d-dev liblua5.4-dev lua5.4 libtinyxml2-dev libeigen3-dev libpng-dev libcairo2-dev
           libgtest-dev googletest libcli11-dev nlohmann-json3-dev python3 python3-venv python3-pip python3-dev
           pybind11-dev libcpp-httplib-dev chromium clang-format-14
-          libtomlplusplus-dev lua-check
-          # SIERRA (docs/sierra.md): GNU parallel runs its runs, LaTeX draws its graphs,
-          # pygraphviz builds against graphviz; SLURM and munge for the single-node cluster
-          # of tests/sierra
-          parallel texlive-latex-extra texlive-fonts-recommended cm-super dvipng libgraphviz-dev
-          slurm-wlm munge)
+          libtomlplusplus-dev lua-check)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -30,11 +25,6 @@ if [ ! -x .venv/bin/python3 ]; then
   python3 -m venv .venv
 fi
 .venv/bin/python3 -m pip install -q --disable-pip-version-check -r scripts/requirements.txt
-# SIERRA has a venv of its own: its pins (numpy<2) conflict with the project's.
-if [ ! -x .venv-sierra/bin/python3 ]; then
-  python3 -m venv .venv-sierra
-fi
-.venv-sierra/bin/python3 -m pip install -q --disable-pip-version-check -r scripts/requirements-sierra.txt
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DESSAIM_PYTHON="$PWD/.venv/bin/python3" > /dev/null
 cmake --build build

@@ -39,7 +39,7 @@ def sandbox(tmp: Path, essaim: Path) -> dict:
         shutil.copytree(ROOT / d, tmp / d, symlinks=True)
     (tmp / "build").symlink_to(essaim.parent)
     make_venv(tmp / ".venv")
-    if SIERRA_VENV.exists():  # SIERRA's own venv (docs/sierra.md), as setup.sh makes it
+    if SIERRA_VENV.exists():  # SIERRA's own venv (docs/sierra.md), as setup_sierra.sh makes it
         (tmp / ".venv-sierra").symlink_to(SIERRA_VENV)
     bin_dir = tmp / "home" / ".local" / "bin"
     env = users_env(bin_dir)
@@ -100,7 +100,7 @@ def test_examples_run_as_written(doc, tmp_path, essaim):
     if not found:
         pytest.skip(f"{doc} has no example")
     if doc == "docs/sierra.md" and not (SIERRA_VENV / "bin" / "sierra").exists():
-        pytest.skip(f"SIERRA is not installed in {SIERRA_VENV} (scripts/setup.sh makes it)")
+        pytest.skip(f"SIERRA is not installed in {SIERRA_VENV} (scripts/setup_sierra.sh makes it)")
     env = sandbox(tmp_path, essaim)
     for n, ex in enumerate(found):
         if not ex.skip:

@@ -1,4 +1,4 @@
-"""What the SIERRA tests share: where SIERRA is (the venv scripts/setup.sh makes,
+"""What the SIERRA tests share: where SIERRA is (the venv scripts/setup_sierra.sh makes,
 .venv-sierra, or $ESSAIM_SIERRA_VENV), the environment its pipelines run in, and one
 pipeline over the foraging experiment, small enough for ctest: 2 swarm sizes x 2 runs x
 200 ticks. The tests skip, saying why, where SIERRA is not installed."""
@@ -25,7 +25,7 @@ SIZES = [2, 4]
 def sierra_venv() -> Path:
     venv = Path(os.environ.get("ESSAIM_SIERRA_VENV", ROOT / ".venv-sierra")).absolute()
     if not (venv / "bin" / "sierra").exists():
-        pytest.skip(f"SIERRA is not installed in {venv} (scripts/setup.sh makes it; "
+        pytest.skip(f"SIERRA is not installed in {venv} (scripts/setup_sierra.sh makes it; "
                     "ESSAIM_SIERRA_VENV names another)")
     if shutil.which("parallel") is None:
         pytest.skip("GNU parallel is not installed (apt-get install parallel)")
