@@ -106,12 +106,14 @@ def compare(argos_text, essaim_text):
     return rows
 
 
-def run_scene(scene, folder):
-    """essaim on one scene, from a folder holding it and gripprobe.lua; its stdout."""
+def run_scene(scene, folder, settings=()):
+    """essaim on one scene, from a folder holding it and gripprobe.lua (`settings`: --set
+    overrides); its stdout."""
     shutil.copy(DATA / f"scene_{scene}.argos", folder / "exp.argos")
     shutil.copy(DATA / "gripprobe.lua", folder / "gripprobe.lua")
-    r = subprocess.run([ESSAIM, "run", "exp.argos", "--out", "essaim_run"], cwd=folder, capture_output=True, text=True,
-                       timeout=300)
+    sets = [arg for setting in settings for arg in ("--set", setting)]
+    r = subprocess.run([ESSAIM, "run", "exp.argos", "--out", "essaim_run", *sets], cwd=folder, capture_output=True,
+                       text=True, timeout=300)
     assert r.returncode == 0, r.stderr[-500:]
     return r.stdout
 
@@ -140,6 +142,22 @@ def test_held_objects_follow_argos(scene, tmp_path):
     assert share >= BEARING_SHARE, f"only {share:.1%} of held ticks within {BEARING_TOLERANCE} rad of ARGoS"
     # The spring shows: some held ticks read 19 cm or more, as in ARGoS (none with a rigid hold).
     assert sum(row["far_essaim"] for row in rows) > 0
+
+
+@need_essaim
+def test_physics_regions_and_threads(tmp_path):
+    """Eight strips put the robots on region boundaries and their cylinders in the next region:
+    every grip crosses one. The thread count changes nothing, and ARGoS is still followed."""
+    outputs = []
+    for threads in (1, 2):
+        folder = tmp_path / f"t{threads}"
+        folder.mkdir()
+        outputs.append(run_scene("stop", folder, ("physics_engines.dynamics2d.regions=8",
+                                                  f"framework.system.threads={threads}")))
+    probe = [[line for line in out.splitlines() if line.startswith(("T ", "GRIP ", "UNLOCK "))] for out in outputs]
+    assert probe[0] == probe[1] and len(probe[0]) > 6000
+    problems = [f"{row['grip']}: {p}" for row in compare(argos_text("stop"), outputs[0]) for p in row["problems"]]
+    assert not problems, "\n".join(problems[:40])
 
 
 def test_the_comparison_catches_a_moved_blob_and_a_late_grip():
