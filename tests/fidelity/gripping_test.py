@@ -14,10 +14,9 @@ distance (within 1 mm) and bearing, the held ticks with the blob at 19 cm or mor
 controller reads as "not holding"), and the bearing change over the turn in place (the robot
 turns under the object, which ARGoS's spring leaves where it is). The bearing tolerance is
 0.01 rad on 95 % of held ticks and 0.05 rad on all: where an object is dragged straight behind
-the robot after the turn, ARGoS keeps it pressed 0.18 mm into the robot's body (an overlap left
-by the approach, which Chipmunk's solver allows and Box2D's does not) and the body's friction
-steers it; essaim's hangs free on its spring and trails up to 0.043 rad wider
-(docs/compatibility.md, "Gripper and turret").
+the robot after the turn, ARGoS's settles against the robot's body at one bearing while
+essaim's keeps sliding along it and ends up to 0.043 rad wider; a load swinging round the body
+leads ARGoS's by up to 0.017 rad at the swing's end (docs/compatibility.md, "Gripper and turret").
 
 Run as a script to print the per-grip table:
     ESSAIM=build/essaim python tests/fidelity/gripping_test.py
