@@ -16,6 +16,7 @@
 #include "app/cli_support.h"
 #include "app/commands.h"
 #include "app/ffmpeg_pipe.h"
+#include "app/signals.h"
 #include "core/paths.h"
 #include "core/stopwatch.h"
 #include "core/strings.h"
@@ -204,7 +205,8 @@ Vec2 ViewMin(const VideoPlan& p, const FrameView& frame, Vec2* centre) {
 }
 
 /// Reads, draws and pipes every frame of the plan. False with why (a read, Cairo or ffmpeg).
-bool EncodeFrames(const VideoPlan& p, const RecordingStream& rec, FfmpegPipe* ffmpeg, std::string* error) {
+bool EncodeFrames(const VideoPlan& p, const RecordingStream& rec, const SignalCatcher& signals, FfmpegPipe* ffmpeg,
+                  std::string* error) {
   const RecordingScene& scene = rec.scene();
   FrameRenderer renderer(scene, p.width, p.height);
   FrameWindow window(scene, p.trail);
@@ -213,7 +215,7 @@ bool EncodeFrames(const VideoPlan& p, const RecordingStream& rec, FfmpegPipe* ff
   Vec2 centre = scene.arena_min + scene.arena_size / 2;
   draw.view_size = p.view_size;
   size_t done = 0;
-  for (size_t k = p.first_read; k < rec.FrameCount() && done < p.frames; ++k) {
+  for (size_t k = p.first_read; k < rec.FrameCount() && done < p.frames && !signals.Caught(); ++k) {
     std::vector<uint8_t> bytes = window.Take();
     if (!rec.ReadFrame(k, &bytes, error)) return false;
     const uint64_t tick = Get32(bytes.data());
@@ -245,9 +247,16 @@ int Encode(const VideoPlan& p, const RecordingStream& rec) {
     return kExitBadInput;  // nothing was drawn: a missing program is like a missing input
   }
   const auto start = std::chrono::steady_clock::now();
-  const bool drawn = EncodeFrames(p, rec, &ffmpeg, &error);
+  SignalCatcher signals(nullptr);
+  signals.Listen();
+  const bool drawn = EncodeFrames(p, rec, signals, &ffmpeg, &error);
   std::string ffmpeg_error;
   const bool encoded = ffmpeg.Finish(&ffmpeg_error);
+  if (signals.Caught()) {  // Ctrl-C reaches ffmpeg too; either way no part of a video is left
+    std::remove(tmp.c_str());
+    std::fprintf(stderr, "\nessaim video: interrupted; %s not written\n", p.out.c_str());
+    return 128 + signals.Caught();
+  }
   if (!drawn || !encoded || std::rename(tmp.c_str(), p.out.c_str()) != 0) {
     std::remove(tmp.c_str());
     std::fprintf(stderr, "essaim video: %s\n",
@@ -319,7 +328,8 @@ CommandMain AddVideoCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--follow", v->follow, "keep this robot (its id) at the centre of a view 3 m wide")
       ->type_name("ROBOT");
-  sub->add_option("--view", v->view, "the view's width in metres, 0.01 to 100000 (default: the whole arena; 3 with --follow)")
+  sub->add_option("--view", v->view,
+                  "the view's width in metres, 0.01 to 100000 (default: the whole arena; 3 with --follow)")
       ->type_name("M")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
