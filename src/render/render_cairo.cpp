@@ -208,19 +208,31 @@ void DrawScaleBar(cairo_t* cr, double px_per_m, int width, int height, double fo
 }
 
 /// Obstacles with a slot in the frames (movable ones, and any added during the run) are
-/// drawn from the frame; the others where the scene has them.
-void DrawObstacles(cairo_t* cr, const FrameView& frame, double px) {
-  const RecordingScene& s = frame.scene();
+/// drawn from the frame; the others where the scene has them (DrawStaticObstacles).
+std::vector<int> SlotOf(const RecordingScene& s) {
   std::vector<int> slot(s.obstacles.size(), -1);
   for (size_t k = 0; k < s.movable.size(); ++k) slot[s.movable[k]] = static_cast<int>(k);
-  for (size_t i = 0; i < s.obstacles.size(); ++i) {
-    const RecordedObstacle& o = s.obstacles[i];
-    if (slot[i] < 0) {
-      DrawObstacle(cr, o, o.pose, o.led, px);
-    } else if (frame.MovablePresent(slot[i])) {  // else removed, or not added yet
-      DrawObstacle(cr, o, frame.Movable(slot[i]), frame.MovableLed(slot[i]), px);
-    }
-  }
+  return slot;
+}
+
+void DrawStaticObstacles(cairo_t* cr, const RecordingScene& s, double px) {
+  const std::vector<int> slot = SlotOf(s);
+  for (size_t i = 0; i < s.obstacles.size(); ++i)
+    if (slot[i] < 0) DrawObstacle(cr, s.obstacles[i], s.obstacles[i].pose, s.obstacles[i].led, px);
+}
+
+void DrawMovableObstacles(cairo_t* cr, const FrameView& frame, double px) {
+  const RecordingScene& s = frame.scene();
+  for (size_t k = 0; k < s.movable.size(); ++k)
+    if (frame.MovablePresent(k))  // else removed, or not added yet
+      DrawObstacle(cr, s.obstacles[s.movable[k]], frame.Movable(k), frame.MovableLed(k), px);
+}
+
+/// The view's world frame: metres, +y up, the view's min corner at the image's bottom-left.
+void SetWorldFrame(cairo_t* cr, int height, const Vec2& vmin, double sx, double sy) {
+  cairo_translate(cr, 0, height);
+  cairo_scale(cr, sx, -sy);
+  cairo_translate(cr, -vmin.x(), -vmin.y());
 }
 
 void DrawLights(cairo_t* cr, const RecordingScene& s, double px) {
@@ -252,9 +264,49 @@ void SnapshotImageSize(const RecordingScene& s, int size, int* width, int* heigh
 struct FrameRenderer::Impl {
   cairo_surface_t* surface = nullptr;
   cairo_surface_t* floor = nullptr;
+  /// What does not move (background, floor, static obstacles), kept while the view stays
+  /// the same from one frame to the next (not with --follow): a copy instead of drawing.
+  cairo_surface_t* still = nullptr;
+  Vec2 last_min = Vec2::Constant(NAN), last_size = Vec2::Constant(NAN);
+  void DropStill() {
+    if (still) cairo_surface_destroy(still);
+    still = nullptr;
+  }
   ~Impl() {
+    DropStill();
     if (floor) cairo_surface_destroy(floor);
     if (surface) cairo_surface_destroy(surface);
+  }
+  /// Background, floor and static obstacles for the view (vmin, vsize) at (sx, sy) px per m.
+  void DrawStill(cairo_t* cr, const RecordingScene& s, const Vec2& vmin, const Vec2& vsize, double sx, double sy,
+                 int height) const {
+    SetRgb(cr, kBackground);
+    cairo_paint(cr);
+    DrawFloor(cr, floor, (s.arena_min.x() - vmin.x()) * sx,
+              (vmin.y() + vsize.y() - s.arena_min.y() - s.arena_size.y()) * sy, s.arena_size.x() * sx,
+              s.arena_size.y() * sy);
+    cairo_save(cr);
+    SetWorldFrame(cr, height, vmin, sx, sy);
+    DrawStaticObstacles(cr, s, 1.0 / sx);
+    cairo_restore(cr);
+  }
+  /// The still part into `cr`: copied from the cache when the view is the last frame's.
+  void PaintStill(cairo_t* cr, const RecordingScene& s, const Vec2& vmin, const Vec2& vsize, double sx, double sy,
+                  int width, int height) {
+    const bool same = vmin == last_min && vsize == last_size;
+    last_min = vmin, last_size = vsize;
+    if (!same) {
+      DropStill();
+      return DrawStill(cr, s, vmin, vsize, sx, sy, height);
+    }
+    if (!still) {
+      still = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+      cairo_t* sc = cairo_create(still);
+      DrawStill(sc, s, vmin, vsize, sx, sy, height);
+      cairo_destroy(sc);
+    }
+    cairo_set_source_surface(cr, still, 0, 0);
+    cairo_paint(cr);
   }
 };
 
@@ -273,18 +325,10 @@ bool FrameRenderer::Draw(const std::vector<FrameView>& frames, const DrawOptions
   const Vec2 vmin = whole ? s.arena_min : opt.view_min, vsize = whole ? s.arena_size : opt.view_size;
   const double sx = width_ / vsize.x(), sy = height_ / vsize.y();  // px per m
   cairo_t* cr = cairo_create(impl_->surface);
-  SetRgb(cr, kBackground);
-  cairo_paint(cr);
-  DrawFloor(cr, impl_->floor, (s.arena_min.x() - vmin.x()) * sx,
-            (vmin.y() + vsize.y() - s.arena_min.y() - s.arena_size.y()) * sy, s.arena_size.x() * sx,
-            s.arena_size.y() * sy);
-
-  // World frame: metres, +y up, the view's min corner at the bottom-left.
+  impl_->PaintStill(cr, s, vmin, vsize, sx, sy, width_, height_);
   const double px = 1.0 / sx;  // one pixel in metres
-  cairo_translate(cr, 0, height_);
-  cairo_scale(cr, sx, -sy);
-  cairo_translate(cr, -vmin.x(), -vmin.y());
-  DrawObstacles(cr, frame, px);
+  SetWorldFrame(cr, height_, vmin, sx, sy);
+  DrawMovableObstacles(cr, frame, px);
   DrawLights(cr, s, px);
   if (frames.size() > 1) DrawTrails(cr, frames, px);
   const double radius = std::max(s.robot_radius, 2 * px);
