@@ -183,7 +183,7 @@ class VideoProgress {
     std::fflush(stderr);
   }
   void Finish() {
-    if (enabled_) std::fprintf(stderr, "\r%*s\r", 79, "");
+    if (enabled_) std::fprintf(stderr, "\r%*s\r", 100, "");
   }
   double Seconds() const { return SecondsSince(start_); }
 
@@ -239,9 +239,13 @@ int Encode(const VideoPlan& p, const RecordingStream& rec) {
 #if __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
   spec.pixel_format = "0rgb";  // Cairo's RGB24 is native-endian 0x00RRGGBB
 #endif
-  const std::string tmp = p.out + ".tmp." + std::to_string(::getpid());
+  std::string error, target;
+  if (!ResolveOutput(p.out, &target, &error)) {  // a symlink is written through, as snapshots are
+    std::fprintf(stderr, "essaim video: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+  const std::string tmp = target + ".tmp." + std::to_string(::getpid());
   FfmpegPipe ffmpeg;
-  std::string error;
   if (!ffmpeg.Start(spec, tmp, &error)) {
     std::fprintf(stderr, "essaim video: %s\n", error.c_str());
     return kExitBadInput;  // nothing was drawn: a missing program is like a missing input
@@ -257,7 +261,7 @@ int Encode(const VideoPlan& p, const RecordingStream& rec) {
     std::fprintf(stderr, "\nessaim video: interrupted; %s not written\n", p.out.c_str());
     return 128 + signals.Caught();
   }
-  if (!drawn || !encoded || std::rename(tmp.c_str(), p.out.c_str()) != 0) {
+  if (!drawn || !encoded || std::rename(tmp.c_str(), target.c_str()) != 0) {
     std::remove(tmp.c_str());
     std::fprintf(stderr, "essaim video: %s\n",
                  (!drawn     ? error

@@ -263,3 +263,17 @@ def test_a_recording_larger_than_the_memory_limit_streams(essaim, run, tmp_path)
     proc = video(essaim, big, "-o", tmp_path / "big.mp4", "--from", 0, "--every", 10, "--size", 64, "--trail", 20)
     assert proc.returncode == 0, proc.stderr
     assert probe(tmp_path / "big.mp4")["frames"] == 11
+
+
+@needs_ffmpeg
+def test_output_through_a_symlink_never_over_a_folder(essaim, run, tmp_path):
+    real = tmp_path / "real.mp4"
+    real.write_bytes(b"an older video")
+    link = tmp_path / "link.mp4"
+    link.symlink_to(real)
+    proc = video(essaim, run, "-o", link, "--every", 50, "--size", 64)
+    assert proc.returncode == 0, proc.stderr
+    assert link.is_symlink() and probe(real)["frames"] == 3  # ticks 0, 50, 100
+    (tmp_path / "folder.mp4").mkdir()
+    proc = video(essaim, run, "-o", tmp_path / "folder.mp4")
+    assert proc.returncode == 2 and "not a regular file" in proc.stderr, proc.stderr
