@@ -330,7 +330,7 @@ CommandMain AddVideoCommand(CLI::App& app) {
       ->type_name("N")
       ->check(IntegerIn(0, 0xFFFFFFFFll))
       ->capture_default_str();
-  sub->add_option("--follow", v->follow, "keep this robot (its id) at the centre of a view 3 m wide")
+  sub->add_option("--follow", v->follow, "keep this robot (its id) at the centre of the view (3 m wide unless --view)")
       ->type_name("ROBOT");
   sub->add_option("--view", v->view,
                   "the view's width in metres, 0.01 to 100000 (default: the whole arena; 3 with --follow)")
