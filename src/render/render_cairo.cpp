@@ -133,9 +133,38 @@ void DrawRobot(cairo_t* cr, const RecordedRobot& r, double radius, double px) {
   cairo_stroke(cr);
 }
 
+/// The length of the valid UTF-8 sequence starting at text[i], 0 when there is none (an
+/// overlong form, a surrogate, past U+10FFFF, a stray or missing continuation byte).
+size_t Utf8Length(const std::string& text, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[i + k]); };
+  const unsigned char c = byte(0);
+  if (c < 0x80) return 1;
+  const size_t n = c < 0xC2 || c > 0xF4 ? 0 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;  // 0x80..0xC1: never a lead
+  if (n == 0 || i + n > text.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if ((byte(k) >> 6) != 2) return 0;
+  // The second byte's range after the leads that allow fewer (Unicode's table 3-7).
+  const unsigned char lo = c == 0xE0 ? 0xA0 : c == 0xF0 ? 0x90 : 0x80;
+  const unsigned char hi = c == 0xED ? 0x9F : c == 0xF4 ? 0x8F : 0xBF;
+  return byte(1) >= lo && byte(1) <= hi ? n : 0;
+}
+
+/// `text` with each byte that is not part of valid UTF-8 replaced by '?': Cairo refuses such
+/// text, and a damaged recording's robot ids may hold any bytes.
+std::string ValidUtf8(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    const size_t n = Utf8Length(text, i);
+    out += n ? text.substr(i, n) : "?";
+    i += n ? n : 1;
+  }
+  return out;
+}
+
 // Text in pixels, on a pale box so it reads on any floor: the tick in the top-left corner,
 // each robot's id to the upper right of its body.
-void DrawLabel(cairo_t* cr, const std::string& text, double x, double y) {
+void DrawLabel(cairo_t* cr, const std::string& label, double x, double y) {
+  const std::string text = ValidUtf8(label);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, text.c_str(), &ext);
   cairo_set_source_rgba(cr, 1, 1, 1, 0.75);

@@ -277,3 +277,15 @@ def test_output_through_a_symlink_never_over_a_folder(essaim, run, tmp_path):
     (tmp_path / "folder.mp4").mkdir()
     proc = video(essaim, run, "-o", tmp_path / "folder.mp4")
     assert proc.returncode == 2 and "not a regular file" in proc.stderr, proc.stderr
+
+
+@needs_ffmpeg
+def test_a_robot_id_that_is_not_utf8_is_drawn_with_a_stand_in(essaim, run, tmp_path):
+    """Ids are bytes in the file: a damaged one is drawn with '?' where Cairo would refuse it."""
+    rec = bytearray((run / "recording.bin").read_bytes())
+    at = rec.index(b"fb1", 104)
+    rec[at + 1] = 0xFF
+    (tmp_path / "recording.bin").write_bytes(rec)
+    proc = video(essaim, tmp_path, "-o", tmp_path / "ids.mp4", "--every", 50, "--size", 128, "--ids")
+    assert proc.returncode == 0, proc.stderr
+    assert probe(tmp_path / "ids.mp4")["frames"] == 3
