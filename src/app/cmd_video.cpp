@@ -204,9 +204,10 @@ Vec2 ViewMin(const VideoPlan& p, const FrameView& frame, Vec2* centre) {
   return *centre - p.view_size / 2;
 }
 
-/// Reads, draws and pipes every frame of the plan. False with why (a read, Cairo or ffmpeg).
+/// Reads, draws and pipes every frame of the plan (`written` counts them). False with why (a
+/// read or Cairo; ffmpeg says its own in Finish).
 bool EncodeFrames(const VideoPlan& p, const RecordingStream& rec, const SignalCatcher& signals, FfmpegPipe* ffmpeg,
-                  std::string* error) {
+                  size_t* written, std::string* error) {
   const RecordingScene& scene = rec.scene();
   FrameRenderer renderer(scene, p.width, p.height);
   FrameWindow window(scene, p.trail);
@@ -214,7 +215,7 @@ bool EncodeFrames(const VideoPlan& p, const RecordingStream& rec, const SignalCa
   DrawOptions draw = p.draw;
   Vec2 centre = scene.arena_min + scene.arena_size / 2;
   draw.view_size = p.view_size;
-  size_t done = 0;
+  size_t& done = *written;
   for (size_t k = p.first_read; k < rec.FrameCount() && done < p.frames && !signals.Caught(); ++k) {
     std::vector<uint8_t> bytes = window.Take();
     if (!rec.ReadFrame(k, &bytes, error)) return false;
@@ -253,7 +254,8 @@ int Encode(const VideoPlan& p, const RecordingStream& rec) {
   const auto start = std::chrono::steady_clock::now();
   SignalCatcher signals(nullptr);
   signals.Listen();
-  const bool drawn = EncodeFrames(p, rec, signals, &ffmpeg, &error);
+  size_t frames = 0;  // p.frames, unless the recording lacks some of their ticks
+  const bool drawn = EncodeFrames(p, rec, signals, &ffmpeg, &frames, &error);
   std::string ffmpeg_error;
   const bool encoded = ffmpeg.Finish(&ffmpeg_error);
   if (signals.Caught()) {  // Ctrl-C reaches ffmpeg too; either way no part of a video is left
@@ -274,9 +276,9 @@ int Encode(const VideoPlan& p, const RecordingStream& rec) {
   std::fprintf(stderr,
                "essaim video: %zu frames, %dx%d, %.2f s at %d fps (ticks %llu to %llu every %llu), drawn and "
                "encoded in %.1f s (%.0f frames/s)\n",
-               p.frames, p.width, p.height, static_cast<double>(p.frames) / p.fps, p.fps,
+               frames, p.width, p.height, static_cast<double>(frames) / p.fps, p.fps,
                static_cast<unsigned long long>(p.from), static_cast<unsigned long long>(p.to),
-               static_cast<unsigned long long>(p.every), seconds, p.frames / std::max(1e-9, seconds));
+               static_cast<unsigned long long>(p.every), seconds, frames / std::max(1e-9, seconds));
   std::printf("%s\n", p.out.c_str());
   return kExitOk;
 }
