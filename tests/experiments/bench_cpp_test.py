@@ -57,3 +57,17 @@ print(np.array_equal(poses[0], poses[1]), np.abs(poses[1] - poses[0]).max())
                        env=dict(os.environ, ARGOS_PLUGIN_PATH=str(PLUGINS), PYTHONPATH=str(module)))
     assert r.returncode == 0, r.stderr
     assert r.stdout.startswith("True"), r.stdout
+
+
+def test_an_installed_essaim_finds_its_bench_controller(tmp_path):
+    """cmake --install puts the library in lib/essaim/bench, where the installed bench looks."""
+    prefix = tmp_path / "prefix"
+    build = Path(ESSAIM).resolve().parent
+    done = subprocess.run(["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert (prefix / "lib" / "essaim" / "bench" / "libbench_avoidance.so").is_file()
+    env = {k: v for k, v in os.environ.items() if k != "ARGOS_PLUGIN_PATH"}
+    r = subprocess.run([str(prefix / "bin" / "essaim"), "bench", "--only", "avoidance-cpp-100", "--ticks", "2"],
+                       capture_output=True, text=True, timeout=120, cwd=tmp_path, env=env)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[1].split()[:2] == ["avoidance-cpp-100", "100"]
