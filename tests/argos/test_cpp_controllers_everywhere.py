@@ -210,3 +210,28 @@ def test_the_live_pages_inspector_says_the_robot_runs_cpp(examples):
         assert text.startswith("fb2") and "range_and_bearing" in text and "leds" in text
         assert errors == []
         browser.close()
+
+
+LUA_LOOP = """
+function post_step()
+  if experiment.tick ~= 3 then return end
+  for _, r in ipairs(experiment.robots) do
+    local ok, err = pcall(function() r:set_lua_global("mark", r.index) end)
+    log(r.id .. " set " .. tostring(ok) .. (ok and "" or (" " .. err)))
+    log(r.id .. " reads " .. tostring(r:lua_global("mark")))
+  end
+end
+"""
+
+
+def test_lua_loop_functions_reach_lua_robots_and_say_a_cpp_one_has_no_globals(examples, tmp_path):
+    (examples / "experiments/mixed_loop.lua").write_text(LUA_LOOP)
+    text = (examples / "experiments/mixed.argos").read_text()
+    argos = examples / "experiments/mixed_lua_loop.argos"
+    argos.write_text(text.replace('<loop_functions library="build/loop_functions/pose_log/libpose_log" label="pose_log"/>',
+                                  '<loop_functions script="experiments/mixed_loop.lua"/>'))
+    done = run(argos, "--ticks", "5", "--out", str(tmp_path / "out"), cwd=examples)
+    assert done.returncode == 0, done.stderr
+    assert "lua0 set true" in done.stdout and "lua0 reads " in done.stdout and "lua0 reads nil" not in done.stdout
+    assert "cpp0 reads nil" in done.stdout, done.stdout
+    assert "cpp0 set false" in done.stdout and "runs a C++ controller (ground_forager_controller)" in done.stdout
