@@ -202,10 +202,11 @@ def test_the_live_pages_inspector_says_the_robot_runs_cpp(examples):
         page.goto(url)
         page.wait_for_function("window.essaimLive && essaimLive.frame() && essaimLive.frame().robots.length === 12",
                                timeout=20000)
+        page.wait_for_function("document.getElementById('view').dataset.robotCount === '12'", timeout=20000)
         pos = page.evaluate("essaimLive.robotCanvasPosition(2)")
         page.click("#view", position={"x": pos["x"], "y": pos["y"]})
         page.wait_for_function("document.getElementById('inspector').textContent.includes('runs a C++ controller')",
-                               timeout=10000)
+                               timeout=20000)
         text = page.text_content("#inspector")
         assert text.startswith("fb2") and "range_and_bearing" in text and "leds" in text
         assert errors == []
