@@ -10,12 +10,14 @@
 --   zone="0,0"       x,y (m) of the zone's centre, where loads go
 --
 -- States: search (random walk, turn towards the nearest red blob), approach (gripper locked,
--- drive onto the target), carry (head for the zone with the load in front), leave (reverse
+-- drive onto the target; one gripped at the side is turned under until it is ahead), carry
+-- (head for the zone, the load hanging on the gripper's spring), drop (unlocked, turn until the
+-- load passes straight ahead: the gripper lets go when its disc touches it), leave (reverse
 -- and turn away after a delivery or a miss).
 
-local GRIP_REACH = 16      -- cm: a blob this close and dead ahead is touching the gripper
+local GRIP_REACH = 14.5    -- cm: a blob this close and dead ahead is touching the gripper
 local LOCK_AT = 30         -- cm: lock the gripper this close to the target
-local HELD_ANGLE = 0.35    -- rad: a held load stays within this of straight ahead
+local HELD_ANGLE = 0.35    -- rad: a touching target within this of straight ahead is held ahead
 
 local speed, zone_x, zone_y
 local state, timer, lost
@@ -33,10 +35,18 @@ local function nearest(keep)
   return best
 end
 
--- The load in the gripper: a blob close and straight ahead, whatever its colour.
+-- The load in the gripper: the blob nearest `load_distance`, the distance it had when gripped,
+-- within 2 cm of it, whatever its colour and bearing (the gripper holds it on a spring from
+-- the robot's centre, as ARGoS's: at a distance, not a bearing).
+local load_distance = 0
+local drop_side = 0  -- the side the load was on while dropping it: -1 right, 1 left
 local function load()
-  local b = nearest(function(b) return b.distance < GRIP_REACH + 3 and math.abs(b.angle) < HELD_ANGLE end)
-  return b
+  local best = nil
+  for _, b in ipairs(robot.colored_blob_omnidirectional_camera) do
+    local off = math.abs(b.distance - load_distance)
+    if off < 2 and (best == nil or off < math.abs(best.distance - load_distance)) then best = b end
+  end
+  return best
 end
 
 -- Wheel speeds steering towards `angle` (rad, robot frame) at `v` cm/s.
@@ -98,7 +108,12 @@ function step()
       robot.gripper.unlock()
       go("leave", 15)
     elseif target.distance < GRIP_REACH and math.abs(target.angle) < HELD_ANGLE then
+      load_distance = target.distance
       go("carry")  -- locked and touching: the gripper holds it from this tick's act on
+    elseif target.distance < GRIP_REACH then
+      -- Gripped at the side: turn in place under it until it is ahead.
+      local side = target.angle > 0 and 1 or -1
+      robot.wheels.set_velocity(-speed / 4 * side, speed / 4 * side)
     else
       steer(target.angle, speed / 2)
     end
@@ -110,7 +125,8 @@ function step()
     elseif is_blue(held) then
       robot.gripper.unlock()  -- delivered: the loop functions turned it blue
       deliveries = deliveries + 1
-      go("leave", 25)
+      drop_side = 0
+      go("drop", 60)
       return
     else
       lost = 0
@@ -120,6 +136,18 @@ function step()
     local bearing = math.atan(zone_y - p.y, zone_x - p.x) - yaw
     bearing = math.atan(math.sin(bearing), math.cos(bearing))
     steer(bearing, speed)
+  elseif state == "drop" then
+    -- An unlocked gripper lets go when its disc, in front, touches the load: turn until the
+    -- load passes straight ahead.
+    local held = load()
+    local side = held and (held.angle > 0 and 1 or -1) or 0
+    if held == nil or timer <= 0 or (drop_side ~= 0 and side ~= drop_side) then
+      robot.wheels.set_velocity(0, 0)
+      go("leave", 25)
+    else
+      drop_side = side
+      robot.wheels.set_velocity(-speed / 4 * side, speed / 4 * side)
+    end
   elseif state == "leave" then
     if timer > 12 then robot.wheels.set_velocity(-speed, -speed)
     elseif timer > 0 then robot.wheels.set_velocity(speed, -speed)

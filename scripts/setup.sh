@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libbox2d-dev liblua5.4-dev lua5.4 libtinyxml2-dev libeigen3-dev libpng-dev libcairo2-dev
           libgtest-dev googletest libcli11-dev nlohmann-json3-dev python3 python3-venv python3-pip python3-dev
-          pybind11-dev libcpp-httplib-dev chromium clang-format-14
+          pybind11-dev libcpp-httplib-dev chromium clang-format-14 ffmpeg
           libtomlplusplus-dev lua-check)
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -23,6 +23,7 @@ CommandMain AddDevicesCommand(CLI::App& app);
 CommandMain AddBenchCommand(CLI::App& app);
 CommandMain AddReplayCommand(CLI::App& app);
 CommandMain AddSnapshotCommand(CLI::App& app);
+CommandMain AddVideoCommand(CLI::App& app);
 CommandMain AddServeCommand(CLI::App& app);
 CommandMain AddTestCommand(CLI::App& app);
 CommandMain AddNewCommand(CLI::App& app);

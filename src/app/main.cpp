@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);  // `essaim help run`: "run" is help's topic, not a second command
   std::map<std::string, essaim::CommandMain> commands;
   for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand, essaim::AddBenchCommand,
-                   essaim::AddReplayCommand, essaim::AddSnapshotCommand, essaim::AddServeCommand,
-                   essaim::AddTestCommand, essaim::AddNewCommand}) {
+                   essaim::AddReplayCommand, essaim::AddSnapshotCommand, essaim::AddVideoCommand,
+                   essaim::AddServeCommand, essaim::AddTestCommand, essaim::AddNewCommand}) {
     size_t before = app.get_subcommands([](const CLI::App*) { return true; }).size();
     essaim::CommandMain fn = add(app);
     CLI::App* sub = app.get_subcommands([](const CLI::App*) { return true; })[before];

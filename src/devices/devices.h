@@ -31,9 +31,9 @@ void InitRobotDevices(const Model& model, const RobotDef& def, RobotState& robot
 /// and its own wheel servo (wheels, scanner, LEDs, range-and-bearing). Safe to run for
 /// distinct robots on several threads at once.
 void ActRobotOwnState(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
-/// Part two: the actuators that add, remove or move joints in the shared physics world
-/// (gripper, then turret, in tag order). One thread, robots in index order, so joints are
-/// made in the same order at any thread count. The two parts touch disjoint state, so
+/// Part two: the actuators that write into the shared physics world (the gripper's lock,
+/// then the turret's disc, in tag order). One thread, robots in index order, so they are
+/// written in the same order at any thread count. The two parts touch disjoint state, so
 /// running all of part one first gives what one ordered pass per robot gives.
 void ActRobotJoints(const Model& model, const RobotDef& def, RobotState& robot, PhysicsWorld& physics);
 /// After physics: per-robot component updates (battery discharge, scanner rotation).
@@ -76,9 +76,10 @@ void SenseBaseGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWo
 void SenseMotorGround(const DeviceConfig& cfg, RobotState& robot, const PhysicsWorld& physics,
                       const FloorRaster& floor);
 // ---- gripper and turret (gripper.cpp, turret.cpp)
-/// Locked: grips what touches the gripper disc (if holding nothing); unlocked: releases.
+/// Hands the lock to the physics: locked, it grips what touches the gripper disc (if holding
+/// nothing); unlocked, it lets go at the disc's next contact (ARGoS's rule).
 void ActGripper(RobotState& robot, PhysicsWorld& physics);
-/// Advances the turret by one tick of `dt` s in its mode and turns a held object with it.
+/// Advances the turret by one tick of `dt` s in its mode and turns the gripper disc with it.
 void ActTurret(RobotState& robot, PhysicsWorld& physics, double dt);
 void SenseTurretEncoder(RobotState& robot);
 // ---- LEDs, range and bearing, camera (leds.cpp, range_and_bearing.cpp, camera.cpp)

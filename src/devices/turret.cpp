@@ -8,7 +8,8 @@
 //                 error to the target and e_prev the previous position-mode error (0 at
 //                 start), then angle += w·dt. It converges slowly (about 3 s time
 //                 constant), as in ARGoS.
-// Act runs after the gripper's (alphabetical tag order), and turns a held object with it.
+// Act runs after the gripper's (alphabetical tag order) and turns the gripper disc; a held
+// object hangs on a spring from the robot's centre, so the turret does not carry it.
 #include "devices/devices.h"
 
 namespace essaim {

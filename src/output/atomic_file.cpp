@@ -13,8 +13,6 @@ namespace essaim {
 
 namespace fs = std::filesystem;
 
-namespace {
-/// The file a write to `path` lands in: `path` itself, or a symlink's final target.
 bool ResolveOutput(const std::string& path, std::string* target, std::string* error) {
   std::error_code ec;
   *target = path;
@@ -27,7 +25,6 @@ bool ResolveOutput(const std::string& path, std::string* target, std::string* er
   *target = real.string();
   return true;
 }
-}  // namespace
 
 bool CheckOutputFile(const std::string& path, std::string* error) {
   std::string target;

@@ -116,7 +116,7 @@ class RegionSync {
     im_.parent.resize(total);
     std::iota(im_.parent.begin(), im_.parent.end(), 0);
     for (int h = 0; h < n_; ++h)
-      if (im_.grips[h].joint) Join(h, NodeOf(im_.grips[h].target));
+      if (im_.grips[h].target.Holding()) Join(h, NodeOf(im_.grips[h].target));
     im_.current.resize(total);
     for (int k = 0; k < total; ++k) im_.current[k] = im_.RegionOfBody(Body(k));
     im_.owner.resize(total);
@@ -141,42 +141,11 @@ class RegionSync {
     for (int k = 0; k < Nodes(); ++k) im_.owner[k] = Find(k) == root ? region : im_.current[k];
   }
 
-  /// Moves every node whose owner is not its region; the grips touching a moving body come off
-  /// first and go back after, in the holder's world (a group moves whole, so it is shared).
+  /// Moves every node whose owner is not its region (a group moves whole: a grip's spring,
+  /// no Box2D joint, ties bodies by index, in one world).
   void ApplyMoves() {
-    bool any = false;
-    for (int k = 0; k < Nodes() && !any; ++k) any = im_.owner[k] != im_.current[k];
-    if (!any) return;
-    struct Saved {
-      int holder;
-      b2Vec2 linear;
-      float angular, max_force, max_torque, correction;
-    };
-    std::vector<Saved> saved;
-    for (int h = 0; h < n_; ++h) {
-      PhysicsWorld::Impl::Grip& g = im_.grips[h];
-      const int held = g.joint ? NodeOf(g.target) : -1;
-      if (!g.joint || (!Moves(h) && !Moves(held))) continue;
-      b2MotorJoint* j = g.joint;
-      saved.push_back({h, j->GetLinearOffset(), j->GetAngularOffset(), j->GetMaxForce(), j->GetMaxTorque(),
-                       j->GetCorrectionFactor()});
-      j->GetBodyA()->GetWorld()->DestroyJoint(j);
-      g.joint = nullptr;
-    }
     for (int k = 0; k < Nodes(); ++k)
       if (Moves(k)) MoveNode(k, im_.owner[k]);
-    for (const Saved& s : saved) {
-      b2MotorJointDef jd;
-      jd.bodyA = Body(s.holder);
-      jd.bodyB = Body(NodeOf(im_.grips[s.holder].target));
-      jd.linearOffset = s.linear;
-      jd.angularOffset = s.angular;
-      jd.maxForce = s.max_force;
-      jd.maxTorque = s.max_torque;
-      jd.correctionFactor = s.correction;
-      jd.collideConnected = false;
-      im_.grips[s.holder].joint = static_cast<b2MotorJoint*>(jd.bodyA->GetWorld()->CreateJoint(&jd));
-    }
   }
 
   /// Ghosts: a body gets one in each other region whose moving bodies' box comes within

@@ -1,6 +1,5 @@
 #include "physics/physics_world.h"
 
-#include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
 #include <algorithm>
@@ -58,7 +57,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->phys = model.physics;
   const PhysicsDef& phys = model.physics;
   impl_->grips.resize(model.robots.size());
-  impl_->gripping_rigidity = static_cast<float>(phys.gripping_rigidity);
+  impl_->gripping_rigidity = phys.gripping_rigidity;
   if (region_count > 1) impl_->robot_ghosts.assign(model.robots.size(), std::vector<b2Body*>(region_count, nullptr));
   // Sized once for what the model holds (loop functions may add obstacles later).
   obstacles_.reserve(model.obstacles.size());
@@ -137,38 +136,6 @@ void PhysicsWorld::RemoveLastRobot() {
   impl_->grips.pop_back();
   if (RegionCount() > 1) impl_->robot_ghosts.pop_back();
   ++impl_->shapes_moved;
-}
-
-namespace {
-/// The disc ahead of the turret at rotation `turret`, in the robot's frame.
-b2Vec2 GripperDiscCentre(double turret) {
-  return b2Vec2(static_cast<float>(footbot::kRadius * std::cos(turret)),
-                static_cast<float>(footbot::kRadius * std::sin(turret)));
-}
-
-/// Robot `body`'s gripper disc (it has one fixture of kind Gripper), or null.
-b2Fixture* GripperDisc(b2Body* body) {
-  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
-    if (TagKind(f->GetUserData().pointer) == BodyKind::Gripper) return f;
-  return nullptr;
-}
-}  // namespace
-
-void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
-  // A fixture on the robot's own body rather than ARGoS's second body pinned to it: the two
-  // move as one there, and a fixture costs no joint. A sensor that collides with nothing
-  // (ARGoS marks the gripper shape a sensor: robots still touch walls with their body), of
-  // density 0: the body's mass set above stays as it is.
-  b2CircleShape disc;
-  disc.m_radius = static_cast<float>(kGripperRadius);
-  disc.m_p = GripperDiscCentre(0);
-  b2FixtureDef fd;
-  fd.shape = &disc;
-  fd.density = 0;
-  fd.isSensor = true;
-  fd.filter.maskBits = 0;  // no contact is ever made for it, not even a sensor's
-  fd.userData.pointer = PackTag(BodyKind::Gripper, index);
-  AsBody(robot_body)->CreateFixture(&fd);
 }
 
 int PhysicsWorld::RegionCount() const { return impl_->RegionCount(); }
@@ -293,7 +260,7 @@ void PhysicsWorld::RemoveObstacle(int index) {
     GripTarget& t = impl_->grips[r].target;
     if (t.kind != BodyKind::Obstacle) continue;
     if (t.index == index)
-      Release(static_cast<int>(r));  // before the body takes the joint with it
+      Release(static_cast<int>(r));
     else if (t.index > index)
       --t.index;
   }
@@ -341,18 +308,31 @@ void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
 
 namespace {
 struct RegionSteps {
-  std::vector<PhysicsWorld::Impl::Region>* regions;
+  PhysicsWorld* world;
   float h;
-  int substeps;
+  int first, count;  // sub-steps first .. first + count - 1 of the tick
 };
-void StepRegion(void* ctx, int region) {
+}  // namespace
+
+void PhysicsWorld::StepRegionJob(void* ctx, int region) {
   const RegionSteps& s = *static_cast<const RegionSteps*>(ctx);
+  s.world->StepRegion(region, s.first, s.count, s.h);
+}
+
+void PhysicsWorld::StepRegion(int region, int first, int count, float h) {
   // 4 velocity and 2 position iterations per sub-step: with ARGoS's 10 sub-steps that is 40
   // solver passes per tick; 8/3 cost 9% more instructions with no change in any test.
-  b2World& w = *(*s.regions)[region].world;
-  for (int i = 0; i < s.substeps; ++i) w.Step(s.h, 4, 2);
+  b2World& w = *impl_->regions[region].world;
+  const bool grips = !impl_->grip_robots.empty();
+  for (int i = first; i < first + count; ++i) {
+    if (grips) {
+      if (i > 0) GripEvents(region, i);  // sub-step 0's were taken for every region at once
+      ApplyGripSprings(region, i, h);
+    }
+    w.Step(h, 4, 2);
+    if (grips) EndGripSubstep(region, i);
+  }
 }
-}  // namespace
 
 namespace {
 /// Moves a moving dynamic body by `h` seconds at its velocity (h < 0: back).
@@ -379,12 +359,12 @@ void PhysicsWorld::ShiftDynamicBodies(float h) {
 void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
   const float h = static_cast<float>(dt / substeps);
   ShiftDynamicBodies(h);
-  if (impl_->RegionCount() == 1) {
-    RegionSteps steps{&impl_->regions, h, substeps};
-    StepRegion(&steps, 0);
-  } else {
+  BeginGripTick(substeps);
+  if (impl_->RegionCount() == 1)
+    StepRegion(0, 0, substeps, h);
+  else
     StepRegions(dt, substeps, runner);
-  }
+  EndGripTick();
   ShiftDynamicBodies(-h);
   ++impl_->shapes_moved;
 }
@@ -395,13 +375,14 @@ void PhysicsWorld::StepRegions(double dt, int substeps, const PhysicsRunner& run
   // The regions step one sub-step at a time, the ghosts following their bodies in between:
   // a ghost moves at its body's velocity of the sub-step's start, never a tick's.
   // Each region's world is its own: stepping them at once writes nothing they share.
-  RegionSteps steps{&impl_->regions, static_cast<float>(dt / substeps), 1};
+  RegionSteps steps{this, static_cast<float>(dt / substeps), 0, 1};
   for (int i = 0; i < substeps; ++i) {
     if (i > 0) FollowGhosts(runner);
+    steps.first = i;
     if (runner.run)
-      runner.run(runner.pool, regions, &StepRegion, &steps);
+      runner.run(runner.pool, regions, &StepRegionJob, &steps);
     else
-      for (int r = 0; r < regions; ++r) StepRegion(&steps, r);
+      for (int r = 0; r < regions; ++r) StepRegionJob(&steps, r);
   }
 }
 
@@ -427,8 +408,8 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
   b->SetLinearVelocity(b2Vec2(0, 0));
   b->SetAngularVelocity(0);
   // A held object moves with the robot instead of being dragged across the arena.
-  if (b2MotorJoint* j = impl_->grips[robot].joint) {
-    b2Body* held = j->GetBodyB();
+  if (impl_->grips[robot].target.Holding()) {
+    b2Body* held = AsBody(HeldBody(robot));
     b2Vec2 local = b2MulT(before, held->GetPosition());
     held->SetTransform(b2Mul(b->GetTransform(), local), held->GetAngle() + turn);
     held->SetLinearVelocity(b2Vec2(0, 0));
@@ -490,51 +471,6 @@ class ClosestRay : public b2RayCastCallback {
   const std::vector<double>& bottoms_;
   double z_;
   int exclude_;
-};
-
-// Grippable fixtures overlapping the gripper disc; keeps the deepest (ties: robots before
-// obstacles, then lower index), so the choice never depends on the tree's order.
-class GripQuery : public b2QueryCallback {
- public:
-  GripQuery(const b2Vec2& centre, int self) : centre_(centre), self_(self) {}
-  bool ReportFixture(b2Fixture* f) override {
-    uintptr_t tag = f->GetUserData().pointer;
-    BodyKind kind = TagKind(tag);
-    int index = TagIndex(tag);
-    if ((kind == BodyKind::Robot && index == self_) || kind == BodyKind::Gripper)
-      return true;                                                                         // grippers: not grippable
-    if (kind == BodyKind::None || f->GetBody()->GetType() != b2_dynamicBody) return true;  // static: not grippable
-    b2DistanceInput in;
-    in.proxyA.Set(&centre_, 1, 0.0f);
-    in.proxyB.Set(f->GetShape(), 0);
-    in.transformA.SetIdentity();
-    in.transformB = f->GetBody()->GetTransform();
-    in.useRadii = false;
-    b2SimplexCache cache;
-    cache.count = 0;
-    b2DistanceOutput out;
-    b2Distance(&out, &cache, &in);
-    // Signed gap between the disc and the shape (its radius: circle radius, polygon skin).
-    double gap = out.distance - f->GetShape()->m_radius - kGripperRadius;
-    if (gap >= 0) return true;
-    bool better = best.kind == BodyKind::None || gap < gap_ ||
-                  (gap == gap_ &&
-                   (static_cast<int>(kind) < static_cast<int>(best.kind) || (kind == best.kind && index < best.index)));
-    if (better) {
-      best.kind = kind;
-      best.index = index;
-      body = f->GetBody();
-      gap_ = gap;
-    }
-    return true;
-  }
-  GripTarget best;
-  b2Body* body = nullptr;
-
- private:
-  b2Vec2 centre_;
-  int self_;
-  double gap_ = 0;
 };
 
 class RobotQuery : public b2QueryCallback {
@@ -830,74 +766,5 @@ void PhysicsWorld::RobotsNear(const Vec2& center, double radius, std::vector<int
   // The tree's order depends on insertion history, not on indices: sort for determinism.
   std::sort(out->begin(), out->end());
 }
-
-// ---- gripper
-
-Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
-  const b2Body* b = AsBody(robots_[robot]);
-  double a = b->GetAngle() + turret;
-  return {b->GetPosition().x + footbot::kRadius * std::cos(a), b->GetPosition().y + footbot::kRadius * std::sin(a)};
-}
-
-Vec2 PhysicsWorld::GripperDiscPoint(int robot) const {
-  b2Body* b = AsBody(robots_[robot]);
-  const b2Fixture* disc = GripperDisc(b);
-  const b2Vec2 p = b2Mul(b->GetTransform(), static_cast<const b2CircleShape*>(disc->GetShape())->m_p);
-  return {p.x, p.y};
-}
-
-bool PhysicsWorld::TryGrip(int robot, double turret) {
-  Impl::Grip& g = impl_->grips[robot];
-  if (g.joint) return true;
-  Vec2 c = GripperPoint(robot, turret);
-  GripQuery q(b2Vec2(static_cast<float>(c.x()), static_cast<float>(c.y())), robot);
-  b2AABB box;
-  box.lowerBound.Set(static_cast<float>(c.x() - kGripperRadius), static_cast<float>(c.y() - kGripperRadius));
-  box.upperBound.Set(static_cast<float>(c.x() + kGripperRadius), static_cast<float>(c.y() + kGripperRadius));
-  for (Impl::Region& region : impl_->regions) region.world->QueryAABB(&q, box);
-  if (!q.body) return false;
-  b2Body* self = AsBody(robots_[robot]);
-  // A joint ties bodies of one world: what is gripped joins the gripper's region now.
-  if (q.body->GetWorld() != self->GetWorld()) q.body = AsBody(MoveGripGroupVoid(q.best, impl_->RegionOfBody(self)));
-  b2MotorJointDef jd;
-  jd.Initialize(self, q.body);  // target offsets = the current relative pose: hold it where it is
-  jd.maxForce = impl_->gripping_rigidity;
-  jd.maxTorque = impl_->gripping_rigidity;
-  jd.correctionFactor = 0.3f;
-  jd.collideConnected = false;  // robot and held object no longer push each other
-  g.joint = static_cast<b2MotorJoint*>(self->GetWorld()->CreateJoint(&jd));
-  g.target = q.best;
-  g.offset0 = jd.linearOffset;
-  g.angle0 = jd.angularOffset;
-  g.turret = turret;
-  g.turned = 0;
-  q.body->SetAwake(true);
-  return true;
-}
-
-void PhysicsWorld::Release(int robot) {
-  Impl::Grip& g = impl_->grips[robot];
-  if (!g.joint) return;
-  g.joint->GetBodyA()->GetWorld()->DestroyJoint(g.joint);
-  g = Impl::Grip();
-}
-
-void PhysicsWorld::SetGripTurret(int robot, double turret) {
-  if (b2Fixture* disc = GripperDisc(AsBody(robots_[robot]))) {
-    // The broad-phase box follows at the next step (robots are always awake); the ray grid
-    // is refiled at the next query.
-    static_cast<b2CircleShape*>(disc->GetShape())->m_p = GripperDiscCentre(turret);
-    ++impl_->shapes_moved;
-  }
-  Impl::Grip& g = impl_->grips[robot];
-  if (!g.joint || turret == g.turret) return;
-  g.turned += WrapSigned(turret - g.turret);  // unwrapped: a turret in speed mode may turn many times
-  g.turret = turret;
-  b2Rot r(static_cast<float>(g.turned));
-  g.joint->SetLinearOffset(b2Mul(r, g.offset0));
-  g.joint->SetAngularOffset(g.angle0 + static_cast<float>(g.turned));
-}
-
-GripTarget PhysicsWorld::Gripped(int robot) const { return impl_->grips[robot].target; }
 
 }  // namespace essaim

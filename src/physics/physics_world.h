@@ -133,22 +133,23 @@ class PhysicsWorld {
   /// Robots whose centres lie within `radius` of `center`, by index (via the tree, not all pairs).
   void RobotsNear(const Vec2& center, double radius, std::vector<int>* out) const;
 
-  // ---- gripper: the turret angle `turret` (rad, relative to the body) is
-  // robot state kept by devices/turret.cpp; physics only holds the joint.
+  // ---- gripper (physics_grip.cpp): the turret angle `turret` (rad, relative to the body) is
+  // robot state kept by devices/turret.cpp; physics holds the disc and the spring.
   /// Centre of the gripper disc: body radius in direction yaw + turret.
   Vec2 GripperPoint(int robot, double turret) const;
   /// Centre of the robot's gripper disc as the rays see it now (the turret last applied).
   Vec2 GripperDiscPoint(int robot) const;
-  /// If the robot holds nothing, grips the grippable shape (movable box or cylinder,
-  /// another robot) overlapping its gripper disc — the deepest if several — with a joint
-  /// that keeps it where it is relative to the turret, force and torque capped by
-  /// `gripping_rigidity`. Returns whether the robot now holds something. A grip event
-  /// allocates one joint (Box2D's pooled allocator); holding allocates nothing.
-  bool TryGrip(int robot, double turret);
-  /// Lets go of what the robot holds (no-op if nothing).
+  /// The gripper's lock, for the steps that follow. A locked gripper that holds nothing
+  /// grips, before any sub-step, the grippable shape (movable box or cylinder, another robot)
+  /// overlapping its disc — the deepest if several — with ARGoS's damped spring: from the
+  /// robot's centre to the contact point, rest length their distance then, stiffness
+  /// `gripping_rigidity`, acting from the next sub-step. An unlocked gripper that holds
+  /// something lets go after the first sub-step in which its disc touches a grippable shape
+  /// (what it holds or another), as ARGoS does. Holding allocates nothing.
+  void SetGripperLocked(int robot, bool locked);
+  /// Lets go of what the robot holds now (no-op if nothing); the lock stays.
   void Release(int robot);
-  /// Turns the gripper disc with the turret, and carries the held object round the robot's
-  /// centre with it.
+  /// Turns the gripper disc with the turret (the spring's end at the robot's centre stays).
   void SetGripTurret(int robot, double turret);
   GripTarget Gripped(int robot) const;
 
@@ -167,6 +168,23 @@ class PhysicsWorld {
   void ShiftDynamicBodies(float h);
   /// Several regions, between two sub-steps: each ghost takes its body's pose and velocity.
   void FollowGhosts(const PhysicsRunner& runner);
+  /// One region's sub-steps first .. first + count - 1 of a tick, with the grips' springs.
+  void StepRegion(int region, int first, int count, float h);
+  /// StepRegion as a PhysicsRunner job (ctx: the sub-steps).
+  static void StepRegionJob(void* ctx, int region);
+  /// Before a tick's sub-steps: the robots that hold or are locked, and their grips and
+  /// releases at the tick's start (every region's shapes; a grip brings its target over).
+  void BeginGripTick(int substeps);
+  /// After a tick's sub-steps: this tick's grips act from the first sub-step of the next.
+  void EndGripTick();
+  /// Grips and releases decided before sub-step `substep` (region -1: every region's).
+  void GripEvents(int region, int substep);
+  /// The springs of the region's holders, for one sub-step of `h` seconds.
+  void ApplyGripSprings(int region, int substep, float h);
+  /// Releases that took effect in sub-step `substep`.
+  void EndGripSubstep(int region, int substep);
+  /// The b2Body* robot `robot` holds, or null.
+  void* HeldBody(int robot) const;
   /// Moves what grip target `t` belongs to (it and every body tied to it by grips) into
   /// region `region`; returns the target's body there.
   void* MoveGripGroupVoid(const GripTarget& t, int region);

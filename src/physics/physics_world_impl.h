@@ -5,6 +5,7 @@
 #include <box2d/box2d.h>
 
 #include <atomic>
+#include <climits>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -45,20 +46,23 @@ struct PhysicsWorld::Impl {
   std::vector<b2Body*> controls;              // kinematic servo targets, one per robot
   std::vector<double> obstacle_top;           // m, top of each obstacle
   std::vector<double> obstacle_bottom;
-  /// One gripper per robot. The grip is a motor joint (robot = body A, held = body B):
-  /// Box2D's form of ARGoS's gripper pivot with capped force; its target offsets turn
-  /// with the turret, so a held object orbits the robot's centre.
+  /// One gripper per robot (physics_grip.cpp). Holding: ARGoS's damped spring from the
+  /// robot's centre to `anchor` on the held body, no Box2D joint (the two still collide).
   struct Grip {
-    b2MotorJoint* joint = nullptr;
-    GripTarget target;
-    b2Vec2 offset0{0, 0};  // held body's origin in the robot frame at grip time (m)
-    float angle0 = 0;      // held angle minus robot angle at grip time (rad, unwrapped)
-    double turret = 0;     // turret angle last applied (rad)
-    double turned = 0;     // turret rotation since the grip, unwrapped (rad)
+    GripTarget target;    // what the spring holds (kind None: nothing)
+    b2Vec2 anchor{0, 0};  // the spring's end, in the held body's frame (m)
+    double rest = 0;      // rest length (m)
+    bool locked = false;  // the gripper's lock, as the last Act set it
+    int from = 0;         // this tick, the spring acts from this sub-step on
+    int until = INT_MAX;  // ... and to this one, then it is gone (released)
+    double turret = 0;    // the disc's turret angle after this tick (rad)
+    double turn = 0;      // how far it turns over this tick (rad): ARGoS turns it sub-step by sub-step
   };
   std::vector<Grip> grips;
-  float gripping_rigidity = 10000;  // N (force cap) and N·m (torque cap) of a grip
-  PhysicsDef phys;                  // friction of obstacles added later
+  std::vector<int> grip_robots;      // this tick: the robots that hold or are locked, by index
+  double gripping_rigidity = 10000;  // N/m, the spring's stiffness
+  int substeps = 1;                  // this tick's
+  PhysicsDef phys;                   // friction of obstacles added later
 
   /// Several regions: each body's copies in the other regions' worlds, [index][region]
   /// (null where none). A ghost is a static (of a static body) or kinematic copy moving at

@@ -22,6 +22,10 @@ World::~World() {
   // robots): on the pool, each thread closing its own range. Nothing else reads a
   // controller by then, and the loop functions' state keeps no reference into theirs.
   if (!pool) return;
+  // C++ controllers first, one at a time in robot order: their destructors are user code
+  // that ARGoS runs on one thread, and they share the experiment's session.
+  for (auto& c : controllers)
+    if (dynamic_cast<CppController*>(c.get())) c.reset();
   auto close = [this](int begin, int end) {
     for (int i = begin; i < end; ++i) controllers[i].reset();
   };

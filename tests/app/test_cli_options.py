@@ -18,7 +18,7 @@ def run(*args, cwd=None):
     return subprocess.run([ESSAIM, *map(str, args)], capture_output=True, text=True, timeout=60, cwd=cwd)
 
 
-@pytest.mark.parametrize("command", ["run", "check", "devices", "bench", "replay", "snapshot"])
+@pytest.mark.parametrize("command", ["run", "check", "devices", "bench", "replay", "snapshot", "video"])
 def test_every_command_has_its_own_help_with_an_example(command):
     r = run(command, "--help")
     assert r.returncode == 0, r.stderr
@@ -51,6 +51,8 @@ def test_defaults_are_shown():
     (["run", DATA / "tiny.argos", "--record", "every=0"], "--record: 'every=0' must be every=N"),
     (["run", DATA / "tiny.argos", "extra"], "unexpected argument extra"),
     (["snapshot", "x", "--size", "8"], "--size: '8' is out of range: expected 16 to 8192"),
+    (["video", "x", "--fps", "500"], "--fps: '500' is out of range: expected 1 to 240"),
+    (["video", "x", "--taril", "5"], "unknown option --taril (did you mean --trail?)"),
     (["bench", "--only", "nope"], "--only: nope not in"),
     (["rnu"], "unknown command 'rnu' (did you mean 'run'?)"),
     (["help", "chek"], "unknown command 'chek' (did you mean 'check'?)"),

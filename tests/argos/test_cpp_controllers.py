@@ -132,3 +132,18 @@ def test_random_draws_and_logs_do_not_depend_on_threads(faulty, tmp_path):
         outputs.append((logged, (tmp_path / threads / "walker" / "recording.bin").read_bytes()))
     assert outputs[0] == outputs[1]
     assert outputs[0][0].count("first draw") == 6 and "turns" in outputs[0][0]
+
+
+def test_loop_functions_add_robots_that_run_a_cpp_controller(faulty, tmp_path):
+    out = tmp_path / "spawned"
+    spawner = faulty / "spawner.argos"
+    text = (faulty / "faulty.argos").read_text().replace(
+        "  <arena", '  <loop_functions library="build/libfaulty" label="spawner"/>\n  <arena')
+    spawner.write_text(text.replace('config="thrower"', 'config="walker"'))
+    done = run(spawner, "--out", str(out), "--threads", "2", cwd=faulty)
+    assert done.returncode == 0, done.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["robots"] == 8 and summary["status"] == "ok"
+    # Their Init ran when added (its log line), and the loop functions reach their controllers.
+    assert "spawned0 first draw" in done.stdout and "spawned1 first draw" in done.stdout
+    assert done.stdout.count(" walks") == 8

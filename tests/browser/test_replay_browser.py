@@ -252,3 +252,42 @@ def test_replay_of_30_robots_10000_ticks_loads_and_scrubs(essaim, browser, tmp_p
     # The time is reported above, not bounded (a busy machine is slower, not wrong):
     # open_page's wait is the guard against a page that never gets ready.
     assert errors == []
+
+
+def test_replay_exports_the_view_as_a_webm_video(essaim, browser, small_run, tmp_path):
+    """The video button plays from the tick shown to the end while MediaRecorder records the
+    canvas, then downloads a WebM that ffprobe reads: VP8/9, the canvas's size, frames that
+    show the arena and the robots."""
+    if not shutil.which("ffprobe"):
+        pytest.skip("ffprobe missing: scripts/setup.sh installs Debian's ffmpeg")
+    subprocess.run([essaim, "replay", str(small_run)], check=True, capture_output=True, timeout=60)
+    page, errors, _ = open_page(browser, small_run / "replay.html")
+    assert page.evaluate("essaimReplay.canRecordVideo")
+    assert page.is_visible("#record")
+    page.select_option("#speed", "20")  # 200 ticks at 20 x 10 ticks/s: a one-second video
+    with page.expect_download(timeout=30000) as download:
+        page.click("#record")
+        assert page.evaluate("essaimReplay.recordingVideo()")
+    webm = tmp_path / download.value.suggested_filename
+    download.value.save_as(webm)
+    assert webm.name == "small-replay.webm"
+    assert page.text_content("#tick") == "200"  # played to the end, then stopped recording
+    assert not page.evaluate("essaimReplay.recordingVideo()")
+    assert page.text_content("#record").strip().endswith("video")
+    probe = json.loads(subprocess.run(
+        ["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+         "stream=codec_name,width,height,nb_read_frames", "-of", "json", str(webm)],
+        capture_output=True, text=True, check=True, timeout=60).stdout)["streams"][0]
+    assert probe["codec_name"] in ("vp8", "vp9")
+    size = page.evaluate("[document.getElementById('view').width, document.getElementById('view').height]")
+    assert [probe["width"], probe["height"]] == size
+    assert int(probe["nb_read_frames"]) >= 5
+    # Its last frame: the dark page around a light arena, robots in between (many colours).
+    last = tmp_path / "last.png"  # each frame written over the one before: the last stays
+    subprocess.run(["ffmpeg", "-v", "error", "-i", str(webm), "-update", "1", str(last)], check=True, timeout=60)
+    raw = subprocess.run(["ffmpeg", "-v", "error", "-i", str(last), "-f", "rawvideo", "-pix_fmt", "rgb24", "-"],
+                         capture_output=True, check=True, timeout=60).stdout
+    assert len(raw) == size[0] * size[1] * 3
+    colours = {raw[i:i + 3] for i in range(0, size[0] * size[1] * 3, 3 * 7)}
+    assert len(colours) > 20
+    assert errors == []

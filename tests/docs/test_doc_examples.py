@@ -18,6 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DOCS = ["README.md"] + sorted(str(p.relative_to(ROOT)) for p in (ROOT / "docs").glob("*.md"))
 COPIED = ("arenas", "controllers", "scripts", "tools", "docs", "bench")
 TIMEOUT = 300  # seconds per block
+SIERRA_VENV = ROOT / ".venv-sierra"
 
 
 @pytest.fixture(scope="module")
@@ -38,6 +39,8 @@ def sandbox(tmp: Path, essaim: Path) -> dict:
         shutil.copytree(ROOT / d, tmp / d, symlinks=True)
     (tmp / "build").symlink_to(essaim.parent)
     make_venv(tmp / ".venv")
+    if SIERRA_VENV.exists():  # SIERRA's own venv (docs/sierra.md), as setup_sierra.sh makes it
+        (tmp / ".venv-sierra").symlink_to(SIERRA_VENV)
     bin_dir = tmp / "home" / ".local" / "bin"
     env = users_env(bin_dir)
     r = subprocess.run(["bash", "scripts/link_build.sh", str(bin_dir)], cwd=tmp, env=env,
@@ -96,6 +99,8 @@ def test_examples_run_as_written(doc, tmp_path, essaim):
     found = examples(ROOT / doc, ROOT)
     if not found:
         pytest.skip(f"{doc} has no example")
+    if doc == "docs/sierra.md" and not (SIERRA_VENV / "bin" / "sierra").exists():
+        pytest.skip(f"SIERRA is not installed in {SIERRA_VENV} (scripts/setup_sierra.sh makes it)")
     env = sandbox(tmp_path, essaim)
     for n, ex in enumerate(found):
         if not ex.skip:

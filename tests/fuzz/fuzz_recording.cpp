@@ -1,6 +1,7 @@
-// The recording reader behind `essaim replay` and `essaim snapshot`, then a small snapshot
-// of its first and last frames when Cairo is built in (the renderer once spun forever on
-// damaged geometry).
+// The recording reader behind `essaim replay`, `essaim snapshot` and `essaim video` (the
+// header parser is the streaming reader's too), then a small snapshot of its last frame when
+// Cairo is built in (the renderer once spun forever on damaged geometry), and a video's frame:
+// a view around the first robot, the tick, ids and scale bar.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -30,6 +31,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   opt.trail_ticks = 1000;
   std::string png;
   RenderSnapshotPng(rec, frames - 1, opt, &png, &error);
+  FrameRenderer renderer(rec.scene(), 64, 48);
+  DrawOptions draw;
+  draw.tick = draw.ids = draw.scale_bar = true;
+  const RecordedRobot first = rec.RobotCount() > 0 ? rec.Robot(frames - 1, 0) : RecordedRobot{};
+  draw.view_size = Vec2(3, 2.25);
+  draw.view_min = Vec2(first.x, first.y) - draw.view_size / 2;
+  renderer.Draw({rec.Frame(0), rec.Frame(frames - 1)}, draw, &error);
 #endif
   return 0;
 }

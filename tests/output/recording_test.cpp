@@ -319,6 +319,55 @@ TEST(Recording, ReaderRejectsOtherFilesAndIgnoresACutFrame) {
   EXPECT_EQ(rec.FrameCount(), 5u);
 }
 
+// The streaming reader (essaim video) gives the frames the whole-file reader gives, reading
+// one frame at a time; it finds frames by tick and refuses what the other refuses.
+TEST(Recording, StreamReadsTheSameFramesOneAtATime) {
+  TempDir d;
+  Scene s = ThreeRobots(d, 100);
+  ASSERT_TRUE(s.ok()) << s.error;
+  const std::string path = d.path() + "/recording.bin";
+  RecordRun(*s.world, path, 4, 30);  // ticks 0, 4, ..., 28 and the last, 30
+  Recording whole;
+  RecordingStream stream;
+  std::string error;
+  ASSERT_TRUE(Recording::Read(path, &whole, &error)) << error;
+  ASSERT_TRUE(stream.Open(path, &error)) << error;
+  ASSERT_EQ(stream.FrameCount(), whole.FrameCount());
+  EXPECT_EQ(stream.scene().robot_ids, whole.scene().robot_ids);
+  EXPECT_EQ(stream.scene().every, 4u);
+  std::vector<uint8_t> bytes;
+  for (size_t k = 0; k < whole.FrameCount(); ++k) {
+    ASSERT_TRUE(stream.ReadFrame(k, &bytes, &error)) << error;
+    ASSERT_EQ(bytes.size(), whole.FrameBytes());
+    FrameView f(&stream.scene(), bytes.data());
+    EXPECT_EQ(f.Tick(), whole.Tick(k));
+    EXPECT_EQ(stream.TickOf(k), whole.Tick(k));
+    for (size_t i = 0; i < whole.RobotCount(); ++i) {
+      EXPECT_EQ(f.Robot(i).x, whole.Robot(k, i).x);
+      EXPECT_EQ(f.Robot(i).yaw, whole.Robot(k, i).yaw);
+    }
+  }
+  EXPECT_EQ(whole.Tick(whole.FrameCount() - 1), 30u);
+  for (uint64_t tick : {0, 3, 4, 29, 30, 1000}) EXPECT_EQ(stream.FrameAtOrBefore(tick), whole.FrameAtOrBefore(tick));
+  EXPECT_FALSE(stream.ReadFrame(whole.FrameCount(), &bytes, &error));
+  EXPECT_NE(error.find("cannot read frame"), std::string::npos) << error;
+
+  std::string file;
+  ASSERT_TRUE(ReadFile(path, &file));
+  RecordingStream cut;  // a cut last frame
+  ASSERT_TRUE(cut.Open(d.Write("cut.bin", file.substr(0, file.size() - 7)), &error)) << error;
+  EXPECT_EQ(cut.FrameCount(), whole.FrameCount() - 1);
+  RecordingStream other;
+  EXPECT_FALSE(other.Open(d.Write("page.html", "<html>not a recording</html>"), &error));
+  EXPECT_NE(error.find("not an essaim recording"), std::string::npos) << error;
+  RecordingStream short_file;
+  EXPECT_FALSE(short_file.Open(d.Write("short.bin", "ESSAIM"), &error));
+  EXPECT_NE(error.find("not an essaim recording"), std::string::npos) << error;
+  RecordingStream missing;
+  EXPECT_FALSE(missing.Open(d.path() + "/missing.bin", &error));
+  EXPECT_NE(error.find("cannot read"), std::string::npos) << error;
+}
+
 TEST(Recording, Rgb565RoundTripsPrimaries) {
   for (Color c : {Color{255, 0, 0, 255}, Color{0, 255, 0, 255}, Color{0, 0, 255, 255}, Color{255, 255, 0, 255},
                   Color{255, 255, 255, 255}, Color{0, 0, 0, 255}})

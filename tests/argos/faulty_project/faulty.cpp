@@ -79,3 +79,28 @@ class CRandomWalker : public CCI_Controller {
   CRandom::CRNG* m_pcLateRNG = nullptr;
 };
 REGISTER_CONTROLLER(CRandomWalker, "random_walker_controller")
+
+/* Loop functions that add two robots running the walker in Init (census: loop functions that
+ * create their robots), and check in PostExperiment that both were stepped. */
+#include <argos3/core/simulator/loop_functions.h>
+#include <argos3/plugins/robots/foot-bot/simulator/footbot_entity.h>
+
+class CSpawner : public CLoopFunctions {
+ public:
+  void Init(TConfigurationNode&) override {
+    for (UInt32 i = 0; i < 2; ++i) {
+      CFootBotEntity* pcRobot =
+          new CFootBotEntity("spawned" + std::to_string(i), "walker", CVector3(-2.0 + i, 2.0, 0), CQuaternion());
+      AddEntity(*pcRobot);
+    }
+  }
+  void PostExperiment() override {
+    CSpace::TMapPerType& tRobots = GetSpace().GetEntitiesByType("foot-bot");
+    for (CSpace::TMapPerType::iterator it = tRobots.begin(); it != tRobots.end(); ++it) {
+      CFootBotEntity& cRobot = *any_cast<CFootBotEntity*>(it->second);
+      CRandomWalker* pcWalker = dynamic_cast<CRandomWalker*>(&cRobot.GetControllableEntity().GetController());
+      LOG << cRobot.GetId() << (pcWalker ? " walks" : " does not walk") << std::endl;
+    }
+  }
+};
+REGISTER_LOOP_FUNCTIONS(CSpawner, "spawner")
