@@ -187,7 +187,10 @@ def test_clustering_in_cpp_keeps_the_lua_twins_metrics_at_any_thread_count(clust
     one, two = (json.loads((outs[t] / "cpp_metrics.json").read_text()) for t in ("1", "2"))
     assert one == two
     assert (outs["1"] / "cpp_timeseries.csv").read_text() == (outs["2"] / "cpp_timeseries.csv").read_text()
-    assert sorted(one) == sorted(json.loads((lua / "metrics.json").read_text()))
+    # all_delivered_tick is there only when every cylinder arrived, which the two placements
+    # (and, since the spring-hold clustering controller, seed 7's Lua run) decide apart.
+    optional = {"all_delivered_tick"}
+    assert sorted(set(one) - optional) == sorted(set(json.loads((lua / "metrics.json").read_text())) - optional)
     header = (lua / "timeseries.csv").read_text().splitlines()[0]
     assert (outs["1"] / "cpp_timeseries.csv").read_text().splitlines()[0] == header
 
