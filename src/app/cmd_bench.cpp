@@ -1,5 +1,7 @@
 // `essaim bench`: fixed scenarios, one table of robot-steps per second and where the time
-// goes. Scenarios are .argos files in bench/ (found beside the sources or with --dir).
+// goes. Scenarios are .argos files in bench/ (found beside the sources or with --dir); the
+// C++ controllers they name are libraries built with essaim (bench/avoidance_cpp), found
+// through ARGOS_PLUGIN_PATH, to which bench adds the folder they were built or installed in.
 #include <sys/resource.h>
 #include <time.h>
 
@@ -7,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 
 #include "app/bench_scale.h"
@@ -36,6 +40,9 @@ const Scenario kScenarios[] = {
     {"diffusion-minimal-100", "diffusion_1000.argos", {"arena.distribute[2].entity.quantity=100"}},
     {"avoidance-100", "avoidance_1000.argos", {"arena.distribute[2].entity.quantity=100"}},
     {"avoidance-1000", "avoidance_1000.argos", {}},
+    // The same with avoidance.lua's C++ twin (bench/avoidance_cpp): the simulator without Lua.
+    {"avoidance-cpp-100", "avoidance_cpp_1000.argos", {"arena.distribute[2].entity.quantity=100"}},
+    {"avoidance-cpp-1000", "avoidance_cpp_1000.argos", {}},
     {"rays-1000", "rays_1000.argos", {}},
     {"rab-1000", "rab_1000.argos", {}},
     {"camera-1000", "camera_1000.argos", {}},
@@ -49,6 +56,23 @@ const Scenario kScenarios[] = {
     {"foraging30m-100", "../arenas/foraging_30m.argos", {"arena.distribute.entity.quantity=100"}},
     {"foraging30m-1000", "../arenas/foraging_30m.argos", {}},
 };
+
+// The folder holding the bench's C++ controller libraries: build/bench beside build/essaim,
+// or an install's lib/essaim/bench; appended to ARGOS_PLUGIN_PATH (made if unset), where the
+// scenarios' library="libbench_avoidance" is looked for first, as ARGoS looks for it.
+void AddBenchPluginFolder() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (ec) return;
+  for (const fs::path& dir : {exe_dir / "bench", exe_dir / ".." / "lib" / "essaim" / "bench"}) {
+    if (!fs::is_directory(dir, ec)) continue;
+    const char* old = std::getenv("ARGOS_PLUGIN_PATH");
+    const std::string path = old && *old ? std::string(old) + ":" + dir.string() : dir.string();
+    setenv("ARGOS_PLUGIN_PATH", path.c_str(), 1);
+    return;
+  }
+}
 
 double PeakRssMb() {
   rusage u;
@@ -129,6 +153,11 @@ int BenchFloor(const BenchArgs& a) {
     if (!wanted) continue;
     auto one = LoadScenario(a.dir, s, a.ticks, 1, a.strict);
     if (!one) return kExitBadInput;
+    if (std::any_of(one->controllers.begin(), one->controllers.end(), [](const ControllerDef& c) { return c.Cpp(); })) {
+      std::fprintf(stderr, "%s: --floor times Lua controllers in bare Lua; this scenario's are C++ (skipped)\n",
+                   s.name);
+      continue;
+    }
     double floor = 0, floor_cpu = 0, same_cpu = 0;
     long long steps = 0;
     for (int k = 0; k < a.repeat; ++k) {
@@ -290,6 +319,7 @@ CommandMain AddBenchCommand(CLI::App& app) {
   auto s = std::make_shared<BenchScaleArgs>();
   CLI::App* scale = AddScaleSubcommand(*sub, s.get());
   return [a, s, scale] {
+    AddBenchPluginFolder();
     if (!scale->parsed()) return Bench(*a);
     if (ReportLeftovers(*scale, "essaim bench scale")) return kExitBadInput;
     return BenchScale(*s);

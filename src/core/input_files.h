@@ -11,7 +11,8 @@ namespace essaim {
 
 struct InputFile {
   std::string path;  // absolute, canonical
-  std::string role;  // arena | controller | loop_functions | module | floor_image
+  std::string role;  // arena | controller | controller_library | loop_functions | loop_functions_library |
+                     // module | floor_image
   std::string hash;  // "fnv1a64:<16 hex>" of the bytes read
 };
 

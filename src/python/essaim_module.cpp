@@ -326,6 +326,11 @@ class Simulation {
   py::object LuaGlobal(const py::object& robot, const std::string& name) const {
     const World& w = Live();
     const size_t i = RobotIndex(robot);
+    const RobotDef& def = w.model.robots[i];
+    if (def.controller >= 0 && w.model.controllers[def.controller].Cpp())
+      throw Error("lua_global: robot '" + def.id + "' runs a C++ controller (<" +
+                  w.model.controllers[def.controller].label + " id=\"" + def.controller_id +
+                  "\">), which has no Lua globals");
     Value value;
     std::string error;
     if (!LuaGlobalToValue(LuaStateOf(w.controllers[i].get()), name, &value, &error))
@@ -526,7 +531,8 @@ PYBIND11_MODULE(essaim, m) {
            "Starts again from tick 0 (files read again), with this seed or the same one.")
       .def(
           "lua_global", &Simulation::LuaGlobal, py::arg("robot"), py::arg("name"),
-          "A robot's (id or index) Lua global as Python data: numbers, strings, booleans, lists, dicts; None if unset.")
+          "A robot's (id or index) Lua global as Python data: numbers, strings, booleans, lists, dicts; None if unset. "
+          "An error for a robot running a C++ controller.")
       .def("render", &Simulation::Render, py::arg("path") = py::none(), py::arg("size") = 800,
            "The arena now as PNG (as `essaim snapshot`): bytes, or written to path.")
       .def("close", &Simulation::Close)

@@ -9,6 +9,7 @@
 #include "lua/loop/lua_inspect.h"
 #include "output/recording.h"
 #include "serve/experiment_inputs.h"
+#include "serve/sensor_readings.h"
 
 namespace essaim {
 
@@ -226,8 +227,12 @@ Value LiveExperiment::Inspect(int robot) const {
   j.Set("controller_ok", Value::OfBool(r.controller_ok));
   j.Set("battery", Value::OfNumber(def.battery.full_charge > 0 ? r.battery.charge / def.battery.full_charge : 0.0));
   j.Set("actuators", ActuatorsValue(r));
-  lua_State* L = LuaStateOf(w.controllers[robot].get());
-  j.Set("readings", LuaGlobalTree(L, "robot"));
+  const ControllerDef* c = def.controller >= 0 ? &w.model.controllers[def.controller] : nullptr;
+  if (c) j.Set("controller", ControllerKindValue(*c));
+  // A C++ controller has no Lua state: its sensors' readings come from the robot's state.
+  const bool cpp = c && c->Cpp();
+  lua_State* L = cpp ? nullptr : LuaStateOf(w.controllers[robot].get());
+  j.Set("readings", cpp ? SensorReadingsValue(*c, r) : LuaGlobalTree(L, "robot"));
   j.Set("globals", LuaGlobalsTree(L));
   return j;
 }

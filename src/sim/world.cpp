@@ -259,6 +259,9 @@ void ListModelInputs(const Model& model, InputFiles* inputs) {
     if (r.controller >= 0) used[static_cast<size_t>(r.controller)] = true;
   for (size_t i = 0; i < model.controllers.size(); ++i)
     if (used[i] && !model.controllers[i].script.empty()) inputs->Add(model.controllers[i].script, "controller");
+  // Every C++ controller's library is loaded, used or not (as ARGoS): its bytes make the run.
+  for (const ControllerDef& c : model.controllers)
+    if (!c.library.empty()) inputs->Add(c.library, "controller_library");
   if (!model.loop_functions.script.empty()) inputs->Add(model.loop_functions.script, "loop_functions");
   if (!model.loop_functions.library.empty()) inputs->Add(model.loop_functions.library, "loop_functions_library");
   if (model.floor.source == FloorSource::Image) inputs->Add(model.floor.path, "floor_image");

@@ -129,8 +129,11 @@ int SetLuaGlobal(lua_State* L) {
     return luaL_error(L, "set_lua_global: '%s' must be plain data (numbers, strings, booleans, tables): %s", name,
                       bad ? bad : "?");
   lua_State* C = ControllerState(ctx, i);
-  if (!C)
-    return luaL_error(L, "set_lua_global: robot '%s' has no running controller", ctx->model->robots[i].id.c_str());
+  const RobotDef& robot = ctx->model->robots[i];
+  if (!C && robot.controller >= 0 && ctx->model->controllers[robot.controller].Cpp())
+    return luaL_error(L, "set_lua_global: robot '%s' runs a C++ controller (%s), which has no Lua globals",
+                      robot.id.c_str(), ctx->model->controllers[robot.controller].label.c_str());
+  if (!C) return luaL_error(L, "set_lua_global: robot '%s' has no running controller", robot.id.c_str());
   CopyJob job{&ctx->tape, name, nullptr, false};
   if (!RunInController(C, StoreGlobal, &job))
     return luaL_error(L, "set_lua_global: robot '%s': its Lua state is out of memory",

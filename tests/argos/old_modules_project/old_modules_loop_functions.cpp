@@ -12,7 +12,9 @@ class COldModulesLoopFunctions : public CLoopFunctions {
     CSpace::TMapPerType& cBots = GetSpace().GetEntitiesByType("foot-bot");
     for (CSpace::TMapPerType::iterator it = cBots.begin(); it != cBots.end(); ++it) {
       CFootBotEntity& cBot = *any_cast<CFootBotEntity*>(it->second);
-      lua_State* ptState = dynamic_cast<CLuaController&>(cBot.GetControllableEntity().GetController()).GetLuaState();
+      CLuaController* pcLua = dynamic_cast<CLuaController*>(&cBot.GetControllableEntity().GetController());
+      if (pcLua == NULL) continue; /* a C++ controller (old_modules_controller.cpp) */
+      lua_State* ptState = pcLua->GetLuaState();
       lua_getglobal(ptState, "steps");
       LOG << "old modules: " << cBot.GetId() << " steps " << lua_tonumber(ptState, -1) << std::endl;
       lua_pop(ptState, 1);
