@@ -42,7 +42,9 @@ def run_case(case, out, threads):
     ticks = "300" if case.startswith("arenas/") else "150"
     cmd = [ESSAIM, "run", case, "--ticks", ticks, "--seed", "11", "--threads", str(threads),
            "--out", str(out), "--record"] + OVERRIDES.get(case, [])
-    done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=300)
+    # bench/avoidance_cpp_1000.argos's controller library is built with essaim, into build/bench.
+    env = dict(os.environ, ARGOS_PLUGIN_PATH=str(Path(ESSAIM).resolve().parent / "bench"))
+    done = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=300, env=env)
     assert done.returncode == 0, f"{' '.join(cmd)}\n{done.stderr[-2000:]}"
     return {name: hashlib.sha256((out / name).read_bytes()).hexdigest()
             for name in OUTPUTS if (out / name).exists()}
