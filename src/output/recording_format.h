@@ -147,4 +147,19 @@ class FrameView {
   const uint8_t* p_ = nullptr;
 };
 
+/// The last of `frame_count` frames (ticks increasing) whose tick is at most `tick`, or 0:
+/// `tick_of(k)` gives frame k's tick. Both readers' FrameAtOrBefore.
+template <typename TickOf>
+size_t LastFrameAtOrBefore(size_t frame_count, uint64_t tick, TickOf tick_of) {
+  size_t lo = 0, hi = frame_count;  // first frame with a tick > tick, by bisection
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    if (tick_of(mid) <= tick)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo == 0 ? 0 : lo - 1;
+}
+
 }  // namespace essaim

@@ -45,15 +45,7 @@ bool Recording::Parse(std::string bytes, Recording* out, std::string* error) {
 }
 
 size_t Recording::FrameAtOrBefore(uint64_t tick) const {
-  size_t lo = 0, hi = frame_count_;  // first frame with Tick > tick, by bisection
-  while (lo < hi) {
-    size_t mid = (lo + hi) / 2;
-    if (Tick(mid) <= tick)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo == 0 ? 0 : lo - 1;
+  return LastFrameAtOrBefore(frame_count_, tick, [this](size_t k) { return Tick(k); });
 }
 
 // ---- one frame at a time ----------------------------------------------------------
@@ -121,15 +113,7 @@ uint64_t RecordingStream::TickOf(size_t frame) const {
 }
 
 size_t RecordingStream::FrameAtOrBefore(uint64_t tick) const {
-  size_t lo = 0, hi = frame_count_;  // first frame with a tick > tick, by bisection
-  while (lo < hi) {
-    size_t mid = (lo + hi) / 2;
-    if (TickOf(mid) <= tick)
-      lo = mid + 1;
-    else
-      hi = mid;
-  }
-  return lo == 0 ? 0 : lo - 1;
+  return LastFrameAtOrBefore(frame_count_, tick, [this](size_t k) { return TickOf(k); });
 }
 
 }  // namespace essaim
