@@ -13,14 +13,13 @@
 #include <climits>
 #include <cmath>
 
+#include "physics/argos_dynamics.h"
 #include "physics/physics_world.h"
 #include "physics/physics_world_impl.h"
 
 namespace essaim {
 
 namespace {
-/// N·s/m: ARGoS's GRIPPING_SPRING_DAMPING.
-constexpr double kGripDamping = 0.99;
 /// stiffness · inverse mass · h², below which the spring's impulse is Chipmunk's explicit one
 /// (SpringImpulses): 0.4 for ARGoS's 50 sub-steps a tick and a 0.1 kg object; the explicit
 /// step diverges near 4.
@@ -223,7 +222,7 @@ void SpringImpulses(b2Body* holder, b2Body* held, const b2Vec2& anchor, double r
   const double rn = static_cast<double>(r2.x) * ny - static_cast<double>(r2.y) * nx;
   const double rotation = rn * rn / held->GetInertia();
   const double k = 1 / footbot::kGripperMass + 1 / held->GetMass() + rotation;
-  const double damper = 1 - std::exp(-kGripDamping * h * k);
+  const double damper = 1 - std::exp(-dyn2d::kGripDamping * h * k);
   auto apply = [&](double j) {  // j along n on the held body, −j on the holder
     const b2Vec2 impulse(static_cast<float>(j * nx), static_cast<float>(j * ny));
     holder->ApplyLinearImpulseToCenter(-impulse, true);

@@ -1,6 +1,7 @@
-// PhysicsWorld's insides, shared by its two sources: physics_world.cpp (bodies, queries,
-// gripper) and physics_regions_sync.cpp (several regions: migration and ghosts). Not
-// included anywhere else: Box2D types stay inside physics/.
+// PhysicsWorld's insides, shared by its sources: physics_world.cpp (bodies and fixtures),
+// physics_step.cpp (the step), physics_rays.cpp (rays and neighbour queries),
+// physics_grip.cpp (the gripper) and physics_regions_sync.cpp (several regions: migration and
+// ghosts). Not included anywhere else: Box2D types stay inside physics/.
 #pragma once
 #include <box2d/box2d.h>
 
