@@ -171,9 +171,9 @@ void AddObstacleFixtures(const ObstacleDef& o, int index, b2Body* body) {
   double area;
   if (o.kind == ShapeKind::Box) {
     poly.SetAsBox(static_cast<float>(o.size_x / 2), static_cast<float>(o.size_y / 2));
-    // Static boxes collide at their true faces, as ARGoS's do (their pieces too:
-    // TileStaticBox copies this shape); movable ones keep Box2D's skin (argos_dynamics.h).
-    if (!o.movable) poly.m_radius = dyn2d::kStaticPolygonSkin;
+    // Boxes collide at their true faces, as ARGoS's do (a static box's pieces too:
+    // TileStaticBox copies this shape), movable or not (argos_dynamics.h).
+    poly.m_radius = dyn2d::kPolygonSkin;
     fd.shape = &poly;
     area = o.size_x * o.size_y;
   } else {
