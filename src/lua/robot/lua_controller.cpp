@@ -133,7 +133,8 @@ void LuaController::OpenGlobals(lua_State* L) {
 }
 
 void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotState* robot) {
-  lua_newtable(L);
+  // id, random, params and the devices' tables: sized once, not rehashed as they come.
+  lua_createtable(L, 0, 3 + static_cast<int>(controller_->actuators.size() + controller_->sensors.size()));
   lua_pushstring(L, def.id.c_str());
   lua_setfield(L, -2, "id");
   PushRandomTable(L, &robot->controller_rng);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "devices/devices.h"
+
 namespace essaim {
 
 RobotState* UpvalueRobot(lua_State* L) { return static_cast<RobotState*>(lua_touserdata(L, lua_upvalueindex(1))); }
@@ -56,11 +58,11 @@ void ClearStaleTail(lua_State* L, int array, int count, int* shown) {
   *shown = count;
 }
 
-int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref) {
+int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref, int array_slots) {
   robot_index = lua_absindex(L, robot_index);
   if (lua_getfield(L, robot_index, key) != LUA_TTABLE) {
     lua_pop(L, 1);
-    lua_newtable(L);
+    lua_createtable(L, array_slots, 0);
     lua_pushvalue(L, -1);
     lua_setfield(L, robot_index, key);
   }
@@ -140,12 +142,28 @@ int SharedRef(const LuaDeviceRefs& refs, DeviceType type) {
   return -1;
 }
 
+// The readings array a device's table holds from the start (its Create fills it): sized
+// at once, not grown one reading at a time.
+int ArraySlots(DeviceType type) {
+  switch (type) {
+    case T::ProximitySensor:
+    case T::LightSensor:
+      return kRingSensorCount;
+    case T::BaseGroundSensor:
+      return kBaseGroundCount;
+    case T::MotorGroundSensor:
+      return kMotorGroundCount;
+    default:
+      return 0;
+  }
+}
+
 void CreateTables(lua_State* L, int robot_t, const std::vector<DeviceConfig>& devices, RobotState* robot,
                   LuaDeviceRefs* refs) {
   for (const DeviceConfig& d : devices) {
     int& ref = refs->table[static_cast<int>(d.type)];
     ref = SharedRef(*refs, d.type);
-    const int t = DeviceTable(L, robot_t, GetDeviceRow(d.type).lua_key, &ref);
+    const int t = DeviceTable(L, robot_t, GetDeviceRow(d.type).lua_key, &ref, ArraySlots(d.type));
     if (CreateFn create = kRows[static_cast<int>(d.type)].create) create(L, t, robot, refs);
     lua_settop(L, robot_t);
   }

@@ -18,8 +18,9 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef& de
 /// Copies the readings of every sensor into the tables.
 void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs);
 
-/// Gets (creating if needed) robot[key] as a table, leaves it on the stack, returns a ref.
-int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref);
+/// Gets (creating if needed, with `array_slots` preallocated) robot[key] as a table, leaves
+/// it on the stack, returns a ref.
+int DeviceTable(lua_State* L, int robot_index, const char* key, int* ref, int array_slots = 0);
 /// robot.<device>[i].value = values[i] for i in 1..n, in place: the inner tables persist
 /// (controllers keep references to them); an entry a controller replaced by a non-table is
 /// left alone. Raw sets, the key interned once per call.
