@@ -125,7 +125,7 @@ int Debug(DebugArgs& a) {
   const int front_code = StartFront(in, out, &link);
   if (front_code >= 0) return front_code;
   channel.Rebind(link.sim_socket);
-  session.EnableGoingBack(front);
+  session.EnableGoingBack(front, link);
   RunSession run_session;
   const RunHooks hooks = DebugHooks(session, run);
   std::vector<std::string> inputs;
