@@ -324,7 +324,7 @@ DebugSession::After DebugSession::RunToTick(const Value& request) {
     channel_.Respond(request, Value());
     Replay target;
     target.kind = "boundary";
-    target.tick = tick;
+    target.at.tick = tick;
     target.thread = last_thread_ ? last_thread_ : stop_.thread;
     target.reason = "goto";
     target.description = "before tick " + std::to_string(tick);

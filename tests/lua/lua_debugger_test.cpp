@@ -86,7 +86,7 @@ struct Recorder : DebugListener {
     debugger->Resume(--stops_left > 0 ? next_mode : StepMode::None, thread, L);
   }
   void Console(const std::string& text) override { console.push_back(text); }
-  bool Fired(long long, long long) override { return false; }
+  bool Fired(const RunPosition&) override { return false; }
 };
 
 struct DebuggedState {
