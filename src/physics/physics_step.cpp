@@ -41,12 +41,16 @@ void PhysicsWorld::StepRegionJob(void* ctx, int region) {
 void PhysicsWorld::StepRegion(int region, int first, int count, float h) {
   b2World& w = *impl_->regions[region].world;
   const bool grips = !impl_->grip_robots.empty();
+  // Several regions step at once and migrate servos with their robots: Box2D solves all.
+  const bool free_servos = impl_->RegionCount() == 1;
   for (int i = first; i < first + count; ++i) {
     if (grips) {
       if (i > 0) GripEvents(region, i);  // sub-step 0's were taken for every region at once
       ApplyGripSprings(region, i, h);
     }
+    if (free_servos) SolveFreeServos(impl_.get(), robots_, i == 0, h);
     w.Step(h, dyn2d::kVelocityIterations, dyn2d::kPositionIterations);
+    if (free_servos) NoteStep(impl_.get(), h);
     if (grips) EndGripSubstep(region, i);
   }
 }

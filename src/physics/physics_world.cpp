@@ -49,6 +49,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->obstacle_bottom.reserve(model.obstacles.size());
   robots_.reserve(model.robots.size());
   impl_->controls.reserve(model.robots.size());
+  impl_->free_servos.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) AddRobotBody(model.robots[i], static_cast<int>(i));
@@ -96,6 +97,7 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   w.CreateJoint(&jd);
   robots_.push_back(body);
   impl_->controls.push_back(control);
+  impl_->free_servos.emplace_back();
 }
 
 int PhysicsWorld::AddRobot(const RobotDef& robot) {
@@ -113,6 +115,7 @@ void PhysicsWorld::RemoveLastRobot() {
   body->GetWorld()->DestroyBody(body);
   robots_.pop_back();
   impl_->controls.pop_back();
+  impl_->free_servos.pop_back();
   impl_->grips.pop_back();
   if (RegionCount() > 1) impl_->robot_ghosts.pop_back();
   ++impl_->shapes_moved;
