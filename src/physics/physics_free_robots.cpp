@@ -36,32 +36,28 @@ bool Touches(b2Body* body) {
   return false;
 }
 
-/// The friction joint's solve between `servo` (kinematic) and a lone `body`, both anchors at
+/// The friction joint's solve between the kinematic servo and a lone `body`, both anchors at
 /// the centres: b2FrictionJoint::InitVelocityConstraints (warm start scaled by `dt_ratio`),
 /// then kVelocityIterations of SolveVelocityConstraints, in Box2D's float operations.
-void SolveServo(b2Body* body, const b2Body* servo, const b2FrictionJoint& joint, float h, float dt_ratio,
-                PhysicsWorld::Impl::FreeServo* s) {
-  const float mB = 1.0f / body->GetMass();  // b2Body::m_invMass
-  const float iB = 1.0f / body->GetInertia();
+void SolveServo(b2Body* body, float h, float dt_ratio, PhysicsWorld::Impl::FreeServo* s) {
+  const float mB = s->inv_mass, iB = s->inv_moment;
   float det = mB * mB;  // b2Mat22::GetInverse of K = diag(mB, mB)
   if (det != 0.0f) det = 1.0f / det;
   const float linear_mass = det * mB;
   const float angular_mass = 1.0f / iB;
-  const b2Vec2 vA = servo->GetLinearVelocity();
-  const float wA = servo->GetAngularVelocity();
   b2Vec2 vB = body->GetLinearVelocity();
   float wB = body->GetAngularVelocity();
   s->linear *= dt_ratio;
   s->angular *= dt_ratio;
   vB += mB * s->linear;
   wB += iB * s->angular;
-  const float max_angular = h * joint.GetMaxTorque();
-  const float max_linear = h * joint.GetMaxForce();
+  const float max_angular = h * s->max_torque;
+  const float max_linear = h * s->max_force;
   for (int k = 0; k < dyn2d::kVelocityIterations; ++k) {
     const float old_angular = s->angular;
-    s->angular = b2Clamp(s->angular + -angular_mass * (wB - wA), -max_angular, max_angular);
+    s->angular = b2Clamp(s->angular + -angular_mass * (wB - s->w), -max_angular, max_angular);
     wB += iB * (s->angular - old_angular);
-    const b2Vec2 cdot = vB - vA;
+    const b2Vec2 cdot = vB - s->v;
     const b2Vec2 old_linear = s->linear;
     s->linear += -b2Vec2(linear_mass * cdot.x, linear_mass * cdot.y);
     if (s->linear.LengthSquared() > max_linear * max_linear) {
@@ -98,22 +94,22 @@ void SolveFreeServos(PhysicsWorld::Impl* im, const std::vector<void*>& robots, b
   const float dt_ratio = im->inv_dt0 * h;  // b2World::Step's step.dtRatio
   for (size_t i = 0; i < robots.size(); ++i) {
     b2Body* body = AsBody(robots[i]);
-    b2Body* servo = im->controls[i];
     PhysicsWorld::Impl::FreeServo& s = im->free_servos[i];
     if (s.tied_at == im->substep_stamp || Touches(body)) {
-      if (s.free) servo->SetEnabled(true);
+      if (s.free) im->controls[i]->SetEnabled(true);
       s.free = false;
       continue;
     }
-    const b2FrictionJoint& joint = ServoJoint(servo);
     if (!s.free) {
       // The joint's accumulated impulses, as Box2D would warm-start them (exact: times 1).
+      b2Body* servo = im->controls[i];
+      const b2FrictionJoint& joint = ServoJoint(servo);
       s.linear = joint.GetReactionForce(1.0f);
       s.angular = joint.GetReactionTorque(1.0f);
       servo->SetEnabled(false);
       s.free = true;
     }
-    SolveServo(body, servo, joint, h, dt_ratio, &s);
+    SolveServo(body, h, dt_ratio, &s);
   }
 }
 

@@ -13,16 +13,18 @@ namespace essaim {
 void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
   b2Body* body = AsBody(robots_[robot]);
   b2Body* control = impl_->controls[robot];
-  if (left == 0 && right == 0) {
-    control->SetLinearVelocity(b2Vec2(0, 0));
-    control->SetAngularVelocity(0);
-    return;
+  Impl::FreeServo& servo = impl_->free_servos[robot];
+  servo.v = b2Vec2(0, 0);
+  servo.w = 0;
+  if (left != 0 || right != 0) {
+    double a = body->GetAngle();
+    double v = (left + right) / 2;
+    double w = (right - left) / footbot::kAxisLength;
+    servo.v = b2Vec2(static_cast<float>(v * std::cos(a)), static_cast<float>(v * std::sin(a)));
+    servo.w = static_cast<float>(w);
   }
-  double a = body->GetAngle();
-  double v = (left + right) / 2;
-  double w = (right - left) / footbot::kAxisLength;
-  control->SetLinearVelocity(b2Vec2(static_cast<float>(v * std::cos(a)), static_cast<float>(v * std::sin(a))));
-  control->SetAngularVelocity(static_cast<float>(w));
+  control->SetLinearVelocity(servo.v);
+  control->SetAngularVelocity(servo.w);
 }
 
 namespace {

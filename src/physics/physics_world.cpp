@@ -97,7 +97,12 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   w.CreateJoint(&jd);
   robots_.push_back(body);
   impl_->controls.push_back(control);
-  impl_->free_servos.emplace_back();
+  Impl::FreeServo servo;
+  servo.max_force = jd.maxForce;
+  servo.max_torque = jd.maxTorque;
+  servo.inv_mass = 1.0f / body->GetMass();
+  servo.inv_moment = 1.0f / body->GetInertia();
+  impl_->free_servos.push_back(servo);
 }
 
 int PhysicsWorld::AddRobot(const RobotDef& robot) {

@@ -88,13 +88,19 @@ struct PhysicsWorld::Impl {
 
   /// One robot's wheel servo as physics_free_robots.cpp solves it while the robot touches
   /// nothing: the friction joint's accumulated impulses, carried from sub-step to sub-step.
+  /// The servo body's velocity, the joint's caps and the robot's inverse mass and moment are
+  /// copied here (Box2D's own floats), so that a free robot's solve reads no other object.
   struct FreeServo {
-    b2Vec2 linear{0, 0};  // N·s
-    float angular = 0;    // N·m·s
-    bool free = false;    // solved outside Box2D now: its servo body is disabled
-    int tied_at = -1;     // the last sub-step stamp at which a grip tied the robot
+    b2Vec2 linear{0, 0};                  // N·s
+    float angular = 0;                    // N·m·s
+    b2Vec2 v{0, 0};                       // m/s, the servo body's velocity
+    float w = 0;                          // rad/s
+    float max_force = 0, max_torque = 0;  // N, N·m
+    float inv_mass = 0, inv_moment = 0;   // as b2Body's m_invMass, m_invI
+    bool free = false;                    // solved outside Box2D now: its servo body is disabled
+    int tied_at = -1;                     // the last sub-step stamp at which a grip tied the robot
   };
-  std::vector<FreeServo> free_servos;  // one per robot (one region only)
+  std::vector<FreeServo> free_servos;  // one per robot (used with one region only)
   float inv_dt0 = 0;                   // 1/h of the world's last step: Box2D's warm-start ratio
   int substep_stamp = 0;               // counts sub-steps, for FreeServo::tied_at
 
