@@ -86,6 +86,7 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
     StepRegions(dt, substeps, runner);
   EndGripTick();
   ShiftDynamicBodies(-shift);
+  SyncGripperDiscs(impl_.get(), robots_);
   ++impl_->shapes_moved;
 }
 

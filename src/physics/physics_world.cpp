@@ -50,6 +50,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   robots_.reserve(model.robots.size());
   impl_->controls.reserve(model.robots.size());
   impl_->free_servos.reserve(model.robots.size());
+  impl_->discs.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) AddRobotBody(model.robots[i], static_cast<int>(i));
@@ -77,7 +78,7 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   md.center.SetZero();
   md.I = static_cast<float>(dyn2d::kRobotMoment);
   body->SetMassData(&md);
-  AddGripperDisc(body, i);
+  impl_->discs.push_back(MakeGripperDisc(body, i));
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force
@@ -121,6 +122,8 @@ void PhysicsWorld::RemoveLastRobot() {
   robots_.pop_back();
   impl_->controls.pop_back();
   impl_->free_servos.pop_back();
+  impl_->discs.back()->GetWorld()->DestroyBody(impl_->discs.back());
+  impl_->discs.pop_back();
   impl_->grips.pop_back();
   if (RegionCount() > 1) impl_->robot_ghosts.pop_back();
   ++impl_->shapes_moved;
@@ -302,7 +305,10 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
     held->SetTransform(b2Mul(b->GetTransform(), local), held->GetAngle() + turn);
     held->SetLinearVelocity(b2Vec2(0, 0));
     held->SetAngularVelocity(0);
+    const GripTarget& t = impl_->grips[robot].target;
+    if (t.kind == BodyKind::Robot) SyncGripperDisc(impl_.get(), held, t.index);
   }
+  SyncGripperDisc(impl_.get(), b, robot);
 }
 
 Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {

@@ -100,6 +100,9 @@ struct PhysicsWorld::Impl {
     bool free = false;                    // solved outside Box2D now: its servo body is disabled
     int tied_at = -1;                     // the last sub-step stamp at which a grip tied the robot
   };
+  /// Each robot's gripper disc (kGripperRadius), a fixture on a static, disabled body of its
+  /// own (physics_grip.cpp): out of Box2D's broadphase, on its robot's pose between steps.
+  std::vector<b2Body*> discs;
   std::vector<FreeServo> free_servos;  // one per robot (used with one region only)
   float inv_dt0 = 0;                   // 1/h of the world's last step: Box2D's warm-start ratio
   int substep_stamp = 0;               // counts sub-steps, for FreeServo::tied_at
@@ -112,6 +115,13 @@ struct PhysicsWorld::Impl {
     return 0;
   }
 };
+
+/// Robot `index`'s gripper disc body (its fixture tagged Gripper `index`), turret at 0.
+b2Body* MakeGripperDisc(b2Body* robot, int index);
+/// Puts robot `index`'s disc body (`robot`: its b2Body) on its robot's pose.
+void SyncGripperDisc(PhysicsWorld::Impl* im, const b2Body* robot, int index);
+/// Puts every robot's disc body on its robot's pose.
+void SyncGripperDiscs(PhysicsWorld::Impl* im, const std::vector<void*>& robots);
 
 /// One region's world, before a sub-step of `h` seconds (physics_free_robots.cpp): each robot
 /// that Box2D would solve alone with its servo (no touching contact, no grip) has that servo
