@@ -31,17 +31,10 @@ b2Vec2 GripperDiscCentre(double turret) {
                 static_cast<float>(footbot::kRadius * std::sin(turret)));
 }
 
-/// Robot `body`'s gripper disc (it has one fixture of kind Gripper), or null.
-b2Fixture* GripperDisc(b2Body* body) {
-  for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
-    if (TagKind(f->GetUserData().pointer) == BodyKind::Gripper) return f;
-  return nullptr;
-}
-
-/// Where the disc's centre is now, in the world.
-b2Vec2 DiscCentre(b2Body* robot) {
-  const b2Fixture* disc = GripperDisc(robot);
-  return b2Mul(robot->GetTransform(), static_cast<const b2CircleShape*>(disc->GetShape())->m_p);
+/// Where robot `robot`'s disc (`disc`: its body) has its centre now, in the world.
+b2Vec2 DiscCentre(const b2Body* robot, const b2Body* disc) {
+  const b2Fixture* f = disc->GetFixtureList();
+  return b2Mul(robot->GetTransform(), static_cast<const b2CircleShape*>(f->GetShape())->m_p);
 }
 
 // Grippable fixtures overlapping the gripper disc; keeps the deepest (ties: robots before
@@ -106,11 +99,17 @@ b2Vec2 ContactPoint(const b2Vec2& disc, const GripQuery& q) {
 }
 }  // namespace
 
-void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
-  // A fixture on the robot's own body rather than ARGoS's second body pinned to it: the two
-  // move as one there, and a fixture costs no joint. A sensor that collides with nothing
-  // (ARGoS marks the gripper shape a sensor: robots still touch walls with their body), of
-  // density 0: the body's mass set above stays as it is.
+b2Body* MakeGripperDisc(b2Body* robot, int index) {
+  // ARGoS's gripper is a second body pinned to the base, its shape a sensor that collides with
+  // nothing (robots still touch walls with their body): here a body of its own that Box2D
+  // never moves nor files (static, disabled: no broadphase proxy to update every sub-step),
+  // put on its robot's pose after every step (SyncGripperDiscs) for the rays that meet it.
+  b2BodyDef bd;
+  bd.type = b2_staticBody;
+  bd.enabled = false;
+  bd.position = robot->GetPosition();
+  bd.angle = robot->GetAngle();
+  b2Body* body = robot->GetWorld()->CreateBody(&bd);
   b2CircleShape disc;
   disc.m_radius = static_cast<float>(kGripperRadius);
   disc.m_p = GripperDiscCentre(0);
@@ -118,9 +117,19 @@ void PhysicsWorld::AddGripperDisc(void* robot_body, int index) {
   fd.shape = &disc;
   fd.density = 0;
   fd.isSensor = true;
-  fd.filter.maskBits = 0;  // no contact is ever made for it, not even a sensor's
+  fd.filter.maskBits = 0;  // were it ever filed: no contact is made for it, not even a sensor's
   fd.userData.pointer = PackTag(BodyKind::Gripper, index);
-  AsBody(robot_body)->CreateFixture(&fd);
+  body->CreateFixture(&fd);
+  return body;
+}
+
+void SyncGripperDisc(PhysicsWorld::Impl* im, const b2Body* robot, int index) {
+  // The robot's own angle: b2Rot::Set of the same float gives the same transform.
+  im->discs[index]->SetTransform(robot->GetPosition(), robot->GetAngle());
+}
+
+void SyncGripperDiscs(PhysicsWorld::Impl* im, const std::vector<void*>& robots) {
+  for (size_t i = 0; i < robots.size(); ++i) SyncGripperDisc(im, AsBody(robots[i]), static_cast<int>(i));
 }
 
 Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
@@ -130,7 +139,7 @@ Vec2 PhysicsWorld::GripperPoint(int robot, double turret) const {
 }
 
 Vec2 PhysicsWorld::GripperDiscPoint(int robot) const {
-  const b2Vec2 p = DiscCentre(AsBody(robots_[robot]));
+  const b2Vec2 p = DiscCentre(AsBody(robots_[robot]), impl_->discs[robot]);
   return {p.x, p.y};
 }
 
@@ -147,12 +156,9 @@ void PhysicsWorld::SetGripTurret(int robot, double turret) {
   Impl::Grip& g = impl_->grips[robot];
   g.turn += WrapSigned(turret - g.turret);
   g.turret = turret;
-  if (b2Fixture* disc = GripperDisc(AsBody(robots_[robot]))) {
-    // The broad-phase box follows at the next step (robots are always awake); the ray grid
-    // is refiled at the next query.
-    static_cast<b2CircleShape*>(disc->GetShape())->m_p = GripperDiscCentre(turret);
-    ++impl_->shapes_moved;
-  }
+  // The ray grid is refiled at the next query.
+  static_cast<b2CircleShape*>(impl_->discs[robot]->GetFixtureList()->GetShape())->m_p = GripperDiscCentre(turret);
+  ++impl_->shapes_moved;
 }
 
 GripTarget PhysicsWorld::Gripped(int robot) const { return impl_->grips[robot].target; }

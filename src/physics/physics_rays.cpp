@@ -84,6 +84,29 @@ class RobotQuery : public b2QueryCallback {
   double r2_;
   std::vector<int>* out_;
 };
+
+/// The gripper discs the segment p1→p2 crosses, reported to `cb` as Box2D's tree walk reports
+/// a fixture (the discs are out of the tree: physics_grip.cpp). Found in the ray grid, piece
+/// by piece of about a cell along the segment: a disc the segment crosses has its filed box
+/// meet that piece's box.
+void CastAtDiscs(const PhysicsWorld::Impl& im, const b2Vec2& p1, const b2Vec2& p2, ClosestRay* cb) {
+  b2RayCastInput in;
+  in.p1 = p1;
+  in.p2 = p2;
+  in.maxFraction = 1;
+  const double dx = static_cast<double>(p2.x) - p1.x, dy = static_cast<double>(p2.y) - p1.y;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(std::hypot(dx, dy) / im.ray_grid.CellSize())));
+  for (int k = 0; k < pieces; ++k) {
+    const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
+    const double x0 = p1.x + dx * t0, y0 = p1.y + dy * t0, x1 = p1.x + dx * t1, y1 = p1.y + dy * t1;
+    im.ray_grid.ForEachOnceInBox(std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1), [&](int i) {
+      auto* f = const_cast<b2Fixture*>(im.ray_circles[i].fixture);
+      b2RayCastOutput out;
+      if (TagKind(f->GetUserData().pointer) != BodyKind::Gripper || !f->RayCast(&out, in, 0)) return;
+      cb->ReportFixture(f, (1.0f - out.fraction) * p1 + out.fraction * p2, out.normal, out.fraction);
+    });
+  }
+}
 }  // namespace
 
 RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exclude_robot) const {
@@ -92,6 +115,8 @@ RayHit PhysicsWorld::CastRay(const Vec2& from, const Vec2& to, double z, int exc
   b2Vec2 p2(static_cast<float>(to.x()), static_cast<float>(to.y()));
   if (b2DistanceSquared(p1, p2) <= 0) return {};
   for (Impl::Region& region : impl_->regions) region.world->RayCast(&cb, p1, p2);
+  EnsureRayGrid();
+  CastAtDiscs(*impl_, p1, p2, &cb);
   if (cb.hit.Hit()) cb.hit.distance = (to - from).norm() * cb.fraction_;
   return cb.hit;
 }

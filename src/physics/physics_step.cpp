@@ -13,16 +13,18 @@ namespace essaim {
 void PhysicsWorld::SetWheelSpeeds(int robot, double left, double right) {
   b2Body* body = AsBody(robots_[robot]);
   b2Body* control = impl_->controls[robot];
-  if (left == 0 && right == 0) {
-    control->SetLinearVelocity(b2Vec2(0, 0));
-    control->SetAngularVelocity(0);
-    return;
+  Impl::FreeServo& servo = impl_->free_servos[robot];
+  servo.v = b2Vec2(0, 0);
+  servo.w = 0;
+  if (left != 0 || right != 0) {
+    double a = body->GetAngle();
+    double v = (left + right) / 2;
+    double w = (right - left) / footbot::kAxisLength;
+    servo.v = b2Vec2(static_cast<float>(v * std::cos(a)), static_cast<float>(v * std::sin(a)));
+    servo.w = static_cast<float>(w);
   }
-  double a = body->GetAngle();
-  double v = (left + right) / 2;
-  double w = (right - left) / footbot::kAxisLength;
-  control->SetLinearVelocity(b2Vec2(static_cast<float>(v * std::cos(a)), static_cast<float>(v * std::sin(a))));
-  control->SetAngularVelocity(static_cast<float>(w));
+  control->SetLinearVelocity(servo.v);
+  control->SetAngularVelocity(servo.w);
 }
 
 namespace {
@@ -41,12 +43,16 @@ void PhysicsWorld::StepRegionJob(void* ctx, int region) {
 void PhysicsWorld::StepRegion(int region, int first, int count, float h) {
   b2World& w = *impl_->regions[region].world;
   const bool grips = !impl_->grip_robots.empty();
+  // Several regions step at once and migrate servos with their robots: Box2D solves all.
+  const bool free_servos = impl_->RegionCount() == 1;
   for (int i = first; i < first + count; ++i) {
     if (grips) {
       if (i > 0) GripEvents(region, i);  // sub-step 0's were taken for every region at once
       ApplyGripSprings(region, i, h);
     }
+    if (free_servos) SolveFreeServos(impl_.get(), robots_, i == 0, h);
     w.Step(h, dyn2d::kVelocityIterations, dyn2d::kPositionIterations);
+    if (free_servos) NoteStep(impl_.get(), h);
     if (grips) EndGripSubstep(region, i);
   }
 }
@@ -80,6 +86,7 @@ void PhysicsWorld::Step(double dt, int substeps, const PhysicsRunner& runner) {
     StepRegions(dt, substeps, runner);
   EndGripTick();
   ShiftDynamicBodies(-shift);
+  SyncGripperDiscs(impl_.get(), robots_);
   ++impl_->shapes_moved;
 }
 

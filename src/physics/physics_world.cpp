@@ -49,6 +49,8 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   impl_->obstacle_bottom.reserve(model.obstacles.size());
   robots_.reserve(model.robots.size());
   impl_->controls.reserve(model.robots.size());
+  impl_->free_servos.reserve(model.robots.size());
+  impl_->discs.reserve(model.robots.size());
   for (const ObstacleDef& o : model.obstacles) AddObstacle(o);
 
   for (size_t i = 0; i < model.robots.size(); ++i) AddRobotBody(model.robots[i], static_cast<int>(i));
@@ -76,7 +78,7 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   md.center.SetZero();
   md.I = static_cast<float>(dyn2d::kRobotMoment);
   body->SetMassData(&md);
-  AddGripperDisc(body, i);
+  impl_->discs.push_back(MakeGripperDisc(body, i));
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force
@@ -96,6 +98,12 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   w.CreateJoint(&jd);
   robots_.push_back(body);
   impl_->controls.push_back(control);
+  Impl::FreeServo servo;
+  servo.max_force = jd.maxForce;
+  servo.max_torque = jd.maxTorque;
+  servo.inv_mass = 1.0f / body->GetMass();
+  servo.inv_moment = 1.0f / body->GetInertia();
+  impl_->free_servos.push_back(servo);
 }
 
 int PhysicsWorld::AddRobot(const RobotDef& robot) {
@@ -113,6 +121,9 @@ void PhysicsWorld::RemoveLastRobot() {
   body->GetWorld()->DestroyBody(body);
   robots_.pop_back();
   impl_->controls.pop_back();
+  impl_->free_servos.pop_back();
+  impl_->discs.back()->GetWorld()->DestroyBody(impl_->discs.back());
+  impl_->discs.pop_back();
   impl_->grips.pop_back();
   if (RegionCount() > 1) impl_->robot_ghosts.pop_back();
   ++impl_->shapes_moved;
@@ -294,7 +305,10 @@ void PhysicsWorld::SetRobotPose(int robot, const Pose2& pose) {
     held->SetTransform(b2Mul(b->GetTransform(), local), held->GetAngle() + turn);
     held->SetLinearVelocity(b2Vec2(0, 0));
     held->SetAngularVelocity(0);
+    const GripTarget& t = impl_->grips[robot].target;
+    if (t.kind == BodyKind::Robot) SyncGripperDisc(impl_.get(), held, t.index);
   }
+  SyncGripperDisc(impl_.get(), b, robot);
 }
 
 Pose2 PhysicsWorld::ObstaclePose(int obstacle) const {

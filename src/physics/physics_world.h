@@ -190,8 +190,6 @@ class PhysicsWorld {
   void* MoveGripGroupVoid(const GripTarget& t, int region);
   /// Robot `index`'s body and its servo, in the region holding its pose.
   void AddRobotBody(const RobotDef& robot, int index);
-  /// The gripper disc (kGripperRadius) on robot `index`'s body (a b2Body*), turret at 0.
-  static void AddGripperDisc(void* robot_body, int index);
   std::unique_ptr<Impl> impl_;
   std::vector<void*> robots_;     // b2Body*
   std::vector<void*> obstacles_;  // b2Body*

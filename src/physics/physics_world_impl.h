@@ -86,6 +86,27 @@ struct PhysicsWorld::Impl {
   std::atomic<uint64_t> grid_built_at{~uint64_t{0}};
   std::mutex grid_mutex;
 
+  /// One robot's wheel servo as physics_free_robots.cpp solves it while the robot touches
+  /// nothing: the friction joint's accumulated impulses, carried from sub-step to sub-step.
+  /// The servo body's velocity, the joint's caps and the robot's inverse mass and moment are
+  /// copied here (Box2D's own floats), so that a free robot's solve reads no other object.
+  struct FreeServo {
+    b2Vec2 linear{0, 0};                  // N·s
+    float angular = 0;                    // N·m·s
+    b2Vec2 v{0, 0};                       // m/s, the servo body's velocity
+    float w = 0;                          // rad/s
+    float max_force = 0, max_torque = 0;  // N, N·m
+    float inv_mass = 0, inv_moment = 0;   // as b2Body's m_invMass, m_invI
+    bool free = false;                    // solved outside Box2D now: its servo body is disabled
+    int tied_at = -1;                     // the last sub-step stamp at which a grip tied the robot
+  };
+  /// Each robot's gripper disc (kGripperRadius), a fixture on a static, disabled body of its
+  /// own (physics_grip.cpp): out of Box2D's broadphase, on its robot's pose between steps.
+  std::vector<b2Body*> discs;
+  std::vector<FreeServo> free_servos;  // one per robot (used with one region only)
+  float inv_dt0 = 0;                   // 1/h of the world's last step: Box2D's warm-start ratio
+  int substep_stamp = 0;               // counts sub-steps, for FreeServo::tied_at
+
   int RegionCount() const { return static_cast<int>(regions.size()); }
   /// Index of the region whose world holds `body`.
   int RegionOfBody(const b2Body* body) const {
@@ -94,5 +115,21 @@ struct PhysicsWorld::Impl {
     return 0;
   }
 };
+
+/// Robot `index`'s gripper disc body (its fixture tagged Gripper `index`), turret at 0.
+b2Body* MakeGripperDisc(b2Body* robot, int index);
+/// Puts robot `index`'s disc body (`robot`: its b2Body) on its robot's pose.
+void SyncGripperDisc(PhysicsWorld::Impl* im, const b2Body* robot, int index);
+/// Puts every robot's disc body on its robot's pose.
+void SyncGripperDiscs(PhysicsWorld::Impl* im, const std::vector<void*>& robots);
+
+/// One region's world, before a sub-step of `h` seconds (physics_free_robots.cpp): each robot
+/// that Box2D would solve alone with its servo (no touching contact, no grip) has that servo
+/// solved here, exactly as Box2D's friction joint would, and its servo body disabled, so that
+/// Box2D's island holds the robot alone; the others get their servo back. `first`: the tick's
+/// first sub-step, whose new contacts are found first.
+void SolveFreeServos(PhysicsWorld::Impl* im, const std::vector<void*>& robots, bool first, float h);
+/// After the world stepped `h` seconds: the ratio Box2D's next warm start uses.
+inline void NoteStep(PhysicsWorld::Impl* im, float h) { im->inv_dt0 = 1.0f / h; }
 
 }  // namespace essaim
