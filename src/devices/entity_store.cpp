@@ -34,6 +34,10 @@ void EntityStore::Init(Model* scene, PhysicsWorld* physics, RobotStates* robots)
   order_.clear();
   added_.clear();
   obstacle_serial_.clear(), light_serial_.clear(), obstacle_index_.clear(), light_index_.clear();
+  ids_.clear();
+  for (const RobotDef& r : scene->robots) AddId(r.id);
+  for (const ObstacleDef& o : scene->obstacles) AddId(o.id);
+  for (const LightDef& l : scene->lights) AddId(l.id);
   for (size_t i = 0; i < scene->robots.size(); ++i) order_.push_back({EntityKind::FootBot, static_cast<uint32_t>(i)});
   for (size_t i = 0; i < scene->obstacles.size(); ++i) {
     order_.push_back({ObstacleKind(scene->obstacles[i]), static_cast<uint32_t>(i)});
@@ -59,20 +63,18 @@ int EntityStore::IndexOf(const EntityRef& e) const {
   }
 }
 
-bool EntityStore::HasId(const std::string& id) const {
-  for (const RobotDef& r : scene_->robots)
-    if (r.id == id) return true;
-  for (const ObstacleDef& o : scene_->obstacles)
-    if (o.id == id) return true;
-  for (const LightDef& l : scene_->lights)
-    if (l.id == id) return true;
-  return false;
+bool EntityStore::HasId(const std::string& id) const { return ids_.count(id) > 0; }
+
+void EntityStore::RemoveId(const std::string& id) {
+  auto it = ids_.find(id);
+  if (it != ids_.end() && --it->second == 0) ids_.erase(it);
 }
 
 EntityRef EntityStore::AddObstacle(const ObstacleDef& def) {
   const uint32_t serial = static_cast<uint32_t>(obstacle_index_.size());
   const int index = physics_->AddObstacle(def);
   scene_->obstacles.push_back(def);
+  AddId(def.id);
   obstacle_serial_.push_back(serial);
   obstacle_index_.push_back(index);
   EntityRef e{ObstacleKind(def), serial};
@@ -108,6 +110,7 @@ bool EntityStore::AddRobot(const RobotDef& def, EntityRef* added, std::string* e
   *error = RobotProblemNow(def);
   if (!error->empty()) return false;
   scene_->robots.push_back(def);
+  AddId(def.id);
   RobotDef& bound = scene_->robots.back();  // bound to its controller, as the loader binds
   bound.controller = ControllerIndex(def.controller_id);
   bound.params = scene_->controllers[bound.controller].params;
@@ -117,6 +120,7 @@ bool EntityStore::AddRobot(const RobotDef& def, EntityRef* added, std::string* e
   if (!joiner_->Join(index, error)) {
     robots_->pop_back();
     physics_->RemoveLastRobot();
+    RemoveId(def.id);
     scene_->robots.pop_back();
     return false;
   }
@@ -132,6 +136,7 @@ EntityRef EntityStore::AddLight(const LightDef& def) {
   light_serial_.push_back(serial);
   light_index_.push_back(static_cast<int>(scene_->lights.size()));
   scene_->lights.push_back(def);
+  AddId(def.id);
   EntityRef e{EntityKind::Light, serial};
   order_.push_back(e);
   added_.push_back(e);
@@ -146,6 +151,7 @@ bool EntityStore::Remove(const EntityRef& e) {
   const bool light = e.kind == EntityKind::Light;
   auto& serials = light ? light_serial_ : obstacle_serial_;
   auto& indices = light ? light_index_ : obstacle_index_;
+  RemoveId(IdOf(e));
   if (light) {
     scene_->lights.erase(scene_->lights.begin() + index);
   } else {

@@ -8,6 +8,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "devices/robot_state.h"
@@ -129,6 +130,8 @@ class EntityStore {
   /// Index of the <lua_controller> with this id in the scene, or -1.
   int ControllerIndex(const std::string& id) const;
   void MarkChanged(bool layout) { changed_ = true, layout_changed_ |= layout; }
+  void AddId(const std::string& id) { ++ids_[id]; }
+  void RemoveId(const std::string& id);
   Model* scene_ = nullptr;
   PhysicsWorld* physics_ = nullptr;
   RobotStates* robots_ = nullptr;
@@ -138,6 +141,9 @@ class EntityStore {
   std::vector<uint32_t> obstacle_serial_, light_serial_;  // by current index
   std::vector<int> obstacle_index_, light_index_;         // by serial; -1 removed
   bool changed_ = false, layout_changed_ = false;
+  // Live entities per id (HasId: a lookup, not a scan of the scene). Only looked up, never
+  // iterated: its order cannot reach a result.
+  std::unordered_map<std::string, int> ids_;
 };
 
 }  // namespace essaim

@@ -127,11 +127,13 @@ bool PreStepStage(World& w) {
 }
 
 // One robot's sensors, then its controller's step(). A controller that fails stops: zero
-// wheels from the next act on, never stepped again.
-void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::ChunkTimes* times) {
+// wheels from the next act on, never stepped again. `*last` is the clock's last reading
+// in this range, the robot's start: two clock reads a robot, not three (they were ~1 % of
+// foraging-100's samples).
+void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::ChunkTimes* times, Clock::time_point* last) {
   RobotState& r = w.robots[i];
   if (!r.alive || !r.controller_ok) return;
-  const auto sense_start = Clock::now();
+  const auto sense_start = *last;
   SenseRobot(ctx, w.model.robots[i], r);
   const auto control_start = Clock::now();
   const SteppingScope stepping(i, "ControlStep");
@@ -140,8 +142,9 @@ void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::Chunk
     r.cmd.wheel_left = r.cmd.wheel_right = 0;
     r.cmd.wheels_new = true;
   }
+  *last = Clock::now();
   times->sense += Seconds(sense_start, control_start);
-  times->control += Seconds(control_start, Clock::now());
+  times->control += Seconds(control_start, *last);
 }
 
 // Robots are independent here (each writes only its own state), so threads split them.
@@ -149,7 +152,8 @@ void SenseAndControlStage(World& w) {
   const SenseContext ctx{w.model, w.physics, w.media, w.floor, w.robots, w.tick, w.model.experiment.TickLength()};
   auto work = [&](int begin, int end) {
     World::ChunkTimes local;
-    for (int i = begin; i < end; ++i) SenseAndControlRobot(w, ctx, i, &local);
+    Clock::time_point last = Clock::now();
+    for (int i = begin; i < end; ++i) SenseAndControlRobot(w, ctx, i, &local, &last);
     // Ranges are disjoint, so the range's first robot names its slot: no shared writes.
     w.chunk_times[static_cast<size_t>(begin)] = local;
   };

@@ -420,6 +420,26 @@ TEST(LoopEntities, BadCallsNameTheHookAndTheLine) {
          "id 'fb0' is already used");
 }
 
+// The store keeps its ids in an index (HasId is a lookup): an id is taken from its
+// entity's addition to its removal, whatever the kind, and free again after.
+TEST(LoopEntities, AnIdIsTakenUntilItsEntityIsRemoved) {
+  const std::string add_box = "experiment.add_entity('box', {id = 'b', position = {1, 1}, size = {0.1, 0.1, 0.1}})\n";
+  EXPECT_EQ(Fails("function init()\n  local b = " + add_box + "  experiment.remove_entity(b)\n  " + add_box + "end"),
+            "");
+  EXPECT_NE(Fails("function init()\n  " + add_box + "  " + add_box + "end").find("id 'b' is already used"),
+            std::string::npos);
+  EXPECT_NE(Fails("function init()\n  experiment.add_entity('light', {id = 'cyl', position = {1, 1}, color = 'red', "
+                  "medium = 'leds'})\nend",
+                  Cylinder("cyl", 2, 2, true))
+                .find("id 'cyl' is already used"),
+            std::string::npos);
+  EXPECT_EQ(Fails("function post_step()\n  local c = experiment.entities('cylinder')[1]\n  if c then\n"
+                  "    experiment.remove_entity(c)\n    experiment.add_entity('light', {id = 'cyl', position = {1, 1}, "
+                  "color = 'red', medium = 'leds'})\n  end\nend",
+                  Cylinder("cyl", 2, 2, true)),
+            "");
+}
+
 TEST(LoopEntities, AddingAndRemovingIsIdenticalAtAnyThreadCount) {
   TempDir d;
   d.Write("c.lua", R"(

@@ -6,6 +6,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
+#include <unordered_map>
 
 #include "argos/argos_world.h"
 
@@ -20,6 +22,9 @@ struct CSpace::SWorldEntities {
   /// GetEntitiesByType's maps, kept until an entity is added or removed (LayoutVersion).
   CSpace::TMapPerType by_type[4];
   uint64_t by_type_version[4] = {~0ull, ~0ull, ~0ull, ~0ull};
+  /// GetEntity's index: each id's first entity in creation order, kept as by_type is.
+  std::unordered_map<std::string, essaim::ArgosRef> by_id;
+  uint64_t by_id_version = ~0ull;
   /// Held by the space's lookups made from a robot's ControlStep, which runs beside other
   /// robots': the wrappers and maps are made once, then only read until the next stage.
   std::mutex step_lock;

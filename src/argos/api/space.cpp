@@ -66,8 +66,15 @@ CSpace::TMapPerType& CSpace::GetEntitiesByType(const std::string& str_type) {
 CEntity& CSpace::GetEntity(const std::string& str_id) {
   essaim::ArgosWorld& world = *essaim::RequireSession("GetEntity").world;
   const std::unique_lock<std::mutex> hold = StepLock(m_psEntities->step_lock);
-  for (const essaim::ArgosRef& ref : world.Entities(-1))
-    if (world.Id(ref) == str_id) return SEntityBinding::Wrapper(*this, ref);
+  auto& by_id = m_psEntities->by_id;
+  const uint64_t version = world.LayoutVersion();
+  if (m_psEntities->by_id_version != version) {  // a lookup, not a scan; made again after an addition or removal
+    by_id.clear();
+    for (const essaim::ArgosRef& ref : world.Entities(-1)) by_id.emplace(world.Id(ref), ref);
+    m_psEntities->by_id_version = version;
+  }
+  const auto found = by_id.find(str_id);
+  if (found != by_id.end()) return SEntityBinding::Wrapper(*this, found->second);
   THROW_ARGOSEXCEPTION("No entity with id \"" << str_id << "\" in the space");
 }
 
