@@ -74,7 +74,7 @@ int Relay(int client_in, int client_out, int sim, int status, pid_t child) {
 }
 }  // namespace
 
-int StartFront(int client_in, int client_out, FrontLink* link) {
+int StartFront(int client_in, int client_out, FrontLink* link, const std::function<void()>& in_front) {
   int sv[2], status[2];
   if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0 || pipe(status) != 0) return -1;
   const pid_t front = getpid();
@@ -100,6 +100,7 @@ int StartFront(int client_in, int client_out, FrontLink* link) {
   }
   setpgid(sim, sim);
   signal(SIGPIPE, SIG_IGN);
+  if (in_front) in_front();
   const int code = Relay(client_in, client_out, sv[0], status[0], sim);
   kill(-sim, SIGKILL);
   waitpid(sim, nullptr, 0);

@@ -5,6 +5,8 @@
 #pragma once
 #include <sys/types.h>
 
+#include <functional>
+
 namespace essaim {
 
 /// The sockets and pipe between the front and the simulations.
@@ -16,7 +18,9 @@ struct FrontLink {
 /// Forks the simulation. In the front: relays until the simulation reports its exit
 /// code, ends every simulation process (checkpoints included) and returns that code (>= 0).
 /// In the simulation: returns -1 with `link` set (the client's descriptors closed there).
-int StartFront(int client_in, int client_out, FrontLink* link);
+/// `in_front` runs in the front once the simulation is forked, before relaying starts (it
+/// may write whole messages to the client then).
+int StartFront(int client_in, int client_out, FrontLink* link, const std::function<void()>& in_front = nullptr);
 
 /// A copy woken from a checkpoint tells the front it is the live simulation now (the front
 /// ends the session, exit 3, when the live one is gone without an exit code: a crash).
