@@ -131,9 +131,9 @@ function EssaimArenaView(canvas, onSelect) {
     ctx.lineWidth = 3; ctx.strokeStyle = "#ff4fd8"; ctx.stroke();
     ctx.font = "bold 13px system-ui, sans-serif";
     ctx.textAlign = "center"; ctx.textBaseline = "bottom";
-    ctx.lineWidth = 3; ctx.strokeStyle = "rgba(0, 0, 0, 0.8)";
+    ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255, 255, 255, 0.85)";  // readable on a dark floor too
     ctx.strokeText(id, x, y - ring - 2);
-    ctx.fillStyle = "#ff4fd8";
+    ctx.fillStyle = "#b0008a";
     ctx.fillText(id, x, y - ring - 2);
     canvas.dataset.highlighted = id;
   }
