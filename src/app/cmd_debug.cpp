@@ -146,7 +146,10 @@ RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
     };
   };
   hooks.before_tick = [&session](World& world) { return session.BeforeTick(world); };
-  hooks.finishing = [&session](RunInfo* info) { info->debug = session.Record(); };
+  hooks.finishing = [&session](RunInfo* info) {
+    session.RunFinished();
+    info->debug = session.Record();
+  };
   hooks.error = [&session](const std::string& message) { session.LogLine('E', message); };
   return hooks;
 }

@@ -233,7 +233,7 @@ int DebugSession::NewHandle(Handle h) {
   return static_cast<int>(handles_.size());
 }
 
-void DebugSession::PublishView(bool paused) {
+void DebugSession::PublishView(bool paused, bool ended) {
   if (!view_.Enabled() || !world_) return;
   const long long tick = !paused          ? static_cast<long long>(world_->tick)
                          : stop_.boundary ? BoundaryTick()
@@ -246,7 +246,8 @@ void DebugSession::PublishView(bool paused) {
                                        {"thread", Value::OfInteger(paused ? last_thread_ : 0)},
                                        {"selected", Value::OfString(paused ? ThreadName(last_thread_) : "")},
                                        {"robot", Value::OfString(paused && is_robot ? launch_.robot_ids[robot] : "")},
-                                       {"robot_index", Value::OfInteger(paused && is_robot ? last_thread_ - 2 : -1)}}));
+                                       {"robot_index", Value::OfInteger(paused && is_robot ? last_thread_ - 2 : -1)},
+                                       {"ended", Value::OfBool(ended)}}));
 }
 
 std::string DebugSession::ThreadName(int thread) const {

@@ -55,6 +55,8 @@ class DebugSession : public DebugListener {
   /// The live page's scenes and frames go to `fd` (essaim debug --serve), from this
   /// process and the copies that go back.
   void ServeView(int fd) { view_.Open(fd); }
+  /// The run's last tick is done (its world still there): the live page's last frame.
+  void RunFinished() { PublishView(false, true); }
   /// Ends the checkpoints (the run is over).
   void EndCheckpoints();
   /// The run ended with `exit_code`: exited and terminated events, then the client's
@@ -142,8 +144,9 @@ class DebugSession : public DebugListener {
   Value VariableJson(int thread, const struct LuaVariable& v);
   std::string ThreadName(int thread) const;
   long long BoundaryTick() const;
-  /// A frame for the live page: the world now, paused or running, the selected thread.
-  void PublishView(bool paused);
+  /// A frame for the live page: the world now, paused or running (or ended), the selected
+  /// thread.
+  void PublishView(bool paused, bool ended = false);
 
   DapChannel& channel_;
   Launcher launcher_;

@@ -27,7 +27,8 @@ struct FrameInfo {
   size_t series_rows = 0;
   uint64_t log_lines = 0;
   uint64_t scene = 0;  // the version of /api/scene: a page fetches it again when it changes
-  /// `essaim debug --serve`'s {paused, tick, boundary, thread, robot, robot_index}; null: none.
+  /// `essaim debug --serve`'s {paused, tick, boundary, thread, selected, robot, robot_index,
+  /// ended}; null: none.
   Value debug;
 };
 

@@ -1,6 +1,7 @@
 """`essaim debug --serve`: the live page's /api/state follows the debug session: paused by the
 debugger at the stop's tick, the selected thread's robot, running again after a continue, and
-the earlier tick after a step back (the copy woken from a checkpoint publishes once live)."""
+the earlier tick after a step back (the copy woken from a checkpoint publishes once live), the
+run's end; --serve in launch's args."""
 import json
 import re
 import time
@@ -62,6 +63,7 @@ def test_the_page_shows_the_stop_the_selected_robot_and_a_step_back(tmp_path):
     dap.request("continue", threadId=3)
     assert debug_state(url, {"paused": False})["robot"] == ""
     assert dap.event("exited")["body"]["exitCode"] == 0
+    assert debug_state(url, {"ended": True})["tick"] == 200
     dap.event("terminated")
     dap.request("disconnect")
     assert dap.p.wait(timeout=60) == 0

@@ -1,6 +1,6 @@
 """`essaim debug --serve`: the live page of a debug session in headless Chromium. Stopped at a
 breakpoint it says "paused by the debugger" with the tick and rings the robot whose thread the
-client looked at last; the run controls are hidden (the editor drives the run); running again
+client looked at last; the run controls are hidden (the editor drives the run); the run's end
 after a continue. Needs what test_live_browser.py needs."""
 import sys
 from pathlib import Path
@@ -34,8 +34,8 @@ def test_the_page_rings_the_selected_robot_and_hides_the_run_controls(tmp_path, 
     assert page.text_content("#state") == "paused by the debugger, tick 5: fb0"
     dap.request("setBreakpoints", source={"path": "c.lua"}, breakpoints=[])
     dap.request("continue", threadId=3)
-    page.wait_for_function(f"{STATE} === 'running' && essaimLive.highlighted() === ''", timeout=10000)
     dap.event("exited")
+    page.wait_for_function(f"{STATE} === 'the run has ended' && essaimLive.highlighted() === ''", timeout=10000)
     dap.request("disconnect")
     assert dap.p.wait(timeout=60) == 0
     assert errors == []
