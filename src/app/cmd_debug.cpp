@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <thread>
 
 #include "app/commands.h"
 #include "app/run_command.h"
@@ -92,7 +91,8 @@ bool DescribeLaunch(const RunArgs& args, const Value& arguments, DebugLaunch* ou
 }
 
 // The live page in the front (--serve): its pipe is made before the simulation is forked,
-// its server started after, so that no simulation has its threads or listening socket.
+// its server started after, so that no simulation has its threads or listening socket; the
+// front's relay loop reads the pipe (no thread of ours).
 class FrontView {
  public:
   explicit FrontView(int port) : port_(port) {
@@ -104,8 +104,19 @@ class FrontView {
     close(pipe_[0]);
     return pipe_[1];
   }
-  /// In the front: listening, the address told on stderr and to the client (whole
-  /// messages, before the relay starts), the pipe read on a thread.
+  /// The front's part: started once the simulation is forked, the pipe drained as it relays.
+  FrontSide Side(int client_out) {
+    if (port_ < 0) return {};
+    return {[this, client_out] { Start(client_out); }, pipe_[0], [this] { return feed_->Drain(); }};
+  }
+  /// In the front, every simulation gone.
+  void End() {
+    if (server_) server_->Stop();
+  }
+
+ private:
+  /// Listening; the address told on stderr and to the client (whole messages, before the
+  /// relay starts).
   void Start(int client_out) {
     if (port_ < 0) return;
     close(pipe_[1]);
@@ -117,19 +128,13 @@ class FrontView {
       said = "essaim debug: --serve: " + error + "\n";
     std::fprintf(stderr, "%s", said.c_str());
     DapChannel(-1, client_out).Output("console", said);  // seq 1: clients do not check events' seq
-    feeder_ = std::thread([this] { FeedView(pipe_[0], server_.get()); });
-  }
-  /// In the front, every simulation gone: the pipe is at its end.
-  void End() {
-    if (feeder_.joinable()) feeder_.join();
-    if (server_) server_->Stop();
+    feed_ = std::make_unique<ViewFeed>(pipe_[0], server_.get());
   }
 
- private:
   int port_;
   int pipe_[2] = {-1, -1};
   std::unique_ptr<ViewServer> server_;
-  std::thread feeder_;
+  std::unique_ptr<ViewFeed> feed_;
 };
 
 RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
@@ -181,7 +186,7 @@ int Debug(DebugArgs& a) {
   const pid_t front = getpid();
   FrontLink link;
   FrontView view(serve);
-  const int front_code = StartFront(in, out, &link, [&] { view.Start(out); });
+  const int front_code = StartFront(in, out, &link, view.Side(out));
   if (front_code >= 0) {
     view.End();
     return front_code;

@@ -1,5 +1,6 @@
 #include "debug/debug_view.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -18,17 +19,6 @@ constexpr auto kFrameInterval = std::chrono::milliseconds(50);
 bool WriteAll(int fd, const char* data, size_t size) {
   while (size > 0) {
     const ssize_t n = write(fd, data, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
-bool ReadAll(int fd, char* data, size_t size) {
-  while (size > 0) {
-    const ssize_t n = read(fd, data, size);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     data += n;
@@ -75,17 +65,36 @@ void ViewPublisher::Publish(const World& world, Value debug) {
   Send('F', FrameText(world, info));
 }
 
-void FeedView(int fd, ViewServer* server) {
-  Header h{};
-  std::string text;
-  while (ReadAll(fd, reinterpret_cast<char*>(&h), sizeof h)) {
-    text.resize(h.size);
-    if (!ReadAll(fd, text.data(), text.size())) return;
-    if (h.kind == 'S')
-      server->SetScene(text);
-    else
-      server->Frames().Publish(text);
+ViewFeed::ViewFeed(int fd, ViewServer* server) : fd_(fd), server_(server) { fcntl(fd_, F_SETFL, O_NONBLOCK); }
+
+bool ViewFeed::Drain() {
+  char chunk[65536];
+  while (true) {
+    const ssize_t n = read(fd_, chunk, sizeof chunk);
+    if (n > 0) {
+      buffer_.append(chunk, static_cast<size_t>(n));
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    TakeMessages();
+    return n < 0 && errno == EAGAIN;
   }
+}
+
+void ViewFeed::TakeMessages() {
+  size_t at = 0;
+  Header h{};
+  while (buffer_.size() - at >= sizeof h) {
+    std::memcpy(&h, buffer_.data() + at, sizeof h);
+    if (buffer_.size() - at - sizeof h < h.size) break;
+    std::string text = buffer_.substr(at + sizeof h, h.size);
+    at += sizeof h + h.size;
+    if (h.kind == 'S')
+      server_->SetScene(std::move(text));
+    else
+      server_->Frames().Publish(std::move(text));
+  }
+  buffer_.erase(0, at);
 }
 
 }  // namespace essaim

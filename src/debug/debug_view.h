@@ -38,7 +38,19 @@ class ViewPublisher {
   std::chrono::steady_clock::time_point last_;
 };
 
-/// The front's end: reads messages from `fd` into `server` until every writer has closed it.
-void FeedView(int fd, ViewServer* server);
+/// The front's end: the pipe read without blocking, its messages handed to `server`.
+class ViewFeed {
+ public:
+  ViewFeed(int fd, ViewServer* server);
+  /// Takes what has come; false at the pipe's end (every simulation gone).
+  bool Drain();
+
+ private:
+  void TakeMessages();
+
+  int fd_;
+  ViewServer* server_;
+  std::string buffer_;  // a message not whole yet
+};
 
 }  // namespace essaim

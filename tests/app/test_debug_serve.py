@@ -20,8 +20,9 @@ def get(url, path):
 
 
 def debug_state(url, wanted):
-    """The frame's "debug" once it has every field of `wanted` (the front relays frames
-    on a thread of its own: the stop's frame may be a moment behind the stopped event)."""
+    """The frame's "debug" once it has every field of `wanted`: a stop's frame is in before
+    the stopped event reaches the client, but a new selection's or a resume's comes right
+    after the request's response."""
     for _ in range(200):
         d = (get(url, "/api/state") or {}).get("debug")
         if d and all(d.get(k) == v for k, v in wanted.items()):
