@@ -116,11 +116,26 @@ function EssaimArenaView(canvas, onSelect) {
         ctx.fillStyle = "#111";
         ctx.fillText(F.ids[i], x, y + r + 2);
       }
+      if (i === F.highlight) drawHighlight(x, y, r, F.ids ? F.ids[i] : "");
       drawn++;
       alive += b.alive ? 1 : 0;
     }
     canvas.dataset.robotCount = String(drawn);
     return alive;
+  }
+  /// The robot a debugger stopped on (the live page of `essaim debug --serve`): a ring, and
+  /// its id above it at any zoom.
+  function drawHighlight(x, y, r, id) {
+    const ring = r + Math.max(4, r * 0.6);
+    ctx.beginPath(); ctx.arc(x, y, ring, 0, TAU);
+    ctx.lineWidth = 3; ctx.strokeStyle = "#ff4fd8"; ctx.stroke();
+    ctx.font = "bold 13px system-ui, sans-serif";
+    ctx.textAlign = "center"; ctx.textBaseline = "bottom";
+    ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255, 255, 255, 0.85)";  // readable on a dark floor too
+    ctx.strokeText(id, x, y - ring - 2);
+    ctx.fillStyle = "#b0008a";
+    ctx.fillText(id, x, y - ring - 2);
+    canvas.dataset.highlighted = id;
   }
   /// Draws the frame set last (or `frame`); returns how many robots are alive.
   function draw(frame) {
@@ -136,6 +151,7 @@ function EssaimArenaView(canvas, onSelect) {
     drawObstacles(s);
     drawLights(s);
     if (!F) return 0;
+    canvas.dataset.highlighted = "";
     if (selected >= 0) drawTrail(F.trail);
     return drawRobots(s);
   }

@@ -14,9 +14,12 @@
 #include "app/commands.h"
 #include "app/run_command.h"
 #include "app/run_session.h"
+#include "app/web_pages.h"
 #include "debug/dap_channel.h"
 #include "debug/debug_front.h"
 #include "debug/debug_session.h"
+#include "debug/debug_view.h"
+#include "serve/view_server.h"
 
 namespace essaim {
 
@@ -25,7 +28,14 @@ struct DebugArgs {
   RunArgs run;
   RunOptionValues values;
   int port = 0;
+  int serve = -1;  // the live page's port (0: a free one); -1: none
 };
+
+void AddServeOption(CLI::App* app, int* serve) {
+  app->add_option("--serve", *serve, "also show the run live in a browser on 127.0.0.1:PORT (0: a free port)")
+      ->type_name("PORT")
+      ->check(CLI::Range(0, 65535));
+}
 
 std::string Canonical(const std::string& path) {
   std::error_code ec;
@@ -35,7 +45,7 @@ std::string Canonical(const std::string& path) {
 
 /// The launch request's run options over the command line's: `args` parsed as essaim
 /// run's options, `experiment` and `cwd` applied.
-bool ApplyLaunchArguments(const Value& arguments, RunArgs* r, std::string* error) {
+bool ApplyLaunchArguments(const Value& arguments, RunArgs* r, int* serve, std::string* error) {
   const std::string cwd = StringField(arguments, "cwd");
   if (!cwd.empty() && chdir(cwd.c_str()) != 0) {
     *error = "launch: cwd " + cwd + " is not a folder";
@@ -45,6 +55,7 @@ bool ApplyLaunchArguments(const Value& arguments, RunArgs* r, std::string* error
     CLI::App parser("essaim debug's launch arguments", "essaim debug");
     RunOptionValues values;
     AddRunOptions(&parser, r, &values);
+    AddServeOption(&parser, serve);
     parser.get_option("FILE.argos")->required(false);
     std::vector<std::string> words;
     for (const Value& a : args->list) words.push_back(a.text);
@@ -79,6 +90,53 @@ bool DescribeLaunch(const RunArgs& args, const Value& arguments, DebugLaunch* ou
   return true;
 }
 
+// The live page in the front (--serve): its pipe is made before the simulation is forked,
+// its server started after, so that no simulation has its threads or listening socket; the
+// front's relay loop reads the pipe (no thread of ours).
+class FrontView {
+ public:
+  explicit FrontView(int port) : port_(port) {
+    if (port_ >= 0 && pipe(pipe_) != 0) port_ = -1;
+  }
+  bool Publishes() const { return port_ >= 0; }
+  /// In the simulation: the pipe's end it writes to.
+  int SimulationEnd() {
+    close(pipe_[0]);
+    return pipe_[1];
+  }
+  /// The front's part: started once the simulation is forked, the pipe drained as it relays.
+  FrontSide Side(int client_out) {
+    if (port_ < 0) return {};
+    return {[this, client_out] { Start(client_out); }, pipe_[0], [this] { return feed_->Drain(); }};
+  }
+  /// In the front, every simulation gone.
+  void End() {
+    if (server_) server_->Stop();
+  }
+
+ private:
+  /// Listening; the address told on stderr and to the client (whole messages, before the
+  /// relay starts).
+  void Start(int client_out) {
+    if (port_ < 0) return;
+    close(pipe_[1]);
+    server_ = std::make_unique<ViewServer>(LivePage());
+    std::string error, said;
+    if (server_->Start("127.0.0.1", port_, "", &error))
+      said = "live view: " + server_->Url("127.0.0.1") + "\n";
+    else
+      said = "essaim debug: --serve: " + error + "\n";
+    std::fprintf(stderr, "%s", said.c_str());
+    DapChannel(-1, client_out).Output("console", said);  // seq 1: clients do not check events' seq
+    feed_ = std::make_unique<ViewFeed>(pipe_[0], server_.get());
+  }
+
+  int port_;
+  int pipe_[2] = {-1, -1};
+  std::unique_ptr<ViewServer> server_;
+  std::unique_ptr<ViewFeed> feed_;
+};
+
 RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
   RunHooks hooks;
   const bool to_log_dir = !r.log_dir.empty();
@@ -93,7 +151,10 @@ RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
     };
   };
   hooks.before_tick = [&session](World& world) { return session.BeforeTick(world); };
-  hooks.finishing = [&session](RunInfo* info) { info->debug = session.Record(); };
+  hooks.finishing = [&session](RunInfo* info) {
+    session.RunFinished();
+    info->debug = session.Record();
+  };
   hooks.error = [&session](const std::string& message) { session.LogLine('E', message); };
   return hooks;
 }
@@ -114,17 +175,24 @@ int Debug(DebugArgs& a) {
   }
   DapChannel channel(in, out);
   RunArgs run = a.run;
+  int serve = a.serve;
   DebugSession session(channel, [&](const Value& arguments, DebugLaunch* launch, std::string* message) {
     run = a.run;
-    return ApplyLaunchArguments(arguments, &run, message) && DescribeLaunch(run, arguments, launch, message);
+    serve = a.serve;
+    return ApplyLaunchArguments(arguments, &run, &serve, message) && DescribeLaunch(run, arguments, launch, message);
   });
   if (!session.Configure()) return kExitOk;  // the client left before the run started
   // From here this process is the front; the run happens in the simulation it forks.
   const pid_t front = getpid();
   FrontLink link;
-  const int front_code = StartFront(in, out, &link);
-  if (front_code >= 0) return front_code;
+  FrontView view(serve);
+  const int front_code = StartFront(in, out, &link, view.Side(out));
+  if (front_code >= 0) {
+    view.End();
+    return front_code;
+  }
   channel.Rebind(link.sim_socket);
+  if (view.Publishes()) session.ServeView(view.SimulationEnd());
   session.EnableGoingBack(front, link);
   RunSession run_session;
   const RunHooks hooks = DebugHooks(session, run);
@@ -148,6 +216,7 @@ CommandMain AddDebugCommand(CLI::App& app) {
   sub->add_option("--port", a->port, "serve one client on 127.0.0.1:N instead of stdin/stdout")
       ->type_name("N")
       ->check(CLI::Range(1, 65535));
+  AddServeOption(sub, &a->serve);
   sub->footer("Example (VS Code, nvim-dap: docs/debugging.md):\n  essaim debug arenas/foraging.argos --ticks 600");
   return [a, sub] {
     FinishRunOptions(sub, &a->run, a->values);

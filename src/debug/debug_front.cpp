@@ -44,16 +44,24 @@ bool Running(pid_t pid, pid_t child) {
 
 // Relays until the exit code comes (then what the simulation sent before it is passed on),
 // or until the live simulation is gone without one (it crashed: exit 3).
-int Relay(int client_in, int client_out, int sim, int status, pid_t child) {
+int Relay(int client_in, int client_out, int sim, int status, pid_t child, FrontSide& side) {
   bool client_open = true;
   pid_t live = child;
   int gone = 0;  // seconds the live simulation has been gone (a going back hands over in ms)
+  auto drain = [&side] {
+    if (side.fd >= 0 && !side.drain()) side.fd = -1;
+  };
   while (true) {
-    pollfd p[3] = {{sim, POLLIN, 0}, {status, POLLIN, 0}, {client_open ? client_in : -1, POLLIN, 0}};
-    const int ready = poll(p, 3, 1000);
+    pollfd p[4] = {
+        {sim, POLLIN, 0}, {status, POLLIN, 0}, {client_open ? client_in : -1, POLLIN, 0}, {side.fd, POLLIN, 0}};
+    const int ready = poll(p, 4, 1000);
     if (ready < 0 && errno != EINTR) return 1;
     if (ready == 0 && !Running(live, child) && ++gone >= 3) return 3;
-    if (p[0].revents & (POLLIN | POLLHUP)) Forward(sim, client_out);
+    if (p[3].revents & (POLLIN | POLLHUP)) drain();
+    if (p[0].revents & (POLLIN | POLLHUP)) {
+      drain();
+      Forward(sim, client_out);
+    }
     if (p[2].revents & (POLLIN | POLLHUP) && !Forward(client_in, sim)) {
       client_open = false;
       shutdown(sim, SHUT_WR);  // the simulation reads the end of input: the client left
@@ -66,6 +74,7 @@ int Relay(int client_in, int client_out, int sim, int status, pid_t child) {
       gone = 0;
       continue;
     }
+    drain();
     fcntl(sim, F_SETFL, O_NONBLOCK);
     while (Forward(sim, client_out)) {
     }
@@ -74,7 +83,7 @@ int Relay(int client_in, int client_out, int sim, int status, pid_t child) {
 }
 }  // namespace
 
-int StartFront(int client_in, int client_out, FrontLink* link) {
+int StartFront(int client_in, int client_out, FrontLink* link, FrontSide side) {
   int sv[2], status[2];
   if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0 || pipe(status) != 0) return -1;
   const pid_t front = getpid();
@@ -100,7 +109,8 @@ int StartFront(int client_in, int client_out, FrontLink* link) {
   }
   setpgid(sim, sim);
   signal(SIGPIPE, SIG_IGN);
-  const int code = Relay(client_in, client_out, sv[0], status[0], sim);
+  if (side.start) side.start();
+  const int code = Relay(client_in, client_out, sv[0], status[0], sim, side);
   kill(-sim, SIGKILL);
   waitpid(sim, nullptr, 0);
   return code;

@@ -5,6 +5,8 @@
 #pragma once
 #include <sys/types.h>
 
+#include <functional>
+
 namespace essaim {
 
 /// The sockets and pipe between the front and the simulations.
@@ -13,10 +15,21 @@ struct FrontLink {
   int status_fd = -1;   // the simulations' end of the exit-code pipe
 };
 
+/// What the front does besides relaying (the live view, --serve). `start` runs once the
+/// simulation is forked, before relaying starts (it may write whole messages to the client
+/// then). `drain` takes what has come on `fd` (false at its end); it runs when `fd` has bytes
+/// and before each of the simulation's messages is passed on, so that what the simulation
+/// published before sending one is in before the client hears of it.
+struct FrontSide {
+  std::function<void()> start;
+  int fd = -1;
+  std::function<bool()> drain;
+};
+
 /// Forks the simulation. In the front: relays until the simulation reports its exit
 /// code, ends every simulation process (checkpoints included) and returns that code (>= 0).
 /// In the simulation: returns -1 with `link` set (the client's descriptors closed there).
-int StartFront(int client_in, int client_out, FrontLink* link);
+int StartFront(int client_in, int client_out, FrontLink* link, FrontSide side = {});
 
 /// A copy woken from a checkpoint tells the front it is the live simulation now (the front
 /// ends the session, exit 3, when the live one is gone without an exit code: a crash).

@@ -166,6 +166,7 @@ void DebugSession::ConcludeSearch() {
 
 void DebugSession::FinishReplay() {
   replay_.active = false;
+  view_.Invalidate();  // this copy is the live simulation now: the page gets its scene anew
   debugger_.SetQuiet(false);
   debugger_.SetEntryTarget(0, 0);
   if (replay_.divergences > divergences_.size())

@@ -232,6 +232,7 @@ void DebugSession::Variables(const Value& request) {
     return;
   }
   const Handle h = handles_[static_cast<size_t>(ref - 1)];
+  last_thread_ = h.thread;  // the thread the user looks at (the live page rings its robot)
   lua_State* L = StateFor(h.thread, h.level);
   std::vector<LuaVariable> vars;
   if (L && h.kind == Handle::Kind::Locals) vars = FrameLocals(L, h.level);
@@ -250,6 +251,7 @@ void DebugSession::Evaluate(const Value& request) {
     const long long frame = IntField(args, "frameId");
     thread = static_cast<int>(frame / kFramesPerThread);
     level = static_cast<int>(frame % kFramesPerThread) - 1;
+    last_thread_ = thread;
   } else if (stop_.active) {
     thread = stop_.thread;
   }

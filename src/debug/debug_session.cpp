@@ -85,6 +85,8 @@ void DebugSession::SendStopped(const std::string& reason, int thread, const std:
                              {"allThreadsStopped", Value::OfBool(true)},
                              {"description", Value::OfString(description)}});
   if (!text.empty()) body.Set("text", Value::OfString(text));
+  last_thread_ = thread;
+  PublishView(true);  // before the event: a client that looks at the page then sees the stop
   channel_.Event("stopped", std::move(body));
 }
 
@@ -102,11 +104,14 @@ void DebugSession::ServeStopped() {
       break;
     }
     if (StringField(request, "type") != "request") continue;
+    const int selected = last_thread_;
     if (Dispatch(request) == After::Resume) break;
+    if (last_thread_ != selected) PublishView(true);  // the page highlights the thread's robot
   }
   debugger_.SetQuiet(quiet);
   Release();
   stop_ = Stop();
+  PublishView(false);
 }
 
 void DebugSession::Stopped(int thread, lua_State* L, const StopInfo& why) {
@@ -137,6 +142,7 @@ bool DebugSession::BeforeTick(World& world) {
     debugger_.SetTick(BoundaryTick());
     return true;
   }
+  if (view_.Enabled() && view_.Due()) PublishView(false);  // the live one only: not while re-simulating
   ServePending();
   BoundaryStops(world);
   debugger_.SetTick(BoundaryTick());
@@ -225,6 +231,23 @@ lua_State* DebugSession::StateFor(int thread, int level) const {
 int DebugSession::NewHandle(Handle h) {
   handles_.push_back(h);
   return static_cast<int>(handles_.size());
+}
+
+void DebugSession::PublishView(bool paused, bool ended) {
+  if (!view_.Enabled() || !world_) return;
+  const long long tick = !paused          ? static_cast<long long>(world_->tick)
+                         : stop_.boundary ? BoundaryTick()
+                                          : debugger_.Tick();
+  const size_t robot = static_cast<size_t>(last_thread_ - 2);
+  const bool is_robot = last_thread_ >= 2 && robot < launch_.robot_ids.size();
+  view_.Publish(*world_, Value::MapOf({{"paused", Value::OfBool(paused)},
+                                       {"tick", Value::OfInteger(tick)},
+                                       {"boundary", Value::OfBool(paused && stop_.boundary)},
+                                       {"thread", Value::OfInteger(paused ? last_thread_ : 0)},
+                                       {"selected", Value::OfString(paused ? ThreadName(last_thread_) : "")},
+                                       {"robot", Value::OfString(paused && is_robot ? launch_.robot_ids[robot] : "")},
+                                       {"robot_index", Value::OfInteger(paused && is_robot ? last_thread_ - 2 : -1)},
+                                       {"ended", Value::OfBool(ended)}}));
 }
 
 std::string DebugSession::ThreadName(int thread) const {

@@ -14,6 +14,7 @@
 #include "debug/checkpoints.h"
 #include "debug/dap_channel.h"
 #include "debug/debug_front.h"
+#include "debug/debug_view.h"
 #include "lua/debug/lua_debugger.h"
 
 namespace essaim {
@@ -51,6 +52,11 @@ class DebugSession : public DebugListener {
   /// From now on checkpoints are taken, so that stepBack, reverseContinue and runToTick
   /// can go back (this process is a simulation forked by the front `front`).
   void EnableGoingBack(pid_t front, const FrontLink& link);
+  /// The live page's scenes and frames go to `fd` (essaim debug --serve), from this
+  /// process and the copies that go back.
+  void ServeView(int fd) { view_.Open(fd); }
+  /// The run's last tick is done (its world still there): the live page's last frame.
+  void RunFinished() { PublishView(false, true); }
   /// Ends the checkpoints (the run is over).
   void EndCheckpoints();
   /// The run ended with `exit_code`: exited and terminated events, then the client's
@@ -138,6 +144,9 @@ class DebugSession : public DebugListener {
   Value VariableJson(int thread, const struct LuaVariable& v);
   std::string ThreadName(int thread) const;
   long long BoundaryTick() const;
+  /// A frame for the live page: the world now, paused or running (or ended), the selected
+  /// thread.
+  void PublishView(bool paused, bool ended = false);
 
   DapChannel& channel_;
   Launcher launcher_;
@@ -158,6 +167,7 @@ class DebugSession : public DebugListener {
   std::unique_ptr<Checkpoints> checkpoints_;
   FrontLink front_;
   Replay replay_;
+  ViewPublisher view_;
   std::map<std::string, Value> asked_breakpoints_;  // by source path as asked: the request's arguments
   Value asked_functions_, asked_exceptions_;
 };

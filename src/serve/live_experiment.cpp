@@ -78,6 +78,7 @@ Value FrameValue(const World& w, const FrameInfo& info) {
   f.Set("series_rows", Value::OfUnsigned(info.series_rows));
   f.Set("log_lines", Value::OfUnsigned(info.log_lines));
   f.Set("scene", Value::OfUnsigned(info.scene));
+  if (!info.debug.IsNull()) f.Set("debug", info.debug);
   return f;
 }
 

@@ -27,10 +27,14 @@ struct FrameInfo {
   size_t series_rows = 0;
   uint64_t log_lines = 0;
   uint64_t scene = 0;  // the version of /api/scene: a page fetches it again when it changes
+  /// `essaim debug --serve`'s {paused, tick, boundary, thread, selected, robot, robot_index,
+  /// ended}; null: none.
+  Value debug;
 };
 
 /// One frame: {tick, run, paused, speed, error, robots: [{id, x, y, yaw, led, alive, ok}],
-/// movable: [[obstacle index, x, y, yaw, led]] (movable obstacles only), series_rows, log_lines, scene}. Positions are
+/// movable: [[obstacle index, x, y, yaw, led]] (movable obstacles only), series_rows, log_lines, scene,
+/// debug (when set)}. Positions are
 /// rounded to 0.1 mm and yaws to 1e-4 rad (a page needs no more; frames stay small). JSON
 /// text on one line.
 std::string FrameText(const World& world, const FrameInfo& info);

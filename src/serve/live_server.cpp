@@ -11,12 +11,10 @@
 #include <vector>
 
 #include "core/value_json.h"
-#include "serve/access.h"
 #include "serve/control.h"
 #include "serve/file_watcher.h"
-#include "serve/frame_mailbox.h"
-#include "serve/http_server.h"
 #include "serve/live_experiment.h"
+#include "serve/view_server.h"
 
 namespace essaim {
 
@@ -53,13 +51,9 @@ HttpResponse ErrorAnswer(int status, const std::string& message) {
 
 struct LiveServer::Impl {
   ServeOptions options;
-  AccessPolicy access;
-  HttpServer http;
+  std::unique_ptr<ViewServer> view;  // the page, /api/state, /api/scene, /api/events
   FileWatcher watcher;
-  FrameMailbox frames;
   std::unique_ptr<LiveExperiment> experiment;
-  int port = 0;
-  std::thread http_thread;
 
   // Shared with the HTTP threads, under `mutex`.
   std::mutex mutex;
@@ -68,7 +62,6 @@ struct LiveServer::Impl {
   std::vector<std::shared_ptr<Inspection>> inspections;
   std::deque<LogLine> log;
   uint64_t log_total = 0;
-  std::string scene = "null";
   std::vector<std::string> series_columns;
   std::vector<std::vector<double>> series_rows;
   uint64_t series_run = 0;
@@ -87,12 +80,10 @@ struct LiveServer::Impl {
 
   void AddLog(char stream, const std::string& text, const LogOrigin& from);
   void Routes();
-  HttpResponse Gate(const HttpRequest& req);
   HttpResponse Control(const HttpRequest& req);
   HttpResponse Inspect(const HttpRequest& req);
   HttpResponse Log(const HttpRequest& req);
   HttpResponse Series(const HttpRequest& req);
-  HttpServer::NextChunk Events();
 
   bool ApplyCommands();
   void Apply(const ControlCommand& c);
@@ -115,14 +106,6 @@ void LiveServer::Impl::AddLog(char stream, const std::string& text, const LogOri
   const char* who = from.robot_id ? from.robot_id : from.robot == kLogLoopFunctions ? "loop_functions" : "essaim";
   log.push_back({++log_total, from.tick, from.robot, stream, who, text});
   if (log.size() > kLogKept) log.pop_front();
-}
-
-HttpResponse LiveServer::Impl::Gate(const HttpRequest& req) {
-  if (req.path == "/favicon.ico") return {204, "image/x-icon", ""};  // browsers ask, without the token
-  std::string why;
-  int status = CheckAccess(access, req.host, req.origin, req.Param("token"), req.authorization, &why);
-  if (status == 0) return {0, "", ""};
-  return ErrorAnswer(status, why);
 }
 
 HttpResponse LiveServer::Impl::Control(const HttpRequest& req) {
@@ -186,44 +169,12 @@ HttpResponse LiveServer::Impl::Series(const HttpRequest& req) {
   return JsonAnswer(200, answer);
 }
 
-HttpServer::NextChunk LiveServer::Impl::Events() {
-  struct Client {
-    uint64_t seq = 0;
-    Clock::time_point last_sent;
-  };
-  auto client = std::make_shared<Client>();
-  return [this, client](std::string* chunk) {
-    // At most one frame per interval per client; the latest one when it is time.
-    auto next = client->last_sent + kFrameInterval;
-    if (Clock::now() < next) std::this_thread::sleep_until(next);
-    FrameMailbox::Frame frame;
-    if (!frames.WaitNewer(&client->seq, &frame, std::chrono::seconds(10))) {
-      if (frames.Closed()) return false;
-      *chunk = ": still here\n\n";  // a comment: finds clients that left
-      return true;
-    }
-    client->last_sent = Clock::now();
-    *chunk = SseEvent("frame", *frame);
-    return true;
-  };
-}
-
 void LiveServer::Impl::Routes() {
-  http.SetGate([this](const HttpRequest& req) { return Gate(req); });
-  http.Get("/", [this](const HttpRequest&) { return HttpResponse{200, "text/html; charset=utf-8", options.page}; });
-  http.Get("/api/state", [this](const HttpRequest&) {
-    FrameMailbox::Frame f = frames.Latest();
-    return HttpResponse{200, "application/json", f ? *f : "null"};
-  });
-  http.Get("/api/scene", [this](const HttpRequest&) {
-    std::lock_guard<std::mutex> lock(mutex);
-    return HttpResponse{200, "application/json", scene};
-  });
+  HttpServer& http = view->Http();
   http.Get("/api/robot", [this](const HttpRequest& req) { return Inspect(req); });
   http.Get("/api/log", [this](const HttpRequest& req) { return Log(req); });
   http.Get("/api/series", [this](const HttpRequest& req) { return Series(req); });
   http.Post("/api/control", [this](const HttpRequest& req) { return Control(req); });
-  http.EventStream("/api/events", [this](const HttpRequest&) { return Events(); });
 }
 
 // ---- the simulation thread ---------------------------------------------------------------
@@ -305,9 +256,9 @@ void LiveServer::Impl::AfterLoad(bool ok, const char* what) {
   std::string scene_json = experiment->world() ? SceneText(*experiment->world()) : "null";
   if (experiment->world()) scene_layout = experiment->world()->entities.LayoutVersion();
   ++scene_version;
+  view->SetScene(std::move(scene_json));
   {
     std::lock_guard<std::mutex> lock(mutex);
-    scene = std::move(scene_json);
     series_columns.clear();
     series_rows.clear();
     series_run = experiment->run();
@@ -382,8 +333,7 @@ void LiveServer::Impl::RefreshScene() {
   std::string text = SceneText(*w);  // once per frame at most: the floor is encoded anew
   scene_layout = w->entities.LayoutVersion();
   ++scene_version;
-  std::lock_guard<std::mutex> lock(mutex);
-  scene = std::move(text);
+  view->SetScene(std::move(text));
 }
 
 void LiveServer::Impl::Publish() {
@@ -401,13 +351,13 @@ void LiveServer::Impl::Publish() {
     info.log_lines = log_total;
   }
   const World* w = experiment->world();
-  frames.Publish(w ? FrameText(*w, info)
-                   : ValueJsonLine(Value::MapOf({{"tick", Value::OfUnsigned(0)},
-                                                 {"run", Value::OfUnsigned(info.run)},
-                                                 {"paused", Value::OfBool(true)},
-                                                 {"speed", Value::OfNumber(speed)},
-                                                 {"error", Value::OfString(info.error)},
-                                                 {"robots", Value::EmptyList()}})));
+  view->Frames().Publish(w ? FrameText(*w, info)
+                           : ValueJsonLine(Value::MapOf({{"tick", Value::OfUnsigned(0)},
+                                                         {"run", Value::OfUnsigned(info.run)},
+                                                         {"paused", Value::OfBool(true)},
+                                                         {"speed", Value::OfNumber(speed)},
+                                                         {"error", Value::OfString(info.error)},
+                                                         {"robots", Value::EmptyList()}})));
 }
 
 void LiveServer::Impl::Loop(const std::atomic<int>& stop) {
@@ -428,13 +378,12 @@ void LiveServer::Impl::Loop(const std::atomic<int>& stop) {
   }
 }
 
-LiveServer::LiveServer(ServeOptions options) : impl_(std::make_unique<Impl>()) { impl_->options = std::move(options); }
-
-LiveServer::~LiveServer() {
-  impl_->frames.Close();
-  impl_->http.Stop();
-  if (impl_->http_thread.joinable()) impl_->http_thread.join();
+LiveServer::LiveServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = std::move(options);
+  impl_->view = std::make_unique<ViewServer>(impl_->options.page);
 }
+
+LiveServer::~LiveServer() { impl_->view->Stop(); }
 
 bool LiveServer::Start(std::string* error) {
   Impl& s = *impl_;
@@ -448,27 +397,15 @@ bool LiveServer::Start(std::string* error) {
       s.options.watchdog);
   s.AfterLoad(s.experiment->Load(), "load");
   s.watcher.Watch(s.experiment->InputFiles());
-  const std::string token = s.options.token.empty() ? NewToken() : s.options.token;
   s.Routes();
-  if (!s.http.Bind(s.options.host, s.options.port, &s.port, error)) return false;
-  s.access = PolicyFor(token, s.options.host, s.port);
-  s.http_thread = std::thread([&s] { s.http.Run(); });
-  return true;
+  return s.view->Start(s.options.host, s.options.port, s.options.token, error);
 }
 
-std::string LiveServer::Url() const {
-  const std::string& host = impl_->options.host;
-  std::string shown = host == "0.0.0.0" || host == "::"     ? "127.0.0.1"
-                      : host.find(':') != std::string::npos ? "[" + host + "]"
-                                                            : host;
-  return "http://" + shown + ":" + std::to_string(impl_->port) + "/?token=" + impl_->access.token;
-}
+std::string LiveServer::Url() const { return impl_->view->Url(impl_->options.host); }
 
 void LiveServer::Run(const std::atomic<int>& stop) {
   impl_->Loop(stop);
-  impl_->frames.Close();
-  impl_->http.Stop();
-  if (impl_->http_thread.joinable()) impl_->http_thread.join();
+  impl_->view->Stop();
 }
 
 }  // namespace essaim
