@@ -126,10 +126,15 @@ class DapClient:
         """`essaim debug ARGS --port N`, then a connection to 127.0.0.1:N (retried while the
         process starts listening)."""
         port = port or free_port()
+        return cls.server([essaim, "debug", *map(str, args), "--port", str(port)], port, cwd, timeout, env)
+
+    @classmethod
+    def server(cls, argv, port: int, cwd=None, timeout=DEFAULT_TIMEOUT, env=None) -> "DapClient":
+        """Any adapter command line that listens on 127.0.0.1:`port`, and a connection to it."""
         err = _stderr_file(cwd)
         out = err.with_suffix(".stdout")
-        proc = subprocess.Popen([essaim, "debug", *map(str, args), "--port", str(port)], cwd=cwd, env=env,
-                                stdin=subprocess.DEVNULL, stdout=out.open("wb"), stderr=err.open("wb"))
+        proc = subprocess.Popen(list(map(str, argv)), cwd=cwd, env=env, stdin=subprocess.DEVNULL,
+                                stdout=out.open("wb"), stderr=err.open("wb"))
         c = cls(proc, err, timeout)
         c.port = port
         c._sock = c._connect(port)
