@@ -15,8 +15,9 @@ import json
 import re
 import socket
 import subprocess
-import threading
+import sys
 import tempfile
+import threading
 import time
 from collections import deque
 from pathlib import Path
@@ -29,11 +30,10 @@ class DapFailure(AssertionError):
 
 
 def _fail(message: str) -> None:
-    """Fails the running test (pytest.fail when pytest runs us, an exception otherwise)."""
-    try:
-        import pytest
-    except ImportError:  # the benchmark runs without pytest
-        raise DapFailure(message) from None
+    """Fails the running test (pytest.fail under pytest, DapFailure elsewhere: the benchmark)."""
+    pytest = sys.modules.get("pytest")
+    if pytest is None:
+        raise DapFailure(message)
     pytest.fail(message, pytrace=False)
 
 

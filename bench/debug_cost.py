@@ -1,0 +1,139 @@
+"""What `essaim debug` costs (docs/debugging.md), driven by the tests' DAP client
+(tests/debug/dap_client.py):
+
+1. a debug run without breakpoints against `essaim run`: the same experiment, seed and
+   ticks, the process's CPU time (user + system) less that of a 1-tick run of the same kind
+   (loading, init(), outputs), best of --repeat;
+2. going back one tick in the middle of a long run: a session paused before tick --at of a
+   --ticks run (runToTick), then stepBack on a robot's thread, timed from the request to
+   its stopped event (wall time: the client waits for it), --steps times in a row (each one
+   tick further back), and the time the runToTick itself took.
+
+Figures go to stdout with the machine (lscpu's model) and the load average.
+
+  .venv/bin/python bench/debug_cost.py --essaim build/essaim
+  .venv/bin/python bench/debug_cost.py --essaim build/essaim --quick   # a few seconds
+"""
+import argparse
+import os
+import platform
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tests" / "debug"))
+from dap_client import DapClient  # noqa: E402  (the tests' client, not a package)
+
+ARGOS = ROOT / "arenas" / "foraging.argos"
+
+
+def children_cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def run_cpu(essaim, ticks, seed, out) -> float:
+    before = children_cpu()
+    subprocess.run([essaim, "run", str(ARGOS), "--ticks", str(ticks), "--seed", str(seed), "--quiet",
+                    "--out", str(out)], check=True, capture_output=True)
+    return children_cpu() - before
+
+
+def debug_cpu(essaim, ticks, seed, out) -> float:
+    """A whole session with no breakpoint: initialize, launch, configurationDone, the end."""
+    before = children_cpu()
+    dap = DapClient.stdio(essaim, [ARGOS, "--ticks", ticks, "--seed", seed, "--out", out], cwd=out.parent,
+                          timeout=3600)
+    try:
+        dap.start()
+        if dap.finish(timeout=3600) != 0:
+            raise SystemExit(f"essaim debug failed:\n{dap.stderr()[-2000:]}")
+    finally:
+        dap.kill()
+    return children_cpu() - before
+
+
+def best_net(measure, essaim, ticks, seed, folder, repeat) -> float:
+    """min over `repeat` of measure(ticks) - measure(1): the CPU time of the ticks alone."""
+    folder.mkdir(parents=True, exist_ok=True)
+    net = []
+    for k in range(repeat):
+        full = measure(essaim, ticks, seed, folder / f"full-{k}")
+        empty = measure(essaim, 1, seed, folder / f"one-{k}")
+        net.append(full - empty)
+    return min(net)
+
+
+def step_back_times(essaim, ticks, at, steps, seed, folder):
+    """(seconds of runToTick `at`, [seconds of each stepBack])."""
+    dap = DapClient.stdio(essaim, [ARGOS, "--ticks", ticks, "--seed", seed, "--out", folder / "back"],
+                          cwd=folder, timeout=3600)
+    try:
+        dap.start(stop_on_entry=True)
+        thread = dap.stopped()["threadId"]
+        robot = min(t for t in dap.threads().values() if t >= 2)  # the first robot's thread
+        t0 = time.perf_counter()
+        stop = dap.resume("runToTick", thread, tick=at)
+        forward = time.perf_counter() - t0
+        assert stop["reason"] == "goto", stop
+        back = []
+        for _ in range(steps):
+            t0 = time.perf_counter()
+            stop = dap.resume("stepBack", robot)
+            back.append(time.perf_counter() - t0)
+            assert stop["reason"] == "step", stop
+        dap.request("terminate")
+        dap.finish(timeout=3600)
+        return forward, back
+    finally:
+        dap.kill()
+
+
+def machine() -> str:
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True, timeout=10).stdout
+        model = next(line.split(":", 1)[1].strip() for line in out.splitlines() if line.startswith("Model name"))
+    except (OSError, StopIteration, subprocess.SubprocessError):
+        model = platform.processor() or "unknown CPU"
+    return f"{model}, {os.cpu_count()} CPUs"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--essaim", default=str(ROOT / "build" / "essaim"))
+    ap.add_argument("--ticks", type=int, default=2000, help="ticks of the run-cost comparison")
+    ap.add_argument("--repeat", type=int, default=3, help="runs of each kind; the best is kept")
+    ap.add_argument("--back-ticks", type=int, default=10000, help="length of the step-back run")
+    ap.add_argument("--at", type=int, default=5000, help="the tick the step-back run pauses before")
+    ap.add_argument("--steps", type=int, default=5, help="stepBack requests in a row")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--quick", action="store_true", help="200 ticks, 1 repeat, step back at 500 of 1000")
+    a = ap.parse_args()
+    if a.quick:
+        a.ticks, a.repeat, a.back_ticks, a.at, a.steps = 200, 1, 1000, 500, 2
+    essaim = str(Path(a.essaim).resolve())
+    print(f"# bench/debug_cost.py, {time.strftime('%Y-%m-%d')}, {machine()}; "
+          f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+    print(f"# arenas/foraging.argos (30 robots), seed {a.seed}")
+    with tempfile.TemporaryDirectory(prefix="debug-cost-") as tmp:
+        folder = Path(tmp)
+        run = best_net(run_cpu, essaim, a.ticks, a.seed, folder / "run", a.repeat)
+        dbg = best_net(debug_cpu, essaim, a.ticks, a.seed, folder / "debug", a.repeat)
+        print(f"run without breakpoints, {a.ticks} ticks, CPU s (best of {a.repeat}, less a 1-tick run):")
+        print(f"  essaim run    {run:8.3f}")
+        print(f"  essaim debug  {dbg:8.3f}   debug/run {dbg / run:5.2f}")
+        forward, back = step_back_times(essaim, a.back_ticks, a.at, a.steps, a.seed, folder)
+        print(f"step back at tick {a.at} of a {a.back_ticks}-tick run, wall s:")
+        print(f"  runToTick {a.at} from tick 0   {forward:8.3f}")
+        print(f"  stepBack (each)              {' '.join(f'{t:.3f}' for t in back)}"
+              f"   median {statistics.median(back):.3f}  max {max(back):.3f}")
+    print(f"# load average after {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+
+
+if __name__ == "__main__":
+    main()
