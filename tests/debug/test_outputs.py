@@ -4,11 +4,9 @@ lines, the same recording bytes), and its log lines reach the client as output e
 variable set by hand changes the run and is listed in summary.json as a divergence; break on
 error stops at the raising line and the run then ends as `essaim run` ends it; a client that
 disconnects, or closes the connection, leaves a run that ends cleanly with its summary."""
-import json
-
 import pytest
 
-from debug_support import (FIRST, SHORT, WHEELS, add_log_line, comparable, controller, essaim_run, insert_after,
+from debug_support import (FIRST, ROOT, SHORT, WHEELS, add_log_line, comparable, controller, essaim_run, insert_after,
                            line_of, recording, summary)
 
 
@@ -169,8 +167,8 @@ def test_terminate_while_stopped_ends_the_run_there_with_its_outputs(argos, tmp_
 def test_the_experiment_and_options_may_come_from_the_launch_request(essaim, argos, tmp_path, session):
     """launch {"experiment", "args", "cwd"}: relative paths from cwd; it overrides the command line's."""
     essaim_run(essaim, "arenas/foraging.argos", SHORT, tmp_path / "ref", tmp_path)
-    dap = session([tmp_path / "missing.argos"])  # overridden by launch's experiment
+    dap = session([ROOT / "arenas" / "clustering.argos"])  # overridden by launch's experiment
     dap.start(experiment="arenas/foraging.argos", args=[*SHORT, "--out", "dbg"], cwd=tmp_path)
     assert dap.finish() == 0
     same_run(tmp_path / "ref", tmp_path / "dbg")
-    assert json.loads((tmp_path / "dbg" / "summary.json").read_text())["robots"] == 5
+    assert summary(tmp_path / "dbg")["experiment"] == "arenas/foraging.argos"

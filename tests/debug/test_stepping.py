@@ -145,7 +145,7 @@ def test_stop_on_entry_and_run_to_tick_stop_at_tick_boundaries(essaim, argos, tm
     assert set(scopes) == {"Globals", "robot"}
     glob = dap.variables(scopes["Globals"])
     assert "decision_count" in glob and "step" in glob  # the controller's globals ...
-    assert not {"string", "math", "table", "print"} & set(glob)  # ... not the standard libraries
+    assert not {"string", "math", "table", "coroutine"} & set(glob)  # ... not the standard libraries
     # readings of tick 24, the last sensed: the recording's pose of that tick
     robot = dap.variables(scopes["robot"])
     position = dap.variables(dap.variables(robot["positioning"]["variablesReference"])["position"]
