@@ -114,8 +114,9 @@ class DapClient:
     def command(cls, argv, cwd=None, timeout=DEFAULT_TIMEOUT, env=None) -> "DapClient":
         """Any adapter command line speaking DAP on its stdin/stdout."""
         err = _stderr_file(cwd)
-        proc = subprocess.Popen(list(map(str, argv)), cwd=cwd, env=env, stdin=subprocess.PIPE,
-                                stdout=subprocess.PIPE, stderr=err.open("wb"))
+        with err.open("wb") as errors:
+            proc = subprocess.Popen(list(map(str, argv)), cwd=cwd, env=env, stdin=subprocess.PIPE,
+                                    stdout=subprocess.PIPE, stderr=errors)
         c = cls(proc, err, timeout)
         c._send_bytes = lambda b: (proc.stdin.write(b), proc.stdin.flush())
         c._start_reader(lambda n: proc.stdout.read1(n))
@@ -132,9 +133,9 @@ class DapClient:
     def server(cls, argv, port: int, cwd=None, timeout=DEFAULT_TIMEOUT, env=None) -> "DapClient":
         """Any adapter command line that listens on 127.0.0.1:`port`, and a connection to it."""
         err = _stderr_file(cwd)
-        out = err.with_suffix(".stdout")
-        proc = subprocess.Popen(list(map(str, argv)), cwd=cwd, env=env, stdin=subprocess.DEVNULL,
-                                stdout=out.open("wb"), stderr=err.open("wb"))
+        with err.with_suffix(".stdout").open("wb") as output, err.open("wb") as errors:
+            proc = subprocess.Popen(list(map(str, argv)), cwd=cwd, env=env, stdin=subprocess.DEVNULL,
+                                    stdout=output, stderr=errors)
         c = cls(proc, err, timeout)
         c.port = port
         c._sock = c._connect(port)
