@@ -23,6 +23,7 @@ BELOW = {
     "devices": {"core", "spatial", "model", "physics", "devices"},
     "lua/host": {"core", "lua/host"},
 }
+BELOW["lua/debug"] = BELOW["lua/host"] | {"lua/debug"}
 BELOW["lua/robot"] = BELOW["devices"] | BELOW["lua/host"] | {"lua/robot"}
 BELOW["lua/loop"] = BELOW["lua/robot"] | {"lua/loop"}
 BELOW["argos"] = BELOW["lua/robot"] | {"argos"}
@@ -31,7 +32,8 @@ BELOW["output"] = BELOW["sim"] | {"output"}
 BELOW["serve"] = BELOW["output"] | {"serve"}
 BELOW["render"] = BELOW["output"] | {"render"}
 BELOW["python"] = BELOW["render"] | {"python"}
-BELOW["app"] = BELOW["serve"] | BELOW["render"] | {"app"}
+BELOW["debug"] = BELOW["serve"] | BELOW["lua/debug"] | {"debug"}
+BELOW["app"] = BELOW["debug"] | BELOW["render"] | {"app"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

@@ -17,6 +17,7 @@
 #include "app/commands.h"
 #include "app/log_printer.h"
 #include "app/run_args.h"
+#include "app/run_command.h"
 #include "app/run_report.h"
 #include "app/run_session.h"
 #include "app/run_workdir.h"
@@ -187,6 +188,7 @@ struct ActiveRun {
   const std::string shown_out;  // as given, for messages
   RunWorkdir& workdir;
   LogPrinter& logs;
+  const RunHooks* hooks = nullptr;
   std::chrono::steady_clock::time_point start;
   std::unique_ptr<World> world;
   RecordingWriter recorder;
@@ -252,6 +254,10 @@ StepStatus StepUntilDone(ActiveRun& run) {
   while (status == StepStatus::Running) {
     if (run.session.signals.Caught()) {
       MarkInterrupted(&run.info);
+      break;
+    }
+    if (run.hooks && run.hooks->before_tick && !run.hooks->before_tick(world)) {
+      status = StepStatus::Finished;
       break;
     }
     status = Step(world);
@@ -328,14 +334,17 @@ int FinishAndReport(ActiveRun& run, StepStatus status) {
   CloseStreams(run);
   run.info.files = run.workdir.Collect(std::string(kRunFilesFolder) + "/");
   run.info.files_listed = true;
+  if (run.hooks && run.hooks->finishing) run.hooks->finishing(&run.info);
   std::vector<std::string> unwritten = run.info.output_errors;
   if (!WriteRunOutputs(run.out, *run.world, run.info, has_metrics ? &metrics : nullptr, &error))
     unwritten.push_back(error);  // metrics, time series or summary
   return Report(run, status, unwritten);
 }
 
+}  // namespace
+
 /// One run. `inputs` receives the files it read (to watch) as soon as they are known.
-int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
+int RunExperiment(RunSession& session, RunArgs& r, std::vector<std::string>* inputs, const RunHooks* hooks) {
   session.earlier_set_aside = false;
   r.file = NamedFromBelow(r.file);
   std::unique_ptr<Model> model;
@@ -348,7 +357,8 @@ int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
   if (!r.log_dir.empty()) r.log_dir = WeaklyCanonicalPath(r.log_dir);  // read after the run enters out/files
   auto logs = std::make_shared<LogPrinter>(*model, r.log_prefix, r.log_dir);
   if (!PrepareLogs(*logs)) return kExitBadInput;
-  const SimOptions options = MakeSimOptions(session, r, *model, out, logs);
+  SimOptions options = MakeSimOptions(session, r, *model, out, logs);
+  if (hooks && hooks->options) hooks->options(&options);
   // Signals and the watchdog's last resort are handled from before init(): a controller
   // stuck there still ends the run with its outputs.
   RunWorkdir workdir;  // left after the world goes (C++ Destroy may write), and after the session forgets it
@@ -358,12 +368,14 @@ int Run(RunSession& session, RunArgs& r, std::vector<std::string>* inputs) {
     return FailedBeforeRun(session, r, out, model.get(), error, kExitRunFailed);
   session.SetWorkdir(&workdir);  // until SessionRun ends
   ActiveRun run(session, r, *model, out, shown_out, workdir, *logs);
+  run.hooks = hooks;
   if (std::optional<int> code = BuildWorld(run, options, inputs)) return *code;
   if (std::optional<int> code = OpenOutputs(run)) return *code;
   const StepStatus status = StepUntilDone(run);
   return FinishAndReport(run, status);
 }
 
+namespace {
 /// --watch: run, then wait for a change to a file the run read, and run again, until
 /// Ctrl-C (exit 0; a run it interrupts still leaves whole outputs).
 int WatchAndRun(RunSession& session, const RunArgs& args) {
@@ -379,7 +391,7 @@ int WatchAndRun(RunSession& session, const RunArgs& args) {
   while (true) {
     RunArgs r = args;  // each run applies --set-file and the options afresh
     std::vector<std::string> inputs;
-    Run(session, r, &inputs);
+    RunExperiment(session, r, &inputs, nullptr);
     std::fflush(stdout);
     if (session.signals.Caught()) return kExitOk;
     watched.insert(inputs.begin(), inputs.end());
@@ -395,10 +407,8 @@ int WatchAndRun(RunSession& session, const RunArgs& args) {
 }
 }  // namespace
 
-CommandMain AddRunCommand(CLI::App& app) {
-  auto r = std::make_shared<RunArgs>();
-  CLI::App* sub = app.add_subcommand("run", "run an experiment");
-  AddExperimentOptions(sub, r.get());
+void AddRunOptions(CLI::App* sub, RunArgs* r, RunOptionValues* v) {
+  AddExperimentOptions(sub, r);
   sub->add_option("-o,--out", r->out, "output folder (default runs/<name>-<seed>)")->type_name("DIR");
   sub->add_flag("-q,--quiet", r->quiet,
                 "no progress line, no end-of-run summary (warnings and errors are always printed)");
@@ -410,12 +420,11 @@ CommandMain AddRunCommand(CLI::App& app) {
       ->type_name("DIR");
   sub->add_flag("--sandbox", r->sandbox,
                 "untrusted scripts: no io/os/debug/native code, every instruction counted (docs/sandbox.md)");
-  auto budget = std::make_shared<double>(-1), init_budget = std::make_shared<double>(-1);
-  sub->add_option("--lua-budget", *budget,
+  sub->add_option("--lua-budget", v->budget,
                   "instructions per step() call and per-tick loop-function hook (default 1e8; 0 = unlimited)")
       ->type_name("N")
       ->check(InstructionCount());
-  sub->add_option("--lua-init-budget", *init_budget,
+  sub->add_option("--lua-init-budget", v->init_budget,
                   "instructions per script top level, init(), reset(), destroy() (default 1e9, or --lua-budget "
                   "when larger; 0 = unlimited)")
       ->type_name("N")
@@ -436,19 +445,30 @@ CommandMain AddRunCommand(CLI::App& app) {
                   "also write memory.csv: resident set and Lua bytes every N ticks (long runs, soak tests)")
       ->type_name("N")
       ->check(IntegerIn(1, kMaxTicks));
+}
+
+void FinishRunOptions(CLI::App* sub, RunArgs* r, const RunOptionValues& v) {
+  if (v.budget >= 0) r->lua_budget = static_cast<long long>(v.budget);
+  if (v.init_budget >= 0) r->lua_init_budget = static_cast<long long>(v.init_budget);
+  r->record_every = 0;
+  if (sub->count("--record") > 0)
+    r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
+}
+
+CommandMain AddRunCommand(CLI::App& app) {
+  auto r = std::make_shared<RunArgs>();
+  auto v = std::make_shared<RunOptionValues>();
+  CLI::App* sub = app.add_subcommand("run", "run an experiment");
+  AddRunOptions(sub, r.get(), v.get());
   sub->footer(
       "Example:\n  essaim run arenas/foraging.argos --ticks 600 --seed 7 --record --set "
       "controllers.foraging.params.EPSILONGREED=0.3");
-  return [r, sub, budget, init_budget] {
-    if (*budget >= 0) r->lua_budget = static_cast<long long>(*budget);
-    if (*init_budget >= 0) r->lua_init_budget = static_cast<long long>(*init_budget);
-    r->record_every = 0;
-    if (sub->count("--record") > 0)
-      r->record_every = r->record.empty() ? 1 : static_cast<uint32_t>(std::stoul(r->record.substr(6)));
+  return [r, sub, v] {
+    FinishRunOptions(sub, r.get(), *v);
     RunSession session;
     if (r->watch) return WatchAndRun(session, *r);
     std::vector<std::string> inputs;
-    return Run(session, *r, &inputs);
+    return RunExperiment(session, *r, &inputs, nullptr);
   };
 }
 

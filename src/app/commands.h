@@ -27,6 +27,7 @@ CommandMain AddVideoCommand(CLI::App& app);
 CommandMain AddServeCommand(CLI::App& app);
 CommandMain AddTestCommand(CLI::App& app);
 CommandMain AddNewCommand(CLI::App& app);
+CommandMain AddDebugCommand(CLI::App& app);
 /// A run folder's recording.bin, or the path itself when it is not a folder (replay, snapshot).
 std::string RecordingPathOf(const std::string& run);
 

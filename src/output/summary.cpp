@@ -111,6 +111,7 @@ Value BuildSummary(const World& w, const RunInfo& info) {
                                  {"signal", Text(c.signal)},
                                  {"tick", Value::OfUnsigned(c.tick)}}));
   }
+  if (!info.debug.IsNull()) s.Set("debug", info.debug);
   return s;
 }
 

@@ -36,6 +36,8 @@ struct RunInfo : RunOutcome {
   };
   bool crashed = false;
   Crash crash;
+  /// essaim debug's record (its divergences): summary.json's "debug"; null in other runs.
+  Value debug;
 };
 
 /// summary.json's text.

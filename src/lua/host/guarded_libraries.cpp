@@ -28,8 +28,8 @@ int GuardedResume(lua_State* L) {
     previous = g->running;
     g->running = co;
   }
-  if (co && lua_gethook(L) == GuardHook && lua_gethook(co) != GuardHook)
-    lua_sethook(co, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  if (co && lua_gethook(L) && (lua_gethook(co) != lua_gethook(L) || lua_gethookmask(co) != lua_gethookmask(L)))
+    InstallHook(g, co);
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_insert(L, 1);
   const int status = lua_pcall(L, lua_gettop(L) - 1, LUA_MULTRET, 0);

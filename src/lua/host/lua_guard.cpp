@@ -56,12 +56,22 @@ void RecordWhere(lua_State* L, LuaGuard* g) {
 // Re-armed if it was cleared (debug.sethook is refused now; kept as a backstop).
 // lua_sethook may be called asynchronously (ldebug.c).
 void Arm(LuaGuard* g) {
-  if (lua_gethook(g->state) != GuardHook) {
-    lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  if (!(lua_gethookmask(g->state) & LUA_MASKCOUNT)) {
     g->armed.store(true, std::memory_order_relaxed);
+    InstallHook(g, g->state);
   }
   std::lock_guard<std::mutex> lock(g->thread_mutex);
-  if (g->running && lua_gethook(g->running) != GuardHook) lua_sethook(g->running, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  if (g->running && !(lua_gethookmask(g->running) & LUA_MASKCOUNT)) InstallHook(g, g->running);
+}
+
+// The debugger's events and the guard's count through one hook.
+void DebugDispatchHook(lua_State* L, lua_Debug* ar) {
+  LuaGuard* g = GuardOf(L);
+  if (ar->event == LUA_HOOKCOUNT) {
+    GuardHook(L, ar);
+    return;
+  }
+  if (g->debugger) g->debugger->Hook(L, ar);
 }
 
 std::string StuckMessage(LuaGuard* g, double seconds) {
@@ -129,11 +139,11 @@ void BeginGuardedCall(LuaGuard* g, CallKind kind) {
   g->interrupted.store(false, std::memory_order_relaxed);
   g->stuck_reported.store(false, std::memory_order_relaxed);
   if (g->always_armed) {
-    if (lua_gethookcount(g->state) != kHookEvery || lua_gethook(g->state) != GuardHook)
-      lua_sethook(g->state, GuardHook, LUA_MASKCOUNT, kHookEvery);  // after a stop, or debug.sethook
+    if (lua_gethookcount(g->state) != kHookEvery || !(lua_gethookmask(g->state) & LUA_MASKCOUNT))
+      InstallHook(g, g->state);  // after a stop, or debug.sethook
   } else if (g->armed.load(std::memory_order_relaxed)) {
-    lua_sethook(g->state, nullptr, 0, 0);  // the last call ran long; this one starts unhooked
     g->armed.store(false, std::memory_order_relaxed);
+    InstallHook(g, g->state);  // the last call ran long; this one starts unhooked
   }
   g->call_started_ns.store(SteadyNowNs(), std::memory_order_relaxed);
   if (g->watchdog) {
@@ -141,6 +151,27 @@ void BeginGuardedCall(LuaGuard* g, CallKind kind) {
     g->outer = g->slot->guard.load(std::memory_order_relaxed);
     g->slot->guard.store(g, std::memory_order_release);
   }
+}
+
+void InstallHook(LuaGuard* g, lua_State* L) {
+  const int count = g->armed.load(std::memory_order_relaxed) || g->always_armed ? LUA_MASKCOUNT : 0;
+  if (g->debugger && g->debug_mask)
+    lua_sethook(L, DebugDispatchHook, g->debug_mask | count, kHookEvery);
+  else if (count)
+    lua_sethook(L, GuardHook, LUA_MASKCOUNT, kHookEvery);
+  else
+    lua_sethook(L, nullptr, 0, 0);
+}
+
+void SetDebugMask(LuaGuard* g, int mask) {
+  if (g->debug_mask == mask || !g->state) return;
+  g->debug_mask = mask;
+  InstallHook(g, g->state);
+}
+
+void TellDebuggerRaised(lua_State* L, const char* message) {
+  LuaGuard* g = GuardOf(L);
+  if (g && g->debugger) g->debugger->Raised(L, message);
 }
 
 std::string EndGuardedCall(LuaGuard* g, int status) {

@@ -27,6 +27,19 @@ class InputFiles;
 class Watchdog;
 struct WatchSlot;
 struct WrittenLines;
+struct LuaGuard;
+
+/// A debugger attached to a run's states (lua/debug implements it; essaim debug makes one):
+/// told of each state as it opens and closes, given the line and call events of the states
+/// it hooks (SetDebugMask) and each uncaught error at the raising point, before unwinding.
+class LuaDebugAttach {
+ public:
+  virtual ~LuaDebugAttach() = default;
+  virtual void StateOpened(lua_State* L, LuaGuard* guard) = 0;
+  virtual void StateClosed(LuaGuard* guard) = 0;
+  virtual void Hook(lua_State* L, lua_Debug* ar) = 0;
+  virtual void Raised(lua_State* L, const char* message) = 0;
+};
 
 /// The watchdog's limits, on by default (--lua-budget, --lua-init-budget, --lua-memory, <system>).
 /// A call running this long gets the count hook (and, after a signal, is interrupted). Short,
@@ -56,6 +69,8 @@ struct LuaOptions {
   Watchdog* watchdog = nullptr;
   /// Where controller scripts are compiled once and shared; null: each state parses its file.
   CompiledScripts* scripts = nullptr;
+  /// essaim debug's debugger; null in every other run.
+  LuaDebugAttach* debugger = nullptr;
 };
 
 /// One state's accounting. Its address is the allocator's user data: never moved.
@@ -117,6 +132,10 @@ struct LuaGuard {
   // thread that actually runs: hooks are per coroutine.
   std::mutex thread_mutex;
   lua_State* running = nullptr;
+  // essaim debug: the debugger and the events it asks for (LUA_MASKLINE, LUA_MASKCALL);
+  // its hook shares the state's one hook with the guard's count (InstallHook).
+  LuaDebugAttach* debugger = nullptr;
+  int debug_mask = 0;
 };
 
 /// A new state whose allocator is `guard`'s, with the hook installed (budget, interrupts).
@@ -144,6 +163,15 @@ void BeginGuardedCall(LuaGuard* guard, CallKind kind);
 /// script), returns the reason ("memory limit exceeded (256 MiB per Lua state)", ...),
 /// else "". `status` is lua_pcall's result.
 std::string EndGuardedCall(LuaGuard* guard, int status);
+
+/// Installs the state's one hook for what it needs now: the debugger's events (debug_mask),
+/// the guard's count when armed. On `L` (the state or one of its coroutines).
+void InstallHook(LuaGuard* guard, lua_State* L);
+/// The debugger's events for this state from now on (0: none).
+void SetDebugMask(LuaGuard* guard, int mask);
+/// The debugger (if any) sees an uncaught error at its raising point: called by the
+/// message handlers of controllers and loop functions.
+void TellDebuggerRaised(lua_State* L, const char* message);
 
 /// Under the sandbox, an error that met a nil io, os, debug, dofile or loadfile ("attempt
 /// to index a nil value (global 'io')") says why, at the end of its first line.

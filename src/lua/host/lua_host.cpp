@@ -24,12 +24,18 @@ lua_State* NewGuardedState(LuaGuard* guard, const LuaOptions& options) {
     lua_sethook(L, GuardHook, LUA_MASKCOUNT, kHookEvery);
   }
   guard->watchdog = options.watchdog;
+  if (options.debugger) {
+    guard->debugger = options.debugger;
+    options.debugger->StateOpened(L, guard);
+  }
   return L;
 }
 
 void CloseGuardedState(LuaGuard* guard) {
   if (!guard->state) return;
   if (guard->watchdog) guard->watchdog->Forget(guard);
+  if (guard->debugger) guard->debugger->StateClosed(guard);
+  guard->debugger = nullptr;
   guard->watchdog = nullptr;
   lua_close(guard->state);
   guard->state = nullptr;

@@ -36,6 +36,7 @@ int Traceback(lua_State* L) {
     const std::string hint = FieldHint(L, msg, "experiment");
     if (!hint.empty()) msg = lua_pushfstring(L, "%s%s", msg, hint.c_str());
   }
+  TellDebuggerRaised(L, msg ? msg : lua_tostring(L, 1));
   luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
   return 1;
 }

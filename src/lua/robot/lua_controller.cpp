@@ -50,6 +50,7 @@ int Traceback(lua_State* L) {
     const std::string hint = FieldHint(L, msg, "robot", DeviceFields());
     if (!hint.empty()) msg = lua_pushfstring(L, "%s%s", msg, hint.c_str());
   }
+  TellDebuggerRaised(L, msg ? msg : lua_tostring(L, 1));
   luaL_traceback(L, L, msg, 1);
   return 1;
 }

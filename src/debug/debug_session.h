@@ -1,0 +1,123 @@
+// One `essaim debug` session on the simulation's side: the client's requests served before
+// the run (initialize, launch, breakpoints, configurationDone), between ticks (pause, new
+// breakpoints) and while a thread is stopped (stack, scopes, variables, evaluate, set,
+// stepping); the stops at tick boundaries (pause, entry, run to tick) and in Lua (through
+// lua/debug's hook). One thread: a stop inside a robot's hook serves the client until a resume.
+#pragma once
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/value.h"
+#include "debug/dap_channel.h"
+#include "lua/debug/lua_debugger.h"
+
+namespace essaim {
+
+class World;
+
+/// What the launch request tells the session, once the command line made its model.
+struct DebugLaunch {
+  std::string experiment_dir;               // canonical: relative breakpoint paths start here
+  std::vector<std::string> scripts;         // canonical: controllers' and Lua loop functions'
+  std::vector<std::string> robot_ids;       // model order: thread i + 2
+  bool lua_loop_functions = false;          // thread 1 exists
+  bool stop_on_entry = false;
+};
+
+class DebugSession : public DebugListener {
+ public:
+  /// `launch` loads the experiment the launch request names (its arguments) into `*out`;
+  /// false with the message for the client.
+  using Launcher = std::function<bool(const Value& arguments, DebugLaunch* out, std::string* error)>;
+  DebugSession(DapChannel& channel, Launcher launcher);
+
+  /// Serves the client until configurationDone (true) or until it goes (false).
+  bool Configure();
+  LuaDebugger& Debugger() { return debugger_; }
+  /// The World once made (its states are attached as they open); null after it goes.
+  void SetWorld(World* world) { world_ = world; }
+  /// At the boundary before tick world.tick + 1: requests served, the stops there made.
+  /// False: the client asked to end the run.
+  bool BeforeTick(World& world);
+  /// A log line of the run, as an output event.
+  void LogLine(char stream, const std::string& line);
+  /// summary.json's "debug": the divergences.
+  Value Record() const;
+  /// The run ended with `exit_code`: exited and terminated events, then the client's
+  /// disconnect awaited (a few seconds at most).
+  void Ended(int exit_code);
+
+  // DebugListener
+  void Stopped(int thread, lua_State* L, const StopInfo& why) override;
+  void Console(const std::string& text) override;
+
+ private:
+  enum class After { Stay, Resume };
+  struct Stop {
+    bool active = false;
+    bool boundary = false;
+    int thread = 0;
+    lua_State* L = nullptr;
+    int first_level = 0;
+  };
+  struct Handle {
+    enum class Kind { Locals, Upvalues, Globals, Table } kind;
+    int thread = 0;
+    int level = -1;
+    int ref = -1;
+  };
+
+  After Dispatch(const Value& request);
+  void ServeStopped();
+  void BoundaryStop(const std::string& reason, int thread, const std::string& description);
+  void SendStopped(const std::string& reason, int thread, const std::string& description, const std::string& text);
+  void Release();
+
+  // Requests, one function each (debug_requests.cpp).
+  void Initialize(const Value& request);
+  void Launch(const Value& request);
+  void SetBreakpoints(const Value& request);
+  void SetFunctionBreakpoints(const Value& request);
+  void SetExceptionBreakpoints(const Value& request);
+  void Threads(const Value& request);
+  void StackTrace(const Value& request);
+  void Scopes(const Value& request);
+  void Variables(const Value& request);
+  void Evaluate(const Value& request);
+  void SetVariable(const Value& request);
+  After Resume(const Value& request, StepMode mode);
+  After RunToTick(const Value& request);
+  void Pause(const Value& request);
+  After Terminate(const Value& request);
+  After Disconnect(const Value& request);
+  void GoBack(const Value& request);
+
+  std::string FilePath(const std::string& path) const;
+  bool FileRuns(const std::string& canonical) const;
+  lua_State* StateFor(int thread, int level) const;
+  int NewHandle(Handle h);
+  Value VariableJson(int thread, const struct LuaVariable& v);
+  std::string ThreadName(int thread) const;
+  long long BoundaryTick() const;
+
+  DapChannel& channel_;
+  Launcher launcher_;
+  LuaDebugger debugger_;
+  DebugLaunch launch_;
+  World* world_ = nullptr;
+  bool configured_ = false;
+  bool launched_ = false;
+  bool terminate_ = false;
+  bool detached_ = false;
+  int pause_thread_ = 0;  // a pause asked while running (thread), or 0
+  long long run_to_tick_ = 0;
+  Stop stop_;
+  int last_thread_ = 0;
+  std::vector<Handle> handles_;  // variablesReference - 1
+  int next_breakpoint_id_ = 1;
+  std::vector<Value> divergences_;
+};
+
+}  // namespace essaim
