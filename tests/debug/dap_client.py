@@ -343,6 +343,11 @@ class DapClient:
     def close_connection(self) -> None:
         """Drops the connection as an editor that crashed would (no disconnect request)."""
         if self._sock is not None:
+            # shutdown sends the FIN now: close() alone waits for the reader's recv to return
+            try:
+                self._sock.shutdown(socket.SHUT_RDWR)
+            except OSError:
+                pass
             self._sock.close()
         elif self.proc.stdin:
             self.proc.stdin.close()

@@ -68,10 +68,9 @@ def test_a_conditional_breakpoint_stops_that_robot_at_that_tick_with_the_values_
         assert number(reading["angle"]) == pytest.approx(angle, rel=1e-12, abs=1e-12), i
 
     # robot.positioning: the pose the recording has for that robot at that tick (± its unit).
-    position = dap.variables(dap.variables(robot["positioning"]["variablesReference"])["position"]
-                             ["variablesReference"])
     x, y, _ = frames[17][ids.index("fb3")]
-    assert abs(number(position["x"]) - x) <= unit and abs(number(position["y"]) - y) <= unit
+    assert abs(float(dap.value("robot.positioning.position.x", top["id"])) - x) <= unit
+    assert abs(float(dap.value("robot.positioning.position.y", top["id"])) - y) <= unit
 
     assert dap.run_to_end(stop["threadId"]) == 0
     assert len(dap.events_named("stopped")) == 1  # the condition held once

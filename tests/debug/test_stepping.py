@@ -24,7 +24,7 @@ def snapshot(dap, thread) -> str:
     return dap.value(
         '(function() local s = string.format("%d %.17g %.17g", tick, robot.positioning.position.x, '
         'robot.positioning.position.y) for i = 1, #robot.proximity do '
-        's = s .. string.format(" %.17g", robot.proximity[i].value) end return s end)()', frame)
+        's = s .. string.format(" %.17g", robot.proximity[i].value) end return s end)()', frame).strip('"')
 
 
 def test_step_over_in_and_out_land_on_the_expected_lines(argos, tmp_path, session):
@@ -148,10 +148,10 @@ def test_stop_on_entry_and_run_to_tick_stop_at_tick_boundaries(essaim, argos, tm
     assert not {"string", "math", "table", "coroutine"} & set(glob)  # ... not the standard libraries
     # readings of tick 24, the last sensed: the recording's pose of that tick
     robot = dap.variables(scopes["robot"])
-    position = dap.variables(dap.variables(robot["positioning"]["variablesReference"])["position"]
-                             ["variablesReference"])
+    assert robot["id"]["value"] == '"fb3"' and "positioning" in robot and "proximity" in robot
     x, y, _ = frames[24][ids.index("fb3")]
-    assert abs(float(position["x"]["value"]) - x) <= unit and abs(float(position["y"]["value"]) - y) <= unit
+    assert abs(float(dap.value("robot.positioning.position.x", frame["id"])) - x) <= unit
+    assert abs(float(dap.value("robot.positioning.position.y", frame["id"])) - y) <= unit
     # the loop functions' thread has its globals only
     [frame] = dap.frames(1)
     assert frame["name"] == "before tick 25" and set(dap.scopes(frame["id"])) == {"Globals"}
