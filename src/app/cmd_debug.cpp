@@ -14,6 +14,7 @@
 #include "app/run_command.h"
 #include "app/run_session.h"
 #include "debug/dap_channel.h"
+#include "debug/debug_front.h"
 #include "debug/debug_session.h"
 
 namespace essaim {
@@ -116,6 +117,13 @@ int Debug(DebugArgs& a) {
     return ApplyLaunchArguments(arguments, &run, message) && DescribeLaunch(run, arguments, launch, message);
   });
   if (!session.Configure()) return kExitOk;  // the client left before the run started
+  // From here this process is the front; the run happens in the simulation it forks.
+  const pid_t front = getpid();
+  FrontLink link;
+  const int front_code = StartFront(in, out, &link);
+  if (front_code >= 0) return front_code;
+  channel.Rebind(link.sim_socket);
+  session.EnableGoingBack(front);
   RunSession run_session;
   const RunHooks hooks = DebugHooks(session, run);
   std::vector<std::string> inputs;
@@ -123,7 +131,8 @@ int Debug(DebugArgs& a) {
   const int code = RunExperiment(run_session, run, &inputs, &hooks);
   std::fflush(stdout);
   session.Ended(code);
-  return code;
+  session.EndCheckpoints();
+  EndSimulation(link, code);  // no destructors: a forked copy has no watchdog thread to join
 }
 }  // namespace
 

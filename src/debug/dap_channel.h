@@ -21,6 +21,13 @@ class DapChannel {
   /// Sends one message; its "seq" is set here. False once the client is gone.
   bool Send(Value message);
   bool Closed() const { return closed_; }
+  /// For the copy that takes over after a going back: the socket it reads, the bytes read
+  /// and not yet taken, the last seq sent.
+  void Rebind(int fd) { in_ = out_ = fd; }
+  const std::string& Unread() const { return buffer_; }
+  void SetUnread(std::string bytes) { buffer_ = std::move(bytes); }
+  long long Seq() const { return seq_; }
+  void SetSeq(long long seq) { seq_ = seq; }
 
   /// A response to `request` (success, or failure with `message`).
   bool Respond(const Value& request, Value body, bool success = true, const std::string& message = "");

@@ -79,10 +79,10 @@ bool DebugSession::FileRuns(const std::string& canonical) const {
   return false;
 }
 
-void DebugSession::SetBreakpoints(const Value& request) {
-  const Value& args = ObjectField(request, "arguments");
+std::vector<LineBreakpoint> DebugSession::ApplyBreakpoints(const Value& args, std::string* file) {
   const std::string path = StringField(ObjectField(args, "source"), "path");
-  const std::string file = FilePath(path);
+  *file = FilePath(path);
+  asked_breakpoints_[path] = args;
   std::vector<LineBreakpoint> asked;
   if (const Value* list = args.Find("breakpoints"))
     for (const Value& b : list->list) {
@@ -93,8 +93,13 @@ void DebugSession::SetBreakpoints(const Value& request) {
       bp.log_message = StringField(b, "logMessage");
       asked.push_back(bp);
     }
-  const std::string why_not = file + ": no controller or loop function of this experiment runs this file";
-  const std::vector<LineBreakpoint> set = debugger_.SetBreakpoints(file, asked, FileRuns(file), why_not);
+  const std::string why_not = *file + ": no controller or loop function of this experiment runs this file";
+  return debugger_.SetBreakpoints(*file, asked, FileRuns(*file), why_not);
+}
+
+void DebugSession::SetBreakpoints(const Value& request) {
+  std::string file;
+  const std::vector<LineBreakpoint> set = ApplyBreakpoints(ObjectField(request, "arguments"), &file);
   Value out = Value::EmptyList();
   for (const LineBreakpoint& bp : set) {
     Value b = Value::MapOf({{"id", Int(next_breakpoint_id_++)},
@@ -107,13 +112,32 @@ void DebugSession::SetBreakpoints(const Value& request) {
   channel_.Respond(request, Value::MapOf({{"breakpoints", std::move(out)}}));
 }
 
-void DebugSession::SetFunctionBreakpoints(const Value& request) {
+std::vector<FunctionBreakpoint> DebugSession::ApplyFunctionBreakpoints(const Value& args) {
+  asked_functions_ = args;
   std::vector<FunctionBreakpoint> asked;
-  if (const Value* list = ObjectField(request, "arguments").Find("breakpoints"))
-    for (const Value& b : list->list)
-      asked.push_back({StringField(b, "name"), StringField(b, "condition"), StringField(b, "hitCondition")});
+  if (const Value* list = args.Find("breakpoints"))
+    for (const Value& b : list->list) {
+      FunctionBreakpoint bp;
+      bp.name = StringField(b, "name");
+      bp.condition = StringField(b, "condition");
+      bp.hit_condition = StringField(b, "hitCondition");
+      asked.push_back(bp);
+    }
+  return debugger_.SetFunctionBreakpoints(asked);
+}
+
+bool DebugSession::ApplyExceptionBreakpoints(const Value& args) {
+  asked_exceptions_ = args;
+  bool on = false;
+  if (const Value* filters = args.Find("filters"))
+    for (const Value& f : filters->list) on = on || f.text == "error";
+  debugger_.SetBreakOnError(on);
+  return on;
+}
+
+void DebugSession::SetFunctionBreakpoints(const Value& request) {
   Value out = Value::EmptyList();
-  for (const FunctionBreakpoint& bp : debugger_.SetFunctionBreakpoints(asked)) {
+  for (const FunctionBreakpoint& bp : ApplyFunctionBreakpoints(ObjectField(request, "arguments"))) {
     Value b = Value::MapOf({{"id", Int(next_breakpoint_id_++)}, {"verified", Value::OfBool(bp.verified)}});
     if (!bp.message.empty()) b.Set("message", Str(bp.message));
     out.list.push_back(std::move(b));
@@ -122,12 +146,9 @@ void DebugSession::SetFunctionBreakpoints(const Value& request) {
 }
 
 void DebugSession::SetExceptionBreakpoints(const Value& request) {
-  bool on = false;
-  if (const Value* filters = ObjectField(request, "arguments").Find("filters"))
-    for (const Value& f : filters->list) on = on || f.text == "error";
-  debugger_.SetBreakOnError(on);
   Value out = Value::EmptyList();
-  if (on) out.list.push_back(Value::MapOf({{"verified", Value::OfBool(true)}}));
+  if (ApplyExceptionBreakpoints(ObjectField(request, "arguments")))
+    out.list.push_back(Value::MapOf({{"verified", Value::OfBool(true)}}));
   channel_.Respond(request, Value::MapOf({{"breakpoints", std::move(out)}}));
 }
 
@@ -293,11 +314,23 @@ DebugSession::After DebugSession::Resume(const Value& request, StepMode mode) {
 DebugSession::After DebugSession::RunToTick(const Value& request) {
   const long long tick = IntField(ObjectField(request, "arguments"), "tick");
   const long long now = stop_.boundary ? BoundaryTick() : debugger_.Tick() + 1;
-  if (tick < now) {
-    channel_.Respond(request, Value(), false,
-                     "runToTick: tick " + std::to_string(tick) + " is behind (the next boundary is before tick " +
-                         std::to_string(now) + ")");
+  if (tick < 1) {
+    channel_.Respond(request, Value(), false, "runToTick: tick must be >= 1");
     return After::Stay;
+  }
+  if (tick < now || (tick == now && stop_.boundary)) {
+    if (!checkpoints_ || checkpoints_->NewestAtOrBefore(tick - 1) < 0) {
+      channel_.Respond(request, Value(), false, "runToTick: cannot go back in this session");
+      return After::Stay;
+    }
+    channel_.Respond(request, Value());
+    Replay target;
+    target.kind = "boundary";
+    target.tick = tick;
+    target.thread = last_thread_ ? last_thread_ : stop_.thread;
+    target.reason = "goto";
+    target.description = "before tick " + std::to_string(tick);
+    GoTo(target, tick - 1);
   }
   run_to_tick_ = tick;
   debugger_.Resume(StepMode::None, 0, nullptr);
@@ -328,8 +361,5 @@ DebugSession::After DebugSession::Disconnect(const Value& request) {
   return After::Resume;
 }
 
-void DebugSession::GoBack(const Value& request) {
-  channel_.Respond(request, Value(), false, "going back is not available in this session");
-}
 
 }  // namespace essaim

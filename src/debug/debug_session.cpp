@@ -94,13 +94,15 @@ void DebugSession::ServeStopped() {
 
 void DebugSession::Stopped(int thread, lua_State* L, const StopInfo& why) {
   if (detached_) return;
-  stop_ = {true, false, thread, L, why.first_level};
+  if (replay_.active) FinishReplay();
+  stop_ = {true, false, thread, L, why.first_level, why.reason};
   SendStopped(why.reason, thread, why.description, why.text);
   ServeStopped();
 }
 
 void DebugSession::BoundaryStop(const std::string& reason, int thread, const std::string& description) {
-  stop_ = {true, true, thread, nullptr, 0};
+  if (replay_.active) FinishReplay();
+  stop_ = {true, true, thread, nullptr, 0, reason};
   SendStopped(reason, thread, description, "");
   ServeStopped();
 }
@@ -110,6 +112,14 @@ long long DebugSession::BoundaryTick() const { return world_ ? static_cast<long 
 bool DebugSession::BeforeTick(World& world) {
   world_ = &world;
   debugger_.SetTick(static_cast<long long>(world.tick));
+  std::string order;
+  if (checkpoints_ && divergences_.empty() && !detached_ && !terminate_ && checkpoints_->Due() &&
+      checkpoints_->Take(static_cast<long long>(world.tick), &order))
+    TakeOrder(order);  // this process is now the live simulation, going back
+  if (replay_.active && !ReplayBoundary()) {
+    debugger_.SetTick(BoundaryTick());
+    return true;
+  }
   while (!detached_ && !terminate_ && channel_.Pending()) {
     Value request;
     bool closed = false;
@@ -136,7 +146,7 @@ bool DebugSession::BeforeTick(World& world) {
 }
 
 void DebugSession::LogLine(char stream, const std::string& line) {
-  if (detached_) return;
+  if (detached_ || replay_.active) return;  // a going back's lines were sent the first time
   channel_.Output(stream == 'E' ? "stderr" : "stdout", line + "\n");
 }
 

@@ -6,10 +6,12 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/value.h"
+#include "debug/checkpoints.h"
 #include "debug/dap_channel.h"
 #include "lua/debug/lua_debugger.h"
 
@@ -45,6 +47,11 @@ class DebugSession : public DebugListener {
   void LogLine(char stream, const std::string& line);
   /// summary.json's "debug": the divergences.
   Value Record() const;
+  /// From now on checkpoints are taken, so that stepBack, reverseContinue and runToTick
+  /// can go back (this process is a simulation forked by the front `front`).
+  void EnableGoingBack(pid_t front);
+  /// Ends the checkpoints (the run is over).
+  void EndCheckpoints();
   /// The run ended with `exit_code`: exited and terminated events, then the client's
   /// disconnect awaited (a few seconds at most).
   void Ended(int exit_code);
@@ -52,6 +59,7 @@ class DebugSession : public DebugListener {
   // DebugListener
   void Stopped(int thread, lua_State* L, const StopInfo& why) override;
   void Console(const std::string& text) override;
+  bool Fired(long long tick, long long index) override;
 
  private:
   enum class After { Stay, Resume };
@@ -61,6 +69,20 @@ class DebugSession : public DebugListener {
     int thread = 0;
     lua_State* L = nullptr;
     int first_level = 0;
+    std::string reason;
+  };
+  /// A going back under way in this process: re-simulating silently from a checkpoint to
+  /// the target (kind "boundary", "entry", "fire"), or searching for the last breakpoint hit
+  /// before (tick, fire) (kind "search").
+  struct Replay {
+    bool active = false;
+    std::string kind;
+    long long tick = 0, fire = 0;  // the target, or the search's end
+    int thread = 0;
+    std::string reason, description;
+    long long from_tick = 0;                // the checkpoint's boundary
+    long long found_tick = -1, found_fire = 0;  // a search's last hit so far
+    size_t divergences = 0;                 // how many the process that went back had
   };
   struct Handle {
     enum class Kind { Locals, Upvalues, Globals, Table } kind;
@@ -79,6 +101,9 @@ class DebugSession : public DebugListener {
   void Initialize(const Value& request);
   void Launch(const Value& request);
   void SetBreakpoints(const Value& request);
+  std::vector<LineBreakpoint> ApplyBreakpoints(const Value& arguments, std::string* file);
+  std::vector<FunctionBreakpoint> ApplyFunctionBreakpoints(const Value& arguments);
+  bool ApplyExceptionBreakpoints(const Value& arguments);
   void SetFunctionBreakpoints(const Value& request);
   void SetExceptionBreakpoints(const Value& request);
   void Threads(const Value& request);
@@ -93,6 +118,13 @@ class DebugSession : public DebugListener {
   After Terminate(const Value& request);
   After Disconnect(const Value& request);
   void GoBack(const Value& request);
+  // Going back (debug_going_back.cpp).
+  Value OrderFor(const Replay& target) const;
+  [[noreturn]] void GoTo(const Replay& target, long long checkpoint_tick);
+  void TakeOrder(const std::string& order);
+  void ConcludeSearch();
+  void FinishReplay();
+  bool ReplayBoundary();
 
   std::string FilePath(const std::string& path) const;
   bool FileRuns(const std::string& canonical) const;
@@ -118,6 +150,10 @@ class DebugSession : public DebugListener {
   std::vector<Handle> handles_;  // variablesReference - 1
   int next_breakpoint_id_ = 1;
   std::vector<Value> divergences_;
+  std::unique_ptr<Checkpoints> checkpoints_;
+  Replay replay_;
+  std::map<std::string, Value> asked_breakpoints_;  // by source path as asked: the request's arguments
+  Value asked_functions_, asked_exceptions_;
 };
 
 }  // namespace essaim

@@ -89,7 +89,7 @@ LuaDebugger::Thread* LuaDebugger::ThreadOf(lua_State* L) {
 int LuaDebugger::MaskFor(const Thread& t) const {
   if (detached_) return 0;
   int mask = 0;
-  if (!breakpoint_lines_.empty()) mask |= LUA_MASKLINE;
+  if (!breakpoint_lines_.empty() || entry_thread_ == t.id) mask |= LUA_MASKLINE;
   if (step_.mode != StepMode::None && step_.thread == t.id) mask |= LUA_MASKLINE;
   if (!function_breakpoints_.empty()) mask |= LUA_MASKCALL | LUA_MASKLINE;
   return mask;
@@ -200,7 +200,7 @@ bool LuaDebugger::ConditionHolds(lua_State* L, const std::string& condition, con
   bool truth = false;
   std::string error;
   if (EvaluateTruth(L, 0, condition, tick_, &truth, &error)) return truth;
-  listener_->Console(Prefix(t) + "condition error: " + error + "\n");
+  if (!quiet_) listener_->Console(Prefix(t) + "condition error: " + error + "\n");
   return false;
 }
 
@@ -233,12 +233,15 @@ bool LuaDebugger::BreakpointFires(lua_State* L, const std::string& file, int lin
     std::string error;
     if (!bp.hit_condition.empty()) HitConditionPasses(bp.hit_condition, bp.hits, &passes, &error);
     if (!passes) continue;
-    if (bp.log_message.empty())
-      fires = true;
-    else
-      listener_->Console(Prefix(*t) + Interpolate(L, bp.log_message, tick_) + "\n");
+    if (!bp.log_message.empty()) {
+      if (!quiet_) listener_->Console(Prefix(*t) + Interpolate(L, bp.log_message, tick_) + "\n");
+      continue;
+    }
+    if (fires) continue;
+    fires = true;
+    if (listener_->Fired(tick_, ++fires_)) quiet_ = false;  // a going back's target
   }
-  return fires;
+  return fires && !quiet_;
 }
 
 bool LuaDebugger::StepDone(lua_State* L) const {
@@ -288,10 +291,33 @@ void LuaDebugger::OnLine(lua_State* L, lua_Debug* ar, Thread* t) {
     Stop(t, L, {"breakpoint", "breakpoint", "", 0});
 }
 
+void LuaDebugger::SetEntryTarget(int thread, long long tick) {
+  entry_thread_ = thread;
+  entry_tick_ = tick;
+  UpdateMasks();
+}
+
+void LuaDebugger::ForgetWatchdog() {
+  for (auto& [guard, t] : threads_) guard->watchdog = nullptr;
+}
+
 void LuaDebugger::Hook(lua_State* L, lua_Debug* ar) {
-  if (quiet_ || detached_) return;
+  if (detached_) return;
   Thread* t = ThreadOf(L);
   if (!t) return;
+  if (entry_thread_ == t->id && tick_ == entry_tick_ && ar->event == LUA_HOOKLINE) {
+    entry_thread_ = 0;
+    return Stop(t, L, {"step", "step back", "", 0});
+  }
+  // Quiet (re-simulating to a going back's target): breakpoints are still counted.
+  if (quiet_) {
+    if (ar->event == LUA_HOOKLINE && breakpoint_lines_.count(ar->currentline)) {
+      lua_getinfo(L, "S", ar);
+      if (BreakpointFires(L, CanonicalSource(ar->source), ar->currentline, t))
+        Stop(t, L, {"breakpoint", "breakpoint", "", 0});
+    }
+    return;
+  }
   if (ar->event == LUA_HOOKCALL) {
     if (!function_breakpoints_.empty()) OnCall(L, t);
     return;

@@ -53,6 +53,9 @@ class DebugListener {
   virtual void Stopped(int thread, lua_State* L, const StopInfo& why) = 0;
   /// A logpoint's or a failed condition's text ("fb7 tick 42: ...\n").
   virtual void Console(const std::string& text) = 0;
+  /// A breakpoint fired: the `index`th (from 1) of this tick, counted over all threads;
+  /// true: stop there even while quiet (a going back's target).
+  virtual bool Fired(long long tick, long long index) = 0;
 };
 
 class LuaDebugger : public LuaDebugAttach {
@@ -73,7 +76,16 @@ class LuaDebugger : public LuaDebugAttach {
   std::vector<const Thread*> Threads() const;
 
   /// The tick log lines show now (conditions' `tick`, logpoints' prefix, stepping).
-  void SetTick(long long tick) { tick_ = tick; }
+  void SetTick(long long tick) {
+    if (tick != tick_) fires_ = 0;
+    tick_ = tick;
+  }
+  /// Breakpoints fired so far in this tick (a position in it, for going back).
+  long long FiresThisTick() const { return fires_; }
+  /// Stops (reason "step") at the first line `thread` runs in tick `tick`, quiet or not.
+  void SetEntryTarget(int thread, long long tick);
+  /// The states are no longer watched (a forked copy has no watchdog thread).
+  void ForgetWatchdog();
   long long Tick() const { return tick_; }
 
   /// Replaces `file`'s breakpoints (its canonical path); `runs`: a controller or loop function
@@ -126,6 +138,9 @@ class LuaDebugger : public LuaDebugAttach {
   bool quiet_ = false;
   bool detached_ = false;
   long long tick_ = 0;
+  long long fires_ = 0;
+  int entry_thread_ = 0;
+  long long entry_tick_ = 0;
   struct Stepping {
     StepMode mode = StepMode::None;
     int thread = 0;
