@@ -89,12 +89,11 @@ def test_step_back_returns_to_the_previous_tick_with_the_values_seen_there(essai
         assert stop["reason"] == "breakpoint" and snapshot(dap, fb2) == seen[tick]
 
     # from a tick boundary: back to the robot's step() one tick earlier
+    dap.set_breakpoints(script, [])
     stop = dap.resume("runToTick", fb2, tick=20)
     assert stop["reason"] == "goto"
     stop = dap.resume("stepBack", fb2)
     assert where(dap, fb2) == ("foraging.lua", first, "step") and snapshot(dap, fb2).split()[0] == "18"
-
-    dap.set_breakpoints(script, [])
     assert dap.run_to_end(fb2) == 0
     assert (tmp_path / "dbg" / "recording.bin").read_bytes() == (tmp_path / "ref" / "recording.bin").read_bytes()
 
