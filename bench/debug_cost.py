@@ -5,9 +5,12 @@
    ticks, the process's CPU time (user + system) less that of a 1-tick run of the same kind
    (loading, init(), outputs), best of --repeat;
 2. going back one tick in the middle of a long run: a session paused before tick --at of a
-   --ticks run (runToTick), then stepBack on a robot's thread, timed from the request to
-   its stopped event (wall time: the client waits for it), --steps times in a row (each one
-   tick further back), and the time the runToTick itself took.
+   --back-ticks run (runToTick), then stepBack on a robot's thread, timed from the request
+   to its stopped event, --steps times in a row (each one tick further back): the wall time
+   the client waits, and the CPU time of the session's processes (the front process that
+   holds the connection, the simulation, its checkpoints: essaim forks one every 0.2 s of
+   CPU time and a step back wakes the newest one before the target, which re-simulates);
+   also the runToTick itself.
 
 Figures go to stdout with the machine (lscpu's model) and the load average.
 
@@ -69,23 +72,39 @@ def best_net(measure, essaim, ticks, seed, folder, repeat) -> float:
     return min(net)
 
 
+def session_cpu(marker: str) -> float:
+    """CPU seconds (utime, stime and what they reaped) of every process whose command line
+    holds `marker` (the session's --out folder): the front process, the simulation and its
+    checkpoints, which outlive the simulation they were forked from (reparented to init)."""
+    total = 0
+    for entry in Path("/proc").iterdir():
+        try:
+            if not entry.name.isdigit() or marker.encode() not in (entry / "cmdline").read_bytes():
+                continue
+            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        total += sum(int(x) for x in fields[11:15])
+    return total / os.sysconf("SC_CLK_TCK")
+
+
 def step_back_times(essaim, ticks, at, steps, seed, folder):
-    """(seconds of runToTick `at`, [seconds of each stepBack])."""
-    dap = DapClient.stdio(essaim, [ARGOS, "--ticks", ticks, "--seed", seed, "--out", folder / "back"],
-                          cwd=folder, timeout=3600)
+    """((wall, CPU) seconds of runToTick `at`, [(wall, CPU) seconds of each stepBack])."""
+    out = folder / "back"
+    dap = DapClient.stdio(essaim, [ARGOS, "--ticks", ticks, "--seed", seed, "--out", out], cwd=folder, timeout=3600)
     try:
         dap.start(stop_on_entry=True)
         thread = dap.stopped()["threadId"]
         robot = min(t for t in dap.threads().values() if t >= 2)  # the first robot's thread
-        t0 = time.perf_counter()
+        cpu0, t0 = session_cpu(str(out)), time.perf_counter()
         stop = dap.resume("runToTick", thread, tick=at)
-        forward = time.perf_counter() - t0
+        forward = (time.perf_counter() - t0, session_cpu(str(out)) - cpu0)
         assert stop["reason"] == "goto", stop
         back = []
         for _ in range(steps):
-            t0 = time.perf_counter()
+            cpu0, t0 = session_cpu(str(out)), time.perf_counter()
             stop = dap.resume("stepBack", robot)
-            back.append(time.perf_counter() - t0)
+            back.append((time.perf_counter() - t0, session_cpu(str(out)) - cpu0))
             assert stop["reason"] == "step", stop
         dap.request("terminate")
         dap.finish(timeout=3600)
@@ -128,10 +147,13 @@ def main():
         print(f"  essaim run    {run:8.3f}")
         print(f"  essaim debug  {dbg:8.3f}   debug/run {dbg / run:5.2f}")
         forward, back = step_back_times(essaim, a.back_ticks, a.at, a.steps, a.seed, folder)
-        print(f"step back at tick {a.at} of a {a.back_ticks}-tick run, wall s:")
-        print(f"  runToTick {a.at} from tick 0   {forward:8.3f}")
-        print(f"  stepBack (each)              {' '.join(f'{t:.3f}' for t in back)}"
-              f"   median {statistics.median(back):.3f}  max {max(back):.3f}")
+        walls, cpus = [w for w, _ in back], [c for _, c in back]
+        print(f"step back at tick {a.at} of a {a.back_ticks}-tick run (the first robot's thread):")
+        print(f"  runToTick {a.at} from tick 0: wall s {forward[0]:.3f}, CPU s {forward[1]:.3f}")
+        print(f"  stepBack, wall s (each)  {' '.join(f'{t:.3f}' for t in walls)}"
+              f"   median {statistics.median(walls):.3f}  max {max(walls):.3f}")
+        print(f"  stepBack, CPU s (each)   {' '.join(f'{t:.3f}' for t in cpus)}"
+              f"   median {statistics.median(cpus):.3f}  (the session's processes, clock ticks of 10 ms)")
     print(f"# load average after {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 

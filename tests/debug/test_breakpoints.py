@@ -189,3 +189,23 @@ def test_bad_breakpoints_are_reported_and_do_not_stop_the_run(argos, tmp_path, s
     assert len(errors) == ROBOTS * 40, errors[:3]
     assert errors[0].startswith("fb0 tick 1: condition error: ") and "nothing" in errors[0]
     assert (tmp_path / "dbg" / "summary.json").exists()
+
+
+def test_a_breakpoint_in_the_loop_functions_stops_their_thread_where_tick_is_the_current_tick(
+        argos, tmp_path, session):
+    loop = argos.parent / "foraging_loop.lua"
+    line = line_of(loop, "local tick = experiment.tick")  # pre_step(): no `tick` in scope yet
+    dap = session([argos, *SHORT, "--out", tmp_path / "dbg"])
+    [bp] = dap.start(breakpoints={loop: [{"line": line, "condition": "tick == 7"}]})["breakpoints"][loop]
+    assert bp["verified"] and bp["line"] == line
+    stop = dap.stopped()
+    assert stop["reason"] == "breakpoint" and stop["threadId"] == 1
+    top = dap.frames(1)[0]
+    assert top["line"] == line and top["source"]["path"] == str(loop)
+    assert dap.value("experiment.tick", top["id"]) == "7"
+    assert "robot" not in dap.scopes(top["id"])  # the loop functions have no robot table
+    dap.request("next", {"threadId": 1})
+    dap.stopped()
+    assert dap.variables(dap.scopes(dap.frames(1)[0]["id"])["Locals"])["tick"]["value"] == "7"
+    dap.set_breakpoints(loop, [])
+    assert dap.run_to_end(1) == 0

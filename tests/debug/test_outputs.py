@@ -171,3 +171,25 @@ def test_the_experiment_and_options_may_come_from_the_launch_request(essaim, arg
     assert dap.finish() == 0
     same_run(tmp_path / "ref", tmp_path / "dbg")
     assert summary(tmp_path / "dbg")["experiment"] == "arenas/foraging.argos"
+
+
+def test_going_back_before_a_divergence_drops_it(essaim, argos, tmp_path, session):
+    essaim_run(essaim, argos, SHORT + ["--record"], tmp_path / "ref", tmp_path)
+    script = controller(argos)
+    dap = session([argos, *SHORT, "--record", "--out", tmp_path / "dbg"])
+    dap.start(breakpoints={script: [{"line": line_of(script, WHEELS), "condition": 'robot.id == "fb2" and tick == 10'}]})
+    fb2 = dap.stopped()["threadId"]
+    frame = dap.frames(fb2)[0]["id"]
+    actions = dap.variables(dap.scopes(frame)["Locals"])["actions"]["variablesReference"]
+    dap.request("setVariable", {"variablesReference": actions, "name": "left", "value": "0"})
+    dap.set_breakpoints(script, [])
+    assert dap.resume("runToTick", fb2, tick=15)["reason"] == "goto"
+    before = len(dap.outputs("console"))
+    # back to fb2's step() at tick 10, then 9: before the change, which is dropped, and said so
+    for _ in range(6):
+        assert dap.resume("stepBack", fb2)["reason"] == "step"
+    assert dap.value("tick", dap.frames(fb2)[0]["id"]) == "8"  # first line of tick 9's step()
+    assert any("diverg" in t for t in dap.outputs("console")[before:]), dap.outputs("console")[before:]
+    assert dap.run_to_end(fb2) == 0
+    assert summary(tmp_path / "dbg")["debug"] == {"divergences": []}
+    same_run(tmp_path / "ref", tmp_path / "dbg")
