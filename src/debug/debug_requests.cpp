@@ -57,6 +57,8 @@ void DebugSession::Launch(const Value& request) {
   if (launch_.lua_loop_functions) ids["loop functions"] = 1;
   for (size_t i = 0; i < launch_.robot_ids.size(); ++i) ids["robot " + launch_.robot_ids[i]] = static_cast<int>(i) + 2;
   debugger_.SetThreadIds(ids);
+  std::error_code ec;
+  debugger_.SetSourceBase(std::filesystem::current_path(ec).string());
   channel_.Respond(request, Value());
   channel_.Event("initialized", Value());
 }
@@ -171,7 +173,7 @@ void DebugSession::StackTrace(const Value& request) {
                                   {"name", Str(f.name)},
                                   {"line", Int(f.line)},
                                   {"column", Int(1)}});
-      if (!f.source.empty()) frame.Set("source", SourceJson(Canonical(f.source)));
+      if (!f.source.empty()) frame.Set("source", SourceJson(debugger_.CanonicalFile(f.source)));
       frames.list.push_back(std::move(frame));
     }
   }

@@ -181,16 +181,18 @@ void LuaDebugger::Detach() {
   UpdateMasks();
 }
 
+std::string LuaDebugger::CanonicalFile(const std::string& path) const {
+  std::filesystem::path p(path);
+  if (p.is_relative() && !source_base_.empty()) p = std::filesystem::path(source_base_) / p;
+  std::error_code ec;
+  const std::string canonical = std::filesystem::weakly_canonical(p, ec).string();
+  return ec ? p.string() : canonical;
+}
+
 const std::string& LuaDebugger::CanonicalSource(const char* source) {
   auto found = canonical_.find(source);
   if (found != canonical_.end()) return found->second;
-  std::string path;
-  if (source[0] == '@') {
-    std::error_code ec;
-    path = std::filesystem::weakly_canonical(source + 1, ec).string();
-    if (ec) path = source + 1;
-  }
-  return canonical_[source] = path;
+  return canonical_[source] = source[0] == '@' ? CanonicalFile(source + 1) : std::string();
 }
 
 std::string LuaDebugger::Prefix(const Thread& t) const { return t.name + " tick " + std::to_string(tick_) + ": "; }

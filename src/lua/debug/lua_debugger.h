@@ -75,6 +75,12 @@ class LuaDebugger : public LuaDebugAttach {
   const Thread* FindThread(int id) const;
   std::vector<const Thread*> Threads() const;
 
+  /// The folder the run's relative script paths start from (the run itself works in a view
+  /// of it, in its output folder).
+  void SetSourceBase(std::string folder) { source_base_ = std::move(folder); }
+  /// A script's path as the client names it: canonical, relative ones from the source base.
+  std::string CanonicalFile(const std::string& path) const;
+
   /// The tick log lines show now (conditions' `tick`, logpoints' prefix, stepping).
   void SetTick(long long tick) {
     if (tick != tick_) fires_ = 0;
@@ -134,6 +140,7 @@ class LuaDebugger : public LuaDebugAttach {
   std::set<int> breakpoint_lines_;                                   // any file: a cheap first test
   std::vector<FunctionBreakpoint> function_breakpoints_;
   std::unordered_map<std::string, std::string> canonical_;  // "@path" -> canonical path
+  std::string source_base_;
   bool break_on_error_ = false;
   bool quiet_ = false;
   bool detached_ = false;

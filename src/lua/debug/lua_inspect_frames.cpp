@@ -68,11 +68,26 @@ LuaVariable TakeVariable(lua_State* L, std::string name) {
 
 bool Hidden(const char* name) { return name[0] == '('; }
 
+// The global name of the function on top (popped): essaim calls step() and init() from C,
+// where Lua's debug info has no name for them.
+std::string GlobalNameOf(lua_State* L) {
+  std::string found = "?";
+  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
+  lua_pushnil(L);
+  while (lua_next(L, -2)) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, -4)) found = lua_tostring(L, -2);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 2);
+  return found;
+}
+
 // The function-name Lua's debug info gives, or what the frame is.
-std::string FrameName(const lua_Debug& ar) {
+std::string FrameName(lua_State* L, lua_Debug& ar) {
   if (ar.name) return ar.name;
   if (ar.what && std::string(ar.what) == "main") return "main chunk";
-  return "?";
+  lua_getinfo(L, "f", &ar);
+  return GlobalNameOf(L);
 }
 
 const std::set<std::string>& LibraryGlobals() {
@@ -104,7 +119,7 @@ std::vector<LuaFrame> LuaFrames(lua_State* L, int from_level) {
     if (ar.what[0] == 'C') continue;
     LuaFrame f;
     f.level = level;
-    f.name = FrameName(ar);
+    f.name = FrameName(L, ar);
     if (ar.source[0] == '@') f.source = ar.source + 1;
     f.line = ar.currentline;
     frames.push_back(f);
