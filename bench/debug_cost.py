@@ -72,11 +72,11 @@ def best_net(measure, essaim, ticks, seed, folder, repeat) -> float:
     return min(net)
 
 
-def session_cpu(marker: str) -> float:
-    """CPU seconds (utime, stime and what they reaped) of every process whose command line
-    holds `marker` (the session's --out folder): the front process, the simulation and its
-    checkpoints, which outlive the simulation they were forked from (reparented to init)."""
-    total = 0
+def session_cpus(marker: str) -> dict:
+    """pid -> CPU seconds (utime, stime and what it reaped) of every process whose command
+    line holds `marker` (the session's --out folder): the front process, the simulation and
+    its checkpoints, which outlive the simulation they were forked from (reparented to init)."""
+    found = {}
     for entry in Path("/proc").iterdir():
         try:
             if not entry.name.isdigit() or marker.encode() not in (entry / "cmdline").read_bytes():
@@ -84,8 +84,14 @@ def session_cpu(marker: str) -> float:
             fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
         except OSError:
             continue
-        total += sum(int(x) for x in fields[11:15])
-    return total / os.sysconf("SC_CLK_TCK")
+        found[int(entry.name)] = sum(int(x) for x in fields[11:15]) / os.sysconf("SC_CLK_TCK")
+    return found
+
+
+def spent(before: dict, after: dict) -> float:
+    """CPU seconds spent between two session_cpus(): by the processes alive at the end (a
+    woken checkpoint's copy is new, its times start at 0; the process it replaced has exited)."""
+    return sum(cpu - before.get(pid, 0.0) for pid, cpu in after.items())
 
 
 def step_back_times(essaim, ticks, at, steps, seed, folder):
@@ -96,15 +102,15 @@ def step_back_times(essaim, ticks, at, steps, seed, folder):
         dap.start(stop_on_entry=True)
         thread = dap.stopped()["threadId"]
         robot = min(t for t in dap.threads().values() if t >= 2)  # the first robot's thread
-        cpu0, t0 = session_cpu(str(out)), time.perf_counter()
+        cpu0, t0 = session_cpus(str(out)), time.perf_counter()
         stop = dap.resume("runToTick", thread, tick=at)
-        forward = (time.perf_counter() - t0, session_cpu(str(out)) - cpu0)
+        forward = (time.perf_counter() - t0, spent(cpu0, session_cpus(str(out))))
         assert stop["reason"] == "goto", stop
         back = []
         for _ in range(steps):
-            cpu0, t0 = session_cpu(str(out)), time.perf_counter()
+            cpu0, t0 = session_cpus(str(out)), time.perf_counter()
             stop = dap.resume("stepBack", robot)
-            back.append((time.perf_counter() - t0, session_cpu(str(out)) - cpu0))
+            back.append((time.perf_counter() - t0, spent(cpu0, session_cpus(str(out)))))
             assert stop["reason"] == "step", stop
         dap.request("terminate")
         dap.finish(timeout=3600)
