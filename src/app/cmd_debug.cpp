@@ -83,7 +83,7 @@ RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
   RunHooks hooks;
   const bool to_log_dir = !r.log_dir.empty();
   hooks.options = [&session, to_log_dir](SimOptions* opt) {
-    opt->threads = 1;  // a stop inside a hook pauses everything; results are the same at any count
+    opt->threads = 1;           // a stop inside a hook pauses everything; results are the same at any count
     opt->lua.wall_seconds = 0;  // a call stopped at a breakpoint may wait for the user for hours
     opt->lua.debugger = &session.Debugger();
     auto printed = opt->log_sink;

@@ -119,8 +119,7 @@ int main(int argc, char** argv) {
   std::map<std::string, essaim::CommandMain> commands;
   for (auto add : {essaim::AddRunCommand, essaim::AddCheckCommand, essaim::AddDevicesCommand, essaim::AddBenchCommand,
                    essaim::AddReplayCommand, essaim::AddSnapshotCommand, essaim::AddVideoCommand,
-                   essaim::AddServeCommand, essaim::AddTestCommand, essaim::AddNewCommand,
-                   essaim::AddDebugCommand}) {
+                   essaim::AddServeCommand, essaim::AddTestCommand, essaim::AddNewCommand, essaim::AddDebugCommand}) {
     size_t before = app.get_subcommands([](const CLI::App*) { return true; }).size();
     essaim::CommandMain fn = add(app);
     CLI::App* sub = app.get_subcommands([](const CLI::App*) { return true; })[before];

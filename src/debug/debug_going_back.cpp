@@ -60,20 +60,20 @@ void DebugSession::GoBack(const Value& request) {
 Value DebugSession::OrderFor(const Replay& target) const {
   Value breakpoints = Value::EmptyMap();
   for (const auto& [path, args] : asked_breakpoints_) breakpoints.Set(path, args);
-  return Value::MapOf({{"kind", Value::OfString(target.kind)},
-                       {"tick", Value::OfInteger(target.tick)},
-                       {"fire", Value::OfInteger(target.fire)},
-                       {"thread", Value::OfInteger(target.thread)},
-                       {"reason", Value::OfString(target.reason)},
-                       {"description", Value::OfString(target.description)},
-                       {"seq", Value::OfInteger(channel_.Seq())},
-                       {"unread", Value::OfString(channel_.Unread())},
-                       {"breakpoints", std::move(breakpoints)},
-                       {"functions", asked_functions_},
-                       {"exceptions", asked_exceptions_},
-                       {"divergences", Value::OfInteger(static_cast<long long>(
-                                           std::max(divergences_.size(), target.divergences)))},
-                       {"last_thread", Value::OfInteger(last_thread_)}});
+  return Value::MapOf(
+      {{"kind", Value::OfString(target.kind)},
+       {"tick", Value::OfInteger(target.tick)},
+       {"fire", Value::OfInteger(target.fire)},
+       {"thread", Value::OfInteger(target.thread)},
+       {"reason", Value::OfString(target.reason)},
+       {"description", Value::OfString(target.description)},
+       {"seq", Value::OfInteger(channel_.Seq())},
+       {"unread", Value::OfString(channel_.Unread())},
+       {"breakpoints", std::move(breakpoints)},
+       {"functions", asked_functions_},
+       {"exceptions", asked_exceptions_},
+       {"divergences", Value::OfInteger(static_cast<long long>(std::max(divergences_.size(), target.divergences)))},
+       {"last_thread", Value::OfInteger(last_thread_)}});
 }
 
 void DebugSession::GoTo(const Replay& target, long long checkpoint_tick) {

@@ -23,8 +23,8 @@ Value Capabilities() {
         "supportsEvaluateForHovers", "supportsTerminateRequest"})
     caps.Set(name, Value::OfBool(true));
   Value filters = Value::EmptyList();
-  filters.list.push_back(Value::MapOf(
-      {{"filter", Str("error")}, {"label", Str("Controller errors")}, {"default", Value::OfBool(false)}}));
+  filters.list.push_back(
+      Value::MapOf({{"filter", Str("error")}, {"label", Str("Controller errors")}, {"default", Value::OfBool(false)}}));
   caps.Set("exceptionBreakpointFilters", std::move(filters));
   return caps;
 }
@@ -40,9 +40,7 @@ std::string Canonical(const std::string& path) {
 }
 }  // namespace
 
-void DebugSession::Initialize(const Value& request) {
-  channel_.Respond(request, Capabilities());
-}
+void DebugSession::Initialize(const Value& request) { channel_.Respond(request, Capabilities()); }
 
 void DebugSession::Launch(const Value& request) {
   std::string error;
@@ -156,10 +154,10 @@ void DebugSession::SetExceptionBreakpoints(const Value& request) {
 
 void DebugSession::Threads(const Value& request) {
   Value list = Value::EmptyList();
-  if (launch_.lua_loop_functions)
-    list.list.push_back(Value::MapOf({{"id", Int(1)}, {"name", Str("loop functions")}}));
+  if (launch_.lua_loop_functions) list.list.push_back(Value::MapOf({{"id", Int(1)}, {"name", Str("loop functions")}}));
   for (size_t i = 0; i < launch_.robot_ids.size(); ++i)
-    list.list.push_back(Value::MapOf({{"id", Int(static_cast<long long>(i) + 2)}, {"name", Str(launch_.robot_ids[i])}}));
+    list.list.push_back(
+        Value::MapOf({{"id", Int(static_cast<long long>(i) + 2)}, {"name", Str(launch_.robot_ids[i])}}));
   channel_.Respond(request, Value::MapOf({{"threads", std::move(list)}}));
 }
 
@@ -212,10 +210,8 @@ void DebugSession::Scopes(const Value& request) {
 
 Value DebugSession::VariableJson(int thread, const LuaVariable& v) {
   const int child = v.ref >= 0 ? NewHandle({Handle::Kind::Table, thread, -1, v.ref}) : 0;
-  return Value::MapOf({{"name", Str(v.name)},
-                       {"value", Str(v.value)},
-                       {"type", Str(v.type)},
-                       {"variablesReference", Int(child)}});
+  return Value::MapOf(
+      {{"name", Str(v.name)}, {"value", Str(v.value)}, {"type", Str(v.type)}, {"variablesReference", Int(child)}});
 }
 
 void DebugSession::Variables(const Value& request) {
@@ -284,8 +280,8 @@ void DebugSession::SetVariable(const Value& request) {
   lua_State* L = StateFor(h.thread, h.level);
   LuaVariable result;
   std::string error;
-  if (!L || !SetVariableIn(L, scopes[static_cast<int>(h.kind)], h.level, h.ref, name, value, debugger_.Tick(),
-                           &result, &error)) {
+  if (!L || !SetVariableIn(L, scopes[static_cast<int>(h.kind)], h.level, h.ref, name, value, debugger_.Tick(), &result,
+                           &error)) {
     channel_.Respond(request, Value(), false, L ? error : "no Lua state for this thread");
     return;
   }
@@ -308,8 +304,8 @@ DebugSession::After DebugSession::Resume(const Value& request, StepMode mode) {
   else  // from a tick boundary, or a thread not in a call: its next call's first line
     debugger_.Resume(StepMode::In, thread, nullptr);
   last_thread_ = thread;
-  channel_.Respond(request, mode == StepMode::None ? Value::MapOf({{"allThreadsContinued", Value::OfBool(true)}})
-                                                   : Value());
+  channel_.Respond(request,
+                   mode == StepMode::None ? Value::MapOf({{"allThreadsContinued", Value::OfBool(true)}}) : Value());
   return After::Resume;
 }
 
@@ -362,6 +358,5 @@ DebugSession::After DebugSession::Disconnect(const Value& request) {
   terminate_ = terminate;
   return After::Resume;
 }
-
 
 }  // namespace essaim

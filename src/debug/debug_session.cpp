@@ -1,6 +1,7 @@
 #include "debug/debug_session.h"
 
 #include <lua.hpp>
+#include <map>
 
 #include "lua/debug/lua_inspect_frames.h"
 #include "sim/world.h"
@@ -23,42 +24,58 @@ bool DebugSession::Configure() {
 }
 
 DebugSession::After DebugSession::Dispatch(const Value& request) {
+  using Run = std::function<After(DebugSession*, const Value&)>;
+  struct Entry {
+    bool stopped_only;  // answered only while the simulation is stopped
+    Run run;
+  };
+  auto stay = [](void (DebugSession::*f)(const Value&)) -> Run {
+    return [f](DebugSession* s, const Value& r) { return (s->*f)(r), After::Stay; };
+  };
+  auto step = [](StepMode mode) -> Run {
+    return [mode](DebugSession* s, const Value& r) { return s->Resume(r, mode); };
+  };
+  static const std::map<std::string, Entry> table = {
+      {"initialize", {false, stay(&DebugSession::Initialize)}},
+      {"launch", {false, stay(&DebugSession::Launch)}},
+      {"attach", {false, stay(&DebugSession::Launch)}},
+      {"configurationDone", {false, stay(&DebugSession::ConfigurationDone)}},
+      {"setBreakpoints", {false, stay(&DebugSession::SetBreakpoints)}},
+      {"setFunctionBreakpoints", {false, stay(&DebugSession::SetFunctionBreakpoints)}},
+      {"setExceptionBreakpoints", {false, stay(&DebugSession::SetExceptionBreakpoints)}},
+      {"threads", {false, stay(&DebugSession::Threads)}},
+      {"pause", {false, stay(&DebugSession::Pause)}},
+      {"evaluate", {false, stay(&DebugSession::Evaluate)}},
+      {"terminate", {false, [](DebugSession* s, const Value& r) { return s->Terminate(r); }}},
+      {"disconnect", {false, [](DebugSession* s, const Value& r) { return s->Disconnect(r); }}},
+      {"stackTrace", {true, stay(&DebugSession::StackTrace)}},
+      {"scopes", {true, stay(&DebugSession::Scopes)}},
+      {"variables", {true, stay(&DebugSession::Variables)}},
+      {"setVariable", {true, stay(&DebugSession::SetVariable)}},
+      {"continue", {true, step(StepMode::None)}},
+      {"next", {true, step(StepMode::Over)}},
+      {"stepIn", {true, step(StepMode::In)}},
+      {"stepOut", {true, step(StepMode::Out)}},
+      {"runToTick", {true, [](DebugSession* s, const Value& r) { return s->RunToTick(r); }}},
+      {"stepBack", {true, stay(&DebugSession::GoBack)}},
+      {"reverseContinue", {true, stay(&DebugSession::GoBack)}},
+  };
   const std::string command = StringField(request, "command");
-  if (command == "initialize") return Initialize(request), After::Stay;
-  if (command == "launch" || command == "attach") return Launch(request), After::Stay;
-  if (command == "configurationDone") {
-    configured_ = launched_;
-    channel_.Respond(request, Value(), launched_, launched_ ? "" : "launch first");
+  auto found = table.find(command);
+  if (found == table.end()) {
+    channel_.Respond(request, Value(), false, "essaim debug does not handle '" + command + "'");
     return After::Stay;
   }
-  if (command == "setBreakpoints") return SetBreakpoints(request), After::Stay;
-  if (command == "setFunctionBreakpoints") return SetFunctionBreakpoints(request), After::Stay;
-  if (command == "setExceptionBreakpoints") return SetExceptionBreakpoints(request), After::Stay;
-  if (command == "threads") return Threads(request), After::Stay;
-  if (command == "pause") return Pause(request), After::Stay;
-  if (command == "terminate") return Terminate(request);
-  if (command == "disconnect") return Disconnect(request);
-  const bool stopped_only = command == "stackTrace" || command == "scopes" || command == "variables" ||
-                            command == "setVariable" || command == "continue" || command == "next" ||
-                            command == "stepIn" || command == "stepOut" || command == "runToTick" ||
-                            command == "stepBack" || command == "reverseContinue";
-  if (stopped_only && !stop_.active) {
+  if (found->second.stopped_only && !stop_.active) {
     channel_.Respond(request, Value(), false, command + ": the simulation is running (pause it first)");
     return After::Stay;
   }
-  if (command == "stackTrace") return StackTrace(request), After::Stay;
-  if (command == "scopes") return Scopes(request), After::Stay;
-  if (command == "variables") return Variables(request), After::Stay;
-  if (command == "evaluate") return Evaluate(request), After::Stay;
-  if (command == "setVariable") return SetVariable(request), After::Stay;
-  if (command == "continue") return Resume(request, StepMode::None);
-  if (command == "next") return Resume(request, StepMode::Over);
-  if (command == "stepIn") return Resume(request, StepMode::In);
-  if (command == "stepOut") return Resume(request, StepMode::Out);
-  if (command == "runToTick") return RunToTick(request);
-  if (command == "stepBack" || command == "reverseContinue") return GoBack(request), After::Stay;
-  channel_.Respond(request, Value(), false, "essaim debug does not handle '" + command + "'");
-  return After::Stay;
+  return found->second.run(this, request);
+}
+
+void DebugSession::ConfigurationDone(const Value& request) {
+  configured_ = launched_;
+  channel_.Respond(request, Value(), launched_, launched_ ? "" : "launch first");
 }
 
 void DebugSession::SendStopped(const std::string& reason, int thread, const std::string& description,
@@ -120,29 +137,40 @@ bool DebugSession::BeforeTick(World& world) {
     debugger_.SetTick(BoundaryTick());
     return true;
   }
+  ServePending();
+  BoundaryStops(world);
+  debugger_.SetTick(BoundaryTick());
+  return !terminate_;
+}
+
+// Requests that came while running (pause, breakpoints), answered between ticks.
+void DebugSession::ServePending() {
   while (!detached_ && !terminate_ && channel_.Pending()) {
     Value request;
     bool closed = false;
     if (!channel_.Read(&request, 0, &closed)) {
       if (closed) detached_ = true, debugger_.Detach();
-      break;
+      return;
     }
     if (StringField(request, "type") == "request") Dispatch(request);
   }
+}
+
+// The stops made at this boundary: entry, pause, run to tick.
+void DebugSession::BoundaryStops(const World& world) {
   const std::string before = "before tick " + std::to_string(BoundaryTick());
   const int first = launch_.robot_ids.empty() ? 1 : 2;
-  if (!detached_ && !terminate_ && world.tick == 0 && launch_.stop_on_entry) BoundaryStop("entry", first, before);
-  if (!detached_ && !terminate_ && pause_thread_) {
+  auto open = [this] { return !detached_ && !terminate_; };
+  if (open() && world.tick == 0 && launch_.stop_on_entry) BoundaryStop("entry", first, before);
+  if (open() && pause_thread_) {
     const int thread = pause_thread_;
     pause_thread_ = 0;
     BoundaryStop("pause", thread, before);
   }
-  while (!detached_ && !terminate_ && run_to_tick_ > 0 && run_to_tick_ == BoundaryTick()) {
+  while (open() && run_to_tick_ > 0 && run_to_tick_ == BoundaryTick()) {
     run_to_tick_ = 0;
     BoundaryStop("goto", last_thread_ ? last_thread_ : first, before);
   }
-  debugger_.SetTick(BoundaryTick());
-  return !terminate_;
 }
 
 void DebugSession::LogLine(char stream, const std::string& line) {

@@ -21,10 +21,10 @@ class World;
 
 /// What the launch request tells the session, once the command line made its model.
 struct DebugLaunch {
-  std::string experiment_dir;               // canonical: relative breakpoint paths start here
-  std::vector<std::string> scripts;         // canonical: controllers' and Lua loop functions'
-  std::vector<std::string> robot_ids;       // model order: thread i + 2
-  bool lua_loop_functions = false;          // thread 1 exists
+  std::string experiment_dir;          // canonical: relative breakpoint paths start here
+  std::vector<std::string> scripts;    // canonical: controllers' and Lua loop functions'
+  std::vector<std::string> robot_ids;  // model order: thread i + 2
+  bool lua_loop_functions = false;     // thread 1 exists
   bool stop_on_entry = false;
 };
 
@@ -80,9 +80,9 @@ class DebugSession : public DebugListener {
     long long tick = 0, fire = 0;  // the target, or the search's end
     int thread = 0;
     std::string reason, description;
-    long long from_tick = 0;                // the checkpoint's boundary
+    long long from_tick = 0;                    // the checkpoint's boundary
     long long found_tick = -1, found_fire = 0;  // a search's last hit so far
-    size_t divergences = 0;                 // how many the process that went back had
+    size_t divergences = 0;                     // how many the process that went back had
   };
   struct Handle {
     enum class Kind { Locals, Upvalues, Globals, Table } kind;
@@ -92,6 +92,9 @@ class DebugSession : public DebugListener {
   };
 
   After Dispatch(const Value& request);
+  void ConfigurationDone(const Value& request);
+  void ServePending();
+  void BoundaryStops(const World& world);
   void ServeStopped();
   void BoundaryStop(const std::string& reason, int thread, const std::string& description);
   void SendStopped(const std::string& reason, int thread, const std::string& description, const std::string& text);

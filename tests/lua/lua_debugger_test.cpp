@@ -35,9 +35,9 @@ TEST(ChunkLines, BlankAndCommentLinesMoveToTheNextLineWithCodeInsideNestedFuncti
   std::set<int> lines;
   std::string error;
   ASSERT_TRUE(ActiveLinesOfText(kScript, "=test", &lines, &error)) << error;
-  EXPECT_EQ(NextActiveLine(lines, 1), 4);   // the comment, then a definition with no instruction of its own
-  EXPECT_EQ(NextActiveLine(lines, 4), 4);   // inside add(): only reachable in the dump
-  EXPECT_EQ(NextActiveLine(lines, 7), 8);   // between the functions
+  EXPECT_EQ(NextActiveLine(lines, 1), 4);  // the comment, then a definition with no instruction of its own
+  EXPECT_EQ(NextActiveLine(lines, 4), 4);  // inside add(): only reachable in the dump
+  EXPECT_EQ(NextActiveLine(lines, 7), 8);  // between the functions
   EXPECT_EQ(NextActiveLine(lines, 12), 12);
   EXPECT_EQ(NextActiveLine(lines, 99), 0);  // past the end
 }

@@ -88,10 +88,10 @@ void ReadLines(Reader& r, int linedefined, bool vararg, size_t code_size, std::s
 void ReadFunction(Reader& r, std::set<int>* lines) {
   r.SkipString();  // source
   const int linedefined = static_cast<int>(r.Size());
-  r.Size();                   // lastlinedefined
-  r.Skip(1);                  // numparams
+  r.Size();   // lastlinedefined
+  r.Skip(1);  // numparams
   const bool vararg = r.Byte() != 0;
-  r.Skip(1);                  // maxstacksize
+  r.Skip(1);  // maxstacksize
   const size_t code_size = r.Size();
   r.Skip(code_size * 4);
   SkipConstants(r);

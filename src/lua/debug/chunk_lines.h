@@ -13,8 +13,7 @@ namespace essaim {
 bool ActiveLinesOfFile(const std::string& path, std::set<int>* lines, std::string* error);
 
 /// The same for Lua source text (`chunkname` names it in errors).
-bool ActiveLinesOfText(const std::string& text, const std::string& chunkname, std::set<int>* lines,
-                       std::string* error);
+bool ActiveLinesOfText(const std::string& text, const std::string& chunkname, std::set<int>* lines, std::string* error);
 
 /// The first line >= `line` that holds code; 0 when none does.
 int NextActiveLine(const std::set<int>& lines, int line);

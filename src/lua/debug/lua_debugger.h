@@ -137,7 +137,7 @@ class LuaDebugger : public LuaDebugAttach {
   std::map<std::string, int> ids_;
   std::unordered_map<LuaGuard*, Thread> threads_;
   std::map<std::string, std::vector<LineBreakpoint>> breakpoints_;  // by canonical file
-  std::set<int> breakpoint_lines_;                                   // any file: a cheap first test
+  std::set<int> breakpoint_lines_;                                  // any file: a cheap first test
   std::vector<FunctionBreakpoint> function_breakpoints_;
   std::unordered_map<std::string, std::string> canonical_;  // "@path" -> canonical path
   std::string source_base_;

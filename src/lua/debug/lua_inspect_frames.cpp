@@ -1,8 +1,8 @@
 #include "lua/debug/lua_inspect_frames.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <lua.hpp>
 #include <map>
 #include <set>
@@ -92,12 +92,11 @@ std::string FrameName(lua_State* L, lua_Debug& ar) {
 
 const std::set<std::string>& LibraryGlobals() {
   static const std::set<std::string> names = {
-      "_G",       "_VERSION", "assert",   "collectgarbage", "coroutine", "debug",  "dofile",   "error",
-      "getmetatable", "io",   "ipairs",   "load",           "loadfile",  "math",   "next",     "os",
-      "package",  "pairs",    "pcall",    "print",          "rawequal",  "rawget", "rawlen",   "rawset",
-      "require",  "select",   "setmetatable", "string",     "table",     "tonumber", "tostring", "type",
-      "utf8",     "warn",     "xpcall",   "log",            "logerr",    "robot",  "vector2",  "vector3",
-      "quaternion"};
+      "_G",     "_VERSION", "assert",   "collectgarbage", "coroutine", "debug",  "dofile",  "error",   "getmetatable",
+      "io",     "ipairs",   "load",     "loadfile",       "math",      "next",   "os",      "package", "pairs",
+      "pcall",  "print",    "rawequal", "rawget",         "rawlen",    "rawset", "require", "select",  "setmetatable",
+      "string", "table",    "tonumber", "tostring",       "type",      "utf8",   "warn",    "xpcall",  "log",
+      "logerr", "robot",    "vector2",  "vector3",        "quaternion"};
   return names;
 }
 }  // namespace
@@ -405,7 +404,8 @@ int LocalIndex(lua_State* L, lua_Debug* ar, const std::string& name) {
 // Sets the variable to the value on top (popped); false when there is no such variable.
 bool Assign(lua_State* L, VariableScope scope, int level, int ref, const std::string& name) {
   lua_Debug ar;
-  if ((scope == VariableScope::Locals || scope == VariableScope::Upvalues) && !lua_getstack(L, level, &ar)) return false;
+  if ((scope == VariableScope::Locals || scope == VariableScope::Upvalues) && !lua_getstack(L, level, &ar))
+    return false;
   if (scope == VariableScope::Locals) {
     const int index = LocalIndex(L, &ar, name);
     return index > 0 && lua_setlocal(L, &ar, index);
@@ -458,8 +458,7 @@ bool SetVariableIn(lua_State* L, VariableScope scope, int level, int ref, const 
   return true;
 }
 
-bool EvaluateTruth(lua_State* L, int level, const std::string& code, long long tick, bool* truth,
-                   std::string* error) {
+bool EvaluateTruth(lua_State* L, int level, const std::string& code, long long tick, bool* truth, std::string* error) {
   bool had_result = false;
   if (!PushEvaluated(L, level, code, false, tick, error, &had_result)) return false;
   *truth = lua_toboolean(L, -1);

@@ -12,8 +12,8 @@ namespace essaim {
 
 /// One Lua function on the stack, innermost first.
 struct LuaFrame {
-  int level = 0;     // lua_getstack's level
-  std::string name;  // as Lua's debug info names it ("step", "?" when unknown)
+  int level = 0;       // lua_getstack's level
+  std::string name;    // as Lua's debug info names it ("step", "?" when unknown)
   std::string source;  // the file's path ("" for C functions and strings)
   int line = 0;
 };
