@@ -120,12 +120,15 @@ def step_back_times(essaim, ticks, at, steps, seed, folder):
 
 
 def machine() -> str:
+    """lscpu's model name, CPU family and caches, and the CPU count."""
     try:
         out = subprocess.run(["lscpu"], capture_output=True, text=True, timeout=10).stdout
-        model = next(line.split(":", 1)[1].strip() for line in out.splitlines() if line.startswith("Model name"))
-    except (OSError, StopIteration, subprocess.SubprocessError):
-        model = platform.processor() or "unknown CPU"
-    return f"{model}, {os.cpu_count()} CPUs"
+    except (OSError, subprocess.SubprocessError):
+        return f"{platform.processor() or 'unknown CPU'}, {os.cpu_count()} CPUs"
+    info = {k.strip(): v.strip() for k, _, v in (line.partition(":") for line in out.splitlines())}
+    caches = ", ".join(f"{c} {info[c + ' cache']}" for c in ("L2", "L3") if c + " cache" in info)
+    return (f"{info.get('Model name', 'unknown CPU')} (family {info.get('CPU family', '?')}), "
+            f"{os.cpu_count()} CPUs, {caches}")
 
 
 def main():
