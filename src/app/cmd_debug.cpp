@@ -24,7 +24,6 @@ struct DebugArgs {
   RunArgs run;
   RunOptionValues values;
   int port = 0;
-  int serve = 0;
 };
 
 std::string Canonical(const std::string& path) {
@@ -142,11 +141,9 @@ CommandMain AddDebugCommand(CLI::App& app) {
       "debug", "debug the experiment's Lua controllers from an editor: Debug Adapter Protocol on stdin/stdout");
   AddRunOptions(sub, &a->run, &a->values);
   sub->get_option("FILE.argos")->required(false);
+  sub->remove_option(sub->get_option("--watch"));  // one run, under the editor's control
   sub->add_option("--port", a->port, "serve one client on 127.0.0.1:N instead of stdin/stdout")
       ->type_name("N")
-      ->check(CLI::Range(1, 65535));
-  sub->add_option("--serve", a->serve, "also show the session in the live view on this port (as essaim serve)")
-      ->type_name("PORT")
       ->check(CLI::Range(1, 65535));
   sub->footer("Example (VS Code, nvim-dap: docs/debugging.md):\n  essaim debug arenas/foraging.argos --ticks 600");
   return [a, sub] {

@@ -123,10 +123,17 @@ bool DebugSession::ReplayBoundary() {
     return true;
   }
   if (replay_.kind == "search" && next > replay_.tick) ConcludeSearch();
-  if ((replay_.kind == "entry" || replay_.kind == "fire") && next > replay_.tick + 1) {
-    // The target never came (the robot stopped running): here instead.
-    BoundaryStop(replay_.kind == "entry" ? "step" : "breakpoint", replay_.thread,
-                 "before tick " + std::to_string(next));
+  if (replay_.kind == "entry" && next > replay_.tick) {
+    // The robot did not run at that tick (it died, or its controller failed): the boundary
+    // before it instead.
+    Replay target = replay_;
+    target.kind = "boundary";
+    target.reason = "step";
+    target.description = "before tick " + std::to_string(replay_.tick);
+    GoTo(target, replay_.tick - 1);
+  }
+  if (replay_.kind == "fire" && next > replay_.tick) {  // never expected: a run is deterministic
+    BoundaryStop("breakpoint", replay_.thread, "before tick " + std::to_string(next));
     return true;
   }
   return false;
