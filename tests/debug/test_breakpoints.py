@@ -94,15 +94,18 @@ def test_a_breakpoint_in_a_required_module_shows_both_frames(argos, tmp_path, se
     assert dap.run_to_end(stop["threadId"]) == 0
 
 
-def test_a_breakpoint_moves_to_the_next_line_with_code(argos, tmp_path, session):
+def test_a_breakpoint_moves_to_the_next_line_with_code_and_a_relative_path_starts_at_the_experiment(
+        argos, tmp_path, session):
     script = controller(argos)
     blank = line_of(script, "function step()") - 1  # the empty line above step()
     assert script.read_text().splitlines()[blank - 1].strip() == ""
+    relative = "../controllers/foraging.lua"  # from arenas/, the experiment's folder
     dap = session([argos, *SHORT, "--out", tmp_path / "dbg"])
-    [bp] = dap.start(breakpoints={script: [{"line": blank, "condition": 'robot.id == "fb0"'}]})["breakpoints"][script]
+    [bp] = dap.start(breakpoints={relative: [{"line": blank, "condition": 'robot.id == "fb0"'}]})["breakpoints"][relative]
     assert bp["verified"] and bp["line"] > blank
     stop = dap.stopped()
-    assert dap.frames(stop["threadId"])[0]["line"] == bp["line"]
+    top = dap.frames(stop["threadId"])[0]
+    assert top["line"] == bp["line"] and top["source"]["path"] == str(script)
     dap.request("terminate")
     assert dap.finish() == 0
 
@@ -169,7 +172,11 @@ def test_logpoints_print_each_hit_and_never_stop(essaim, argos, tmp_path, sessio
 
 def test_bad_breakpoints_are_reported_and_do_not_stop_the_run(argos, tmp_path, session):
     script = controller(argos)
-    other = argos.parent.parent / "controllers" / "clustering.lua"  # no robot of foraging runs it
+    # A Lua file away from the experiment and its scripts (one beside or below them might be
+    # `require`d later: docs/debug-contract.md counts those as run).
+    other = tmp_path / "elsewhere" / "other.lua"
+    other.parent.mkdir()
+    other.write_text("local x = 1\nlocal y = 2\nreturn x + y\n")
     dap = session([argos, *SHORT, "--out", tmp_path / "dbg"])
     started = dap.start(breakpoints={
         other: [3],
@@ -177,7 +184,7 @@ def test_bad_breakpoints_are_reported_and_do_not_stop_the_run(argos, tmp_path, s
                  {"line": line_of(script, WHEELS), "condition": 'robot.nothing.x > 1 or robot.id == "fb0"'}]})
     [unrun] = started["breakpoints"][other]
     assert unrun["verified"] is False
-    assert "clustering.lua" in unrun["message"] and "no controller or loop function" in unrun["message"]
+    assert "other.lua" in unrun["message"] and "no controller or loop function" in unrun["message"]
     syntax, raising = started["breakpoints"][script]
     assert syntax["verified"] is False and syntax["message"].startswith("condition: ")
     assert raising["verified"] is True
