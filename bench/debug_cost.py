@@ -3,7 +3,8 @@
 
 1. a debug run without breakpoints against `essaim run`: the same experiment, seed and
    ticks, the process's CPU time (user + system) less that of a 1-tick run of the same kind
-   (loading, init(), outputs), best of --repeat;
+   (loading, init(), outputs), best of --repeat; and a debug run with one breakpoint in
+   step() whose condition never holds (line hooks in every robot's state);
 2. going back one tick in the middle of a long run: a session paused before tick --at of a
    --back-ticks run (runToTick), then stepBack on a robot's thread, timed from the request
    to its stopped event, --steps times in a row (each one tick further back): the wall time
@@ -47,18 +48,26 @@ def run_cpu(essaim, ticks, seed, out) -> float:
     return children_cpu() - before
 
 
-def debug_cpu(essaim, ticks, seed, out) -> float:
-    """A whole session with no breakpoint: initialize, launch, configurationDone, the end."""
+def debug_cpu(essaim, ticks, seed, out, breakpoints=None) -> float:
+    """A whole session: initialize, launch, the breakpoints, configurationDone, the end."""
     before = children_cpu()
     dap = DapClient.stdio(essaim, [ARGOS, "--ticks", ticks, "--seed", seed, "--out", out], cwd=out.parent,
                           timeout=3600)
     try:
-        dap.start()
+        dap.start(breakpoints=breakpoints)
         if dap.finish(timeout=3600) != 0:
             raise SystemExit(f"essaim debug failed:\n{dap.stderr()[-2000:]}")
     finally:
         dap.kill()
     return children_cpu() - before
+
+
+def debug_never_cpu(essaim, ticks, seed, out) -> float:
+    """A session with one breakpoint in every robot's step() whose condition never holds:
+    the line hooks in every state and the condition evaluated at each pass."""
+    script = ROOT / "controllers" / "foraging.lua"
+    line = next(n for n, text in enumerate(script.read_text().splitlines(), 1) if "set_velocity" in text)
+    return debug_cpu(essaim, ticks, seed, out, {script: [{"line": line, "condition": 'robot.id == "none"'}]})
 
 
 def best_net(measure, essaim, ticks, seed, folder, repeat) -> float:
@@ -155,6 +164,9 @@ def main():
         print(f"run without breakpoints, {a.ticks} ticks, CPU s (best of {a.repeat}, less a 1-tick run):")
         print(f"  essaim run    {run:8.3f}")
         print(f"  essaim debug  {dbg:8.3f}   debug/run {dbg / run:5.2f}")
+        hooked = best_net(debug_never_cpu, essaim, a.ticks, a.seed, folder / "hooked", a.repeat)
+        print(f"  essaim debug, a breakpoint in step() whose condition never holds"
+              f"  {hooked:8.3f}   /run {hooked / run:5.2f}")
         forward, back = step_back_times(essaim, a.back_ticks, a.at, a.steps, a.seed, folder)
         walls, cpus = [w for w, _ in back], [c for _, c in back]
         print(f"step back at tick {a.at} of a {a.back_ticks}-tick run (the first robot's thread):")
