@@ -147,7 +147,9 @@ class DapClient:
         deadline = time.monotonic() + self.timeout
         while True:
             try:
-                return socket.create_connection(("127.0.0.1", port), timeout=self.timeout)
+                sock = socket.create_connection(("127.0.0.1", port), timeout=self.timeout)
+                sock.settimeout(None)  # the reader waits as long as the session lasts; waits time out
+                return sock
             except OSError as e:
                 if self.proc.poll() is not None or time.monotonic() > deadline:
                     self._fail_with(f"could not connect to essaim debug on port {port}: {e}")
