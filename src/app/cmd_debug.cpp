@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -97,6 +98,7 @@ RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
 }
 
 int Debug(DebugArgs& a) {
+  signal(SIGPIPE, SIG_IGN);  // a client gone mid-write is read as gone, not a killed process
   std::string error;
   int in = STDIN_FILENO, out = -1;
   if (a.port > 0) {

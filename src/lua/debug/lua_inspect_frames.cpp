@@ -139,6 +139,7 @@ std::vector<LuaVariable> FrameLocals(lua_State* L, int level) {
     }
     out.push_back(TakeVariable(L, name));
   }
+  for (int i = 1; lua_getlocal(L, &ar, -i); ++i) out.push_back(TakeVariable(L, "...[" + std::to_string(i) + "]"));
   return out;
 }
 

@@ -33,7 +33,8 @@ std::vector<LuaFrame> LuaFrames(lua_State* L, int from_level);
 /// The first level at or above `from_level` that runs a Lua function; -1 when none.
 int FirstLuaLevel(lua_State* L, int from_level);
 
-/// Locals of the frame at `level` (varargs and temporaries hidden), in declaration order.
+/// Locals of the frame at `level` in declaration order (temporaries hidden), then its varargs
+/// as ...[1], ...[2].
 std::vector<LuaVariable> FrameLocals(lua_State* L, int level);
 /// Upvalues of the function at `level` (_ENV hidden).
 std::vector<LuaVariable> FrameUpvalues(lua_State* L, int level);
