@@ -94,6 +94,7 @@ RunHooks DebugHooks(DebugSession& session, const RunArgs& r) {
   };
   hooks.before_tick = [&session](World& world) { return session.BeforeTick(world); };
   hooks.finishing = [&session](RunInfo* info) { info->debug = session.Record(); };
+  hooks.error = [&session](const std::string& message) { session.LogLine('E', message); };
   return hooks;
 }
 
@@ -124,7 +125,7 @@ int Debug(DebugArgs& a) {
   const int front_code = StartFront(in, out, &link);
   if (front_code >= 0) return front_code;
   channel.Rebind(link.sim_socket);
-  session.EnableGoingBack(front);
+  session.EnableGoingBack(front, link);
   RunSession run_session;
   const RunHooks hooks = DebugHooks(session, run);
   std::vector<std::string> inputs;

@@ -204,6 +204,7 @@ std::optional<int> BuildWorld(ActiveRun& run, const SimOptions& options, std::ve
   run.world = World::Create(run.model, options, &error);
   if (!run.world) {  // a script that does not load, or one a signal stopped while it loaded
     std::fprintf(stderr, "%s\n", error.c_str());
+    if (run.hooks && run.hooks->error) run.hooks->error(error);
     const int signal = run.session.signals.Caught();
     return FailedBeforeRun(run.session, run.args, run.out, &run.model, error, signal ? 128 + signal : kExitBadInput,
                            options.inputs.get());
@@ -306,6 +307,7 @@ int ExitCode(const ActiveRun& run, StepStatus status) {
 int Report(const ActiveRun& run, StepStatus status, const std::vector<std::string>& unwritten) {
   const World& world = *run.world;
   if (!world.failure.empty()) std::fprintf(stderr, "essaim run: %s\n", world.failure.c_str());
+  if (!world.failure.empty() && run.hooks && run.hooks->error) run.hooks->error(world.failure);
   std::fputs(FormatUnreadParams(world.unread_params, run.args.strict).c_str(), stderr);
   if (!unwritten.empty()) {
     for (const std::string& e : unwritten) std::fprintf(stderr, "essaim run: %s\n", e.c_str());

@@ -24,6 +24,9 @@ struct RunHooks {
   /// Called before each tick (at the boundary before tick world.tick + 1); false ends the run
   /// there as finished.
   std::function<bool(World&)> before_tick;
+  /// What stops the run (a script that does not load, a loop function's error), also said
+  /// on stderr.
+  std::function<void(const std::string&)> error;
   /// Called once the run ended, before the outputs are written.
   std::function<void(RunInfo*)> finishing;
 };

@@ -29,25 +29,47 @@ bool Forward(int from, int to) {
   return true;
 }
 
-// Relays until the exit code comes; then what the simulation sent before it is passed on.
-int Relay(int client_in, int client_out, int sim, int status) {
+// What a simulation tells the front on the status pipe.
+struct Status {
+  int kind;   // kLive: `value` is the live simulation's pid; kExit: its exit code
+  int value;
+};
+constexpr int kLive = 1, kExit = 0;
+
+// Whether `pid` still runs (the first simulation is the front's child: reaped here).
+bool Running(pid_t pid, pid_t child) {
+  if (pid == child) return waitpid(child, nullptr, WNOHANG) == 0;
+  return kill(pid, 0) == 0;
+}
+
+// Relays until the exit code comes (then what the simulation sent before it is passed on),
+// or until the live simulation is gone without one (it crashed: exit 3).
+int Relay(int client_in, int client_out, int sim, int status, pid_t child) {
   bool client_open = true;
+  pid_t live = child;
+  int gone = 0;  // seconds the live simulation has been gone (a going back hands over in ms)
   while (true) {
     pollfd p[3] = {{sim, POLLIN, 0}, {status, POLLIN, 0}, {client_open ? client_in : -1, POLLIN, 0}};
-    if (poll(p, 3, -1) < 0 && errno != EINTR) return 1;
+    const int ready = poll(p, 3, 1000);
+    if (ready < 0 && errno != EINTR) return 1;
+    if (ready == 0 && !Running(live, child) && ++gone >= 3) return 3;
     if (p[0].revents & (POLLIN | POLLHUP)) Forward(sim, client_out);
     if (p[2].revents & (POLLIN | POLLHUP) && !Forward(client_in, sim)) {
       client_open = false;
       shutdown(sim, SHUT_WR);  // the simulation reads the end of input: the client left
     }
-    if (p[1].revents & (POLLIN | POLLHUP)) {
-      int code = 1;
-      if (read(status, &code, sizeof code) != sizeof code) code = 1;
-      fcntl(sim, F_SETFL, O_NONBLOCK);
-      while (Forward(sim, client_out)) {
-      }
-      return code;
+    if (!(p[1].revents & (POLLIN | POLLHUP))) continue;
+    Status s{kExit, 1};
+    if (read(status, &s, sizeof s) != sizeof s) s = {kExit, 1};
+    if (s.kind == kLive) {
+      live = s.value;
+      gone = 0;
+      continue;
     }
+    fcntl(sim, F_SETFL, O_NONBLOCK);
+    while (Forward(sim, client_out)) {
+    }
+    return s.value;
   }
 }
 }  // namespace
@@ -78,16 +100,22 @@ int StartFront(int client_in, int client_out, FrontLink* link) {
   }
   setpgid(sim, sim);
   signal(SIGPIPE, SIG_IGN);
-  const int code = Relay(client_in, client_out, sv[0], status[0]);
+  const int code = Relay(client_in, client_out, sv[0], status[0], sim);
   kill(-sim, SIGKILL);
   waitpid(sim, nullptr, 0);
   return code;
 }
 
+void TellFrontLive(const FrontLink& link) {
+  const Status s{kLive, static_cast<int>(getpid())};
+  if (write(link.status_fd, &s, sizeof s) != sizeof s) return;  // the front is gone: nobody to tell
+}
+
 void EndSimulation(const FrontLink& link, int code) {
   std::fflush(stdout);
   std::fflush(stderr);
-  if (write(link.status_fd, &code, sizeof code) != sizeof code) _exit(code);
+  const Status s{kExit, code};
+  if (write(link.status_fd, &s, sizeof s) != sizeof s) _exit(code);
   _exit(code);
 }
 

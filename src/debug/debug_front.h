@@ -18,6 +18,10 @@ struct FrontLink {
 /// In the simulation: returns -1 with `link` set (the client's descriptors closed there).
 int StartFront(int client_in, int client_out, FrontLink* link);
 
+/// A copy woken from a checkpoint tells the front it is the live simulation now (the front
+/// ends the session, exit 3, when the live one is gone without an exit code: a crash).
+void TellFrontLive(const FrontLink& link);
+
 /// The live simulation's last act: its exit code to the front, then _exit.
 [[noreturn]] void EndSimulation(const FrontLink& link, int code);
 

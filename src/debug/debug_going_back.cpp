@@ -10,7 +10,10 @@
 
 namespace essaim {
 
-void DebugSession::EnableGoingBack(pid_t front) { checkpoints_ = std::make_unique<Checkpoints>(front); }
+void DebugSession::EnableGoingBack(pid_t front, const FrontLink& link) {
+  checkpoints_ = std::make_unique<Checkpoints>(front);
+  front_ = link;
+}
 
 void DebugSession::EndCheckpoints() {
   if (checkpoints_) checkpoints_->EndAll();
@@ -88,6 +91,7 @@ void DebugSession::TakeOrder(const std::string& text) {
   std::string error;
   ParseJsonValue(text, &o, &error);
   debugger_.ForgetWatchdog();
+  TellFrontLive(front_);
   channel_.SetSeq(IntField(o, "seq"));
   channel_.SetUnread(StringField(o, "unread"));
   asked_breakpoints_.clear();

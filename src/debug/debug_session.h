@@ -13,6 +13,7 @@
 #include "core/value.h"
 #include "debug/checkpoints.h"
 #include "debug/dap_channel.h"
+#include "debug/debug_front.h"
 #include "lua/debug/lua_debugger.h"
 
 namespace essaim {
@@ -49,7 +50,7 @@ class DebugSession : public DebugListener {
   Value Record() const;
   /// From now on checkpoints are taken, so that stepBack, reverseContinue and runToTick
   /// can go back (this process is a simulation forked by the front `front`).
-  void EnableGoingBack(pid_t front);
+  void EnableGoingBack(pid_t front, const FrontLink& link);
   /// Ends the checkpoints (the run is over).
   void EndCheckpoints();
   /// The run ended with `exit_code`: exited and terminated events, then the client's
@@ -154,6 +155,7 @@ class DebugSession : public DebugListener {
   int next_breakpoint_id_ = 1;
   std::vector<Value> divergences_;
   std::unique_ptr<Checkpoints> checkpoints_;
+  FrontLink front_;
   Replay replay_;
   std::map<std::string, Value> asked_breakpoints_;  // by source path as asked: the request's arguments
   Value asked_functions_, asked_exceptions_;
