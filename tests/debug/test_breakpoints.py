@@ -3,7 +3,7 @@ a conditional breakpoint stops the right robot at the right tick, and what the s
 there (locals, upvalues, robot.proximity, robot.positioning) is what a log() line in the same
 place prints under `essaim run` and what the recording holds; breakpoints in a `require`d
 module, function breakpoints with hit counts, logpoints; and the bad input: a file no robot
-runs, a condition that does not compile, a condition that raises."""
+runs, a condition that does not compile, a condition that raises, a hit condition that is not one."""
 import pytest
 
 from debug_support import (ACTIONS, FIRST, ROBOTS, SHORT, WHEELS, add_log_line, controller, essaim_run,
@@ -181,13 +181,15 @@ def test_bad_breakpoints_are_reported_and_do_not_stop_the_run(argos, tmp_path, s
     started = dap.start(breakpoints={
         other: [3],
         script: [{"line": line_of(script, ACTIONS), "condition": "robot.id =="},  # does not compile
-                 {"line": line_of(script, WHEELS), "condition": 'robot.nothing.x > 1 or robot.id == "fb0"'}]})
+                 {"line": line_of(script, WHEELS), "condition": 'robot.nothing.x > 1 or robot.id == "fb0"'},
+                 {"line": line_of(script, FIRST), "hitCondition": "sometimes"}]})
     [unrun] = started["breakpoints"][other]
     assert unrun["verified"] is False
     assert "other.lua" in unrun["message"] and "no controller or loop function" in unrun["message"]
-    syntax, raising = started["breakpoints"][script]
+    syntax, raising, hits = started["breakpoints"][script]
     assert syntax["verified"] is False and syntax["message"].startswith("condition: ")
     assert raising["verified"] is True
+    assert hits["verified"] is False and hits["message"].startswith("hitCondition")
 
     assert dap.finish() == 0
     assert dap.events_named("stopped") == []
