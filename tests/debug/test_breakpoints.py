@@ -3,7 +3,8 @@ a conditional breakpoint stops the right robot at the right tick, and what the s
 there (locals, upvalues, robot.proximity, robot.positioning) is what a log() line in the same
 place prints under `essaim run` and what the recording holds; breakpoints in a `require`d
 module, function breakpoints with hit counts, logpoints; and the bad input: a file no robot
-runs, a condition that does not compile, a condition that raises, a hit condition that is not one."""
+runs, a condition that does not compile, a condition that raises, a hit condition that is
+not one."""
 import pytest
 
 from debug_support import (ACTIONS, FIRST, ROBOTS, SHORT, WHEELS, add_log_line, controller, essaim_run,
