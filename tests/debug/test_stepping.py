@@ -1,12 +1,13 @@
 """Stepping in `essaim debug` on the shipped foraging experiment (5 robots, 40 ticks): step
 over, in and out land on the expected lines (past the end of step(): the same robot's next
 step()); stepping back returns to the robot's previous step() and shows what was seen there
-the first time; reverse-continue returns to the previous hit; run to tick, pause and stop on
+the first time (a robot whose controller failed: the boundary before that tick);
+reverse-continue returns to the previous hit; run to tick, pause and stop on
 entry stop at tick boundaries. Going back changes nothing: the recording of such a session is
 byte for byte that of `essaim run`."""
 import json
 
-from debug_support import ACTIONS, FIRST, SHORT, WHEELS, controller, essaim_run, line_of, recording
+from debug_support import ACTIONS, FIRST, SHORT, WHEELS, controller, essaim_run, insert_after, line_of, recording
 
 SENSING_FIRST = "local p = { tick = tick }"   # controllers/foraging/sensing.lua, percepts()'s first line
 
@@ -173,3 +174,19 @@ def test_pause_stops_at_the_next_tick_boundary_and_terminate_ends_the_run_cleanl
     assert dap.finish() == 0
     summary = json.loads((tmp_path / "dbg" / "summary.json").read_text())
     assert summary["ticks"] in (tick - 1, tick)  # ended where it was paused
+
+
+def test_step_back_of_a_robot_that_did_not_run_stops_at_the_boundary_before_that_tick(argos, tmp_path, session):
+    """fb1's controller fails at tick 6 (essaim run then stops that robot): from tick 9, its
+    previous step() does not exist; stepBack stops before tick 8 (docs/debug-contract.md)."""
+    script = controller(argos)
+    insert_after(script, FIRST, '  if robot.id == "fb1" and tick == 6 then error("injected failure") end')
+    dap = session([argos, *SHORT, "--out", tmp_path / "dbg"])
+    dap.start(breakpoints={script: [{"line": line_of(script, WHEELS), "condition": 'robot.id == "fb3" and tick == 9'}]})
+    dap.stopped()
+    fb1 = dap.threads()["fb1"]
+    stop = dap.resume("stepBack", fb1)
+    assert stop["reason"] == "step"
+    assert [f["name"] for f in dap.frames(fb1)] == ["before tick 8"]
+    dap.set_breakpoints(script, [])
+    assert dap.run_to_end(fb1) == 0
