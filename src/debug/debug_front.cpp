@@ -31,7 +31,7 @@ bool Forward(int from, int to) {
 
 // What a simulation tells the front on the status pipe.
 struct Status {
-  int kind;   // kLive: `value` is the live simulation's pid; kExit: its exit code
+  int kind;  // kLive: `value` is the live simulation's pid; kExit: its exit code
   int value;
 };
 constexpr int kLive = 1, kExit = 0;
