@@ -85,6 +85,8 @@ def test_the_repl_evaluates_statements_and_other_robots_are_readable(argos, tmp_
     frame = dap.frames(fb1)[0]["id"]
     dap.evaluate("probe_value = 3", frame, context="repl")
     assert dap.value("probe_value * 2", frame) == "6"
+    hover = dap.evaluate("actions", frame, context="hover")  # a table: opened by its reference
+    assert hover["variablesReference"] > 0 and "left" in dap.variables(hover["variablesReference"])
     assert dap.value("robot.id").strip("\"'") == "fb1"  # no frame: the thread that stopped
     fb3 = dap.threads()["fb3"]
     other = dap.frames(fb3)[0]["id"]
