@@ -19,12 +19,12 @@ void DebugSession::EndCheckpoints() {
   if (checkpoints_) checkpoints_->EndAll();
 }
 
-bool DebugSession::Fired(long long tick, long long index) {
+bool DebugSession::Fired(const RunPosition& where) {
   if (!replay_.active) return false;
-  if (replay_.kind == "fire") return tick == replay_.tick && index == replay_.fire;
-  if (replay_.kind == "search" && (tick < replay_.tick || (tick == replay_.tick && index < replay_.fire))) {
-    replay_.found_tick = tick;
-    replay_.found_fire = index;
+  if (replay_.kind == "fire") return where == replay_.at;
+  if (replay_.kind == "search" && where < replay_.at) {
+    replay_.found = true;
+    replay_.found_at = where;
   }
   return false;
 }
@@ -42,19 +42,20 @@ void DebugSession::GoBack(const Value& request) {
   const long long now = stop_.boundary ? BoundaryTick() : debugger_.Tick();
   if (step_back && now - 1 >= 1) {
     target.kind = "entry";
-    target.tick = now - 1;
+    target.at.tick = now - 1;
     GoTo(target, now - 2);
   }
   if (!step_back) {
-    // Where the client stands, as (tick, breakpoints fired before it in that tick + 1).
+    // Where the client stands: a hit before it is a breakpoint fired earlier in the run.
     target.kind = "search";
-    target.tick = now;
-    target.fire = stop_.boundary ? 0 : debugger_.FiresThisTick() + (stop_.reason == "breakpoint" ? 0 : 1);
-    const long long checkpoint = target.fire == 0 ? now - 2 : now - 1;
+    target.at = {now, 0, 0};
+    if (!stop_.boundary) target.at = debugger_.PositionOf(stop_.thread);
+    if (!stop_.boundary && stop_.reason != "breakpoint") ++target.at.fire;  // its last fire is behind
+    const long long checkpoint = stop_.boundary ? now - 2 : now - 1;
     if (checkpoint >= 0) GoTo(target, checkpoint);
   }
   target.kind = "boundary";  // nothing earlier: the start
-  target.tick = 1;
+  target.at = {1, 0, 0};
   target.reason = step_back ? "step" : "entry";
   target.description = "before tick 1";
   GoTo(target, 0);
@@ -65,8 +66,9 @@ Value DebugSession::OrderFor(const Replay& target) const {
   for (const auto& [path, args] : asked_breakpoints_) breakpoints.Set(path, args);
   return Value::MapOf(
       {{"kind", Value::OfString(target.kind)},
-       {"tick", Value::OfInteger(target.tick)},
-       {"fire", Value::OfInteger(target.fire)},
+       {"tick", Value::OfInteger(target.at.tick)},
+       {"slot", Value::OfInteger(target.at.slot)},
+       {"fire", Value::OfInteger(target.at.fire)},
        {"thread", Value::OfInteger(target.thread)},
        {"reason", Value::OfString(target.reason)},
        {"description", Value::OfString(target.description)},
@@ -102,8 +104,7 @@ void DebugSession::TakeOrder(const std::string& text) {
   replay_ = Replay();
   replay_.active = true;
   replay_.kind = StringField(o, "kind");
-  replay_.tick = IntField(o, "tick");
-  replay_.fire = IntField(o, "fire");
+  replay_.at = {IntField(o, "tick"), IntField(o, "slot"), IntField(o, "fire")};
   replay_.thread = static_cast<int>(IntField(o, "thread"));
   replay_.reason = StringField(o, "reason");
   replay_.description = StringField(o, "description");
@@ -115,28 +116,28 @@ void DebugSession::TakeOrder(const std::string& text) {
   run_to_tick_ = 0;
   debugger_.Resume(StepMode::None, 0, nullptr);
   debugger_.SetQuiet(true);
-  if (replay_.kind == "entry") debugger_.SetEntryTarget(replay_.thread, replay_.tick);
+  if (replay_.kind == "entry") debugger_.SetEntryTarget(replay_.thread, replay_.at.tick);
 }
 
 // At a boundary while re-simulating: the target reached (a stop), a search concluded, or
 // simply on. True when it stopped here.
 bool DebugSession::ReplayBoundary() {
   const long long next = BoundaryTick();
-  if (replay_.kind == "boundary" && next == replay_.tick) {
+  if (replay_.kind == "boundary" && next == replay_.at.tick) {
     BoundaryStop(replay_.reason, replay_.thread, replay_.description);
     return true;
   }
-  if (replay_.kind == "search" && next > replay_.tick) ConcludeSearch();
-  if (replay_.kind == "entry" && next > replay_.tick) {
+  if (replay_.kind == "search" && next > replay_.at.tick) ConcludeSearch();
+  if (replay_.kind == "entry" && next > replay_.at.tick) {
     // The robot did not run at that tick (it died, or its controller failed): the boundary
     // before it instead.
     Replay target = replay_;
     target.kind = "boundary";
     target.reason = "step";
-    target.description = "before tick " + std::to_string(replay_.tick);
-    GoTo(target, replay_.tick - 1);
+    target.description = "before tick " + std::to_string(replay_.at.tick);
+    GoTo(target, replay_.at.tick - 1);
   }
-  if (replay_.kind == "fire" && next > replay_.tick) {  // never expected: a run is deterministic
+  if (replay_.kind == "fire" && next > replay_.at.tick) {  // never expected: a run is deterministic
     BoundaryStop("breakpoint", replay_.thread, "before tick " + std::to_string(next));
     return true;
   }
@@ -145,23 +146,21 @@ bool DebugSession::ReplayBoundary() {
 
 void DebugSession::ConcludeSearch() {
   Replay target = replay_;
-  if (replay_.found_tick >= 0) {
+  if (replay_.found) {
     target.kind = "fire";
-    target.tick = replay_.found_tick;
-    target.fire = replay_.found_fire;
-    GoTo(target, replay_.found_tick - 1);
+    target.at = replay_.found_at;
+    GoTo(target, replay_.found_at.tick - 1);
   }
   const long long from = replay_.from_tick;
   if (from <= 0 || checkpoints_->NewestAtOrBefore(from - 1) < 0) {
     target.kind = "boundary";
-    target.tick = 1;
+    target.at = {1, 0, 0};
     target.reason = "entry";
     target.description = "before tick 1";
     GoTo(target, 0);
   }
-  target.tick = from + 1;  // every fire up to the checkpoint's tick
-  target.fire = 0;
-  target.found_tick = -1;
+  target.at = {from + 1, 0, 0};  // every fire up to the checkpoint's tick
+  target.found = false;
   GoTo(target, from - 1);
 }
 

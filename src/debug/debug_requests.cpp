@@ -93,6 +93,12 @@ std::vector<LineBreakpoint> DebugSession::ApplyBreakpoints(const Value& args, st
       bp.log_message = StringField(b, "logMessage");
       asked.push_back(bp);
     }
+  else if (const Value* lines = args.Find("lines"))  // the protocol's older form
+    for (const Value& line : lines->list) {
+      LineBreakpoint bp;
+      bp.line = static_cast<int>(line.integer);
+      asked.push_back(bp);
+    }
   const std::string why_not = *file + ": no controller or loop function of this experiment runs this file";
   return debugger_.SetBreakpoints(*file, asked, FileRuns(*file), why_not);
 }
@@ -182,6 +188,11 @@ void DebugSession::StackTrace(const Value& request) {
         {{"id", Int(thread * kFramesPerThread)}, {"name", Str(name)}, {"line", Int(0)}, {"column", Int(0)}}));
   }
   const long long total = static_cast<long long>(frames.list.size());
+  const Value& args = ObjectField(request, "arguments");
+  const auto start = static_cast<size_t>(std::clamp(IntField(args, "startFrame"), 0LL, total));
+  const long long levels = IntField(args, "levels");
+  frames.list.erase(frames.list.begin(), frames.list.begin() + static_cast<long>(start));
+  if (levels > 0 && static_cast<size_t>(levels) < frames.list.size()) frames.list.resize(static_cast<size_t>(levels));
   channel_.Respond(request, Value::MapOf({{"stackFrames", std::move(frames)}, {"totalFrames", Int(total)}}));
 }
 
@@ -324,7 +335,7 @@ DebugSession::After DebugSession::RunToTick(const Value& request) {
     channel_.Respond(request, Value());
     Replay target;
     target.kind = "boundary";
-    target.tick = tick;
+    target.at.tick = tick;
     target.thread = last_thread_ ? last_thread_ : stop_.thread;
     target.reason = "goto";
     target.description = "before tick " + std::to_string(tick);

@@ -60,7 +60,7 @@ class DebugSession : public DebugListener {
   // DebugListener
   void Stopped(int thread, lua_State* L, const StopInfo& why) override;
   void Console(const std::string& text) override;
-  bool Fired(long long tick, long long index) override;
+  bool Fired(const RunPosition& where) override;
 
  private:
   enum class After { Stay, Resume };
@@ -78,12 +78,13 @@ class DebugSession : public DebugListener {
   struct Replay {
     bool active = false;
     std::string kind;
-    long long tick = 0, fire = 0;  // the target, or the search's end
+    RunPosition at;  // the target, or where the search ends
     int thread = 0;
     std::string reason, description;
-    long long from_tick = 0;                    // the checkpoint's boundary
-    long long found_tick = -1, found_fire = 0;  // a search's last hit so far
-    size_t divergences = 0;                     // how many the process that went back had
+    long long from_tick = 0;  // the checkpoint's boundary
+    bool found = false;
+    RunPosition found_at;    // a search's last hit so far
+    size_t divergences = 0;  // how many the process that went back had
   };
   struct Handle {
     enum class Kind { Locals, Upvalues, Globals, Table } kind;

@@ -1,5 +1,6 @@
 """`essaim debug` driven by a few DAP messages (the full client suite is tests/debug/): a
-breakpoint with a condition, a look at the frame, a step back to the previous tick, and the
+breakpoint with a condition, a look at the frame, a step back to the previous tick, a reverse
+continue to the previous hit, and the
 run's end with the same summary as `essaim run`; a client that just leaves."""
 import json
 import subprocess
@@ -84,6 +85,12 @@ def test_a_conditional_breakpoint_a_step_back_and_the_same_summary_as_run(tmp_pa
     dap.request("stepBack", threadId=3)
     assert dap.event("stopped")["body"]["reason"] == "step"
     frame = dap.request("stackTrace", threadId=3)["body"]["stackFrames"][0]
+    assert dap.request("evaluate", expression="count", frameId=frame["id"])["body"]["result"] == "3"
+    dap.request("setBreakpoints", source={"path": "c.lua"}, breakpoints=[{"line": 4, "condition": 'robot.id == "fb0"'}])
+    dap.request("reverseContinue", threadId=3)  # fb0's hit at tick 3: the last one before here
+    assert dap.event("stopped")["body"] == {"reason": "breakpoint", "threadId": 2, "allThreadsStopped": True,
+                                           "description": "breakpoint"}
+    frame = dap.request("stackTrace", threadId=2)["body"]["stackFrames"][0]
     assert dap.request("evaluate", expression="count", frameId=frame["id"])["body"]["result"] == "3"
     dap.request("setBreakpoints", source={"path": "c.lua"}, breakpoints=[])
     dap.request("continue", threadId=3)

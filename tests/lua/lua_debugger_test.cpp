@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <lua.hpp>
 
 #include "lua/debug/chunk_lines.h"
@@ -73,8 +74,10 @@ struct Recorder : DebugListener {
   std::vector<std::string> locals;
   std::vector<std::string> console;
   std::string evaluated;
+  std::function<void(lua_State*)> on_stop;  // runs first at each stop
 
   void Stopped(int thread, lua_State* L, const StopInfo&) override {
+    if (on_stop) on_stop(L);
     const std::vector<LuaFrame> f = LuaFrames(L, 0);
     lines.push_back(f.empty() ? 0 : f[0].line);
     std::vector<std::string> names;
@@ -86,7 +89,7 @@ struct Recorder : DebugListener {
     debugger->Resume(--stops_left > 0 ? next_mode : StepMode::None, thread, L);
   }
   void Console(const std::string& text) override { console.push_back(text); }
-  bool Fired(long long, long long) override { return false; }
+  bool Fired(const RunPosition&) override { return false; }
 };
 
 struct DebuggedState {
@@ -170,6 +173,28 @@ TEST(LuaDebugger, LogpointsInterpolateAndNeverStop) {
   s.RunStep();
   EXPECT_TRUE(s.recorder.lines.empty());
   EXPECT_EQ(s.recorder.console, std::vector<std::string>({"fb0 tick 42: x is 1, tick 42\n"}));
+}
+
+TEST(LuaDebugger, SetVariableChangesALocalOfTheStoppedFrame) {
+  DebuggedState s;
+  std::string error, shown;
+  s.recorder.on_stop = [&](lua_State* L) {
+    LuaVariable v;
+    EXPECT_TRUE(SetVariableIn(L, VariableScope::Locals, 0, -1, "x", "x + 41", 0, &v, &error)) << error;
+    shown = v.value;
+  };
+  s.recorder.stops_left = 1;
+  s.Break(10);  // x is 1 there
+  s.RunStep();
+  EXPECT_EQ(shown, "42");
+  EXPECT_EQ(s.recorder.evaluated, "420");  // the frame sees the new value
+}
+
+TEST(RunPosition, OrderIsTickThenWhoRunsThenFires) {
+  EXPECT_TRUE((RunPosition{4, 9, 3}) < (RunPosition{5, 2, 1}));
+  EXPECT_TRUE((RunPosition{5, 2, 7}) < (RunPosition{5, 3, 1}));
+  EXPECT_TRUE((RunPosition{5, 3, 1}) < (RunPosition{5, 3, 2}));
+  EXPECT_FALSE((RunPosition{5, 3, 2}) < (RunPosition{5, 3, 2}));
 }
 
 }  // namespace

@@ -241,7 +241,9 @@ bool LuaDebugger::BreakpointFires(lua_State* L, const std::string& file, int lin
     }
     if (fires) continue;
     fires = true;
-    if (listener_->Fired(tick_, ++fires_)) quiet_ = false;  // a going back's target
+    if (t->fires_tick != tick_) t->fires_tick = tick_, t->fires = 0;
+    ++t->fires;
+    if (listener_->Fired({tick_, SlotOf(t->id), t->fires})) quiet_ = false;  // a going back's target
   }
   return fires && !quiet_;
 }
@@ -293,6 +295,18 @@ void LuaDebugger::OnLine(lua_State* L, lua_Debug* ar, Thread* t) {
     Stop(t, L, {"breakpoint", "breakpoint", "", 0});
 }
 
+// Robots run in model order (thread i + 2); the loop functions before them (pre_step) or after
+// them (post_step).
+long long LuaDebugger::SlotOf(int thread) const {
+  if (thread >= 2) return thread;
+  return robots_ran_tick_ == tick_ ? (1LL << 40) : 1;
+}
+
+RunPosition LuaDebugger::PositionOf(int thread) const {
+  const Thread* t = FindThread(thread);
+  return {tick_, SlotOf(thread), t && t->fires_tick == tick_ ? t->fires : 0};
+}
+
 void LuaDebugger::SetEntryTarget(int thread, long long tick) {
   entry_thread_ = thread;
   entry_tick_ = tick;
@@ -307,6 +321,7 @@ void LuaDebugger::Hook(lua_State* L, lua_Debug* ar) {
   if (detached_) return;
   Thread* t = ThreadOf(L);
   if (!t) return;
+  if (t->id >= 2) robots_ran_tick_ = tick_;
   if (entry_thread_ == t->id && tick_ == entry_tick_ && ar->event == LUA_HOOKLINE) {
     entry_thread_ = 0;
     return Stop(t, L, {"step", "step back", "", 0});

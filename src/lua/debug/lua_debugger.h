@@ -37,6 +37,21 @@ struct FunctionBreakpoint {
 
 enum class StepMode { None, In, Over, Out };
 
+/// A place in the run, ordered as the run goes: the tick, then who runs within it (the loop
+/// functions' pre_step, robots in model order, the loop functions' post_step), then the
+/// breakpoints that thread fired so far in that tick. Going back compares positions.
+struct RunPosition {
+  long long tick = 0;
+  long long slot = 0;  // the thread's place within the tick
+  long long fire = 0;  // its breakpoints fired in the tick, from 1
+  bool operator<(const RunPosition& o) const {
+    if (tick != o.tick) return tick < o.tick;
+    if (slot != o.slot) return slot < o.slot;
+    return fire < o.fire;
+  }
+  bool operator==(const RunPosition& o) const { return tick == o.tick && slot == o.slot && fire == o.fire; }
+};
+
 /// Why a thread stopped, as DAP's "stopped" event says it.
 struct StopInfo {
   std::string reason;  // breakpoint, function breakpoint, exception, step
@@ -53,9 +68,8 @@ class DebugListener {
   virtual void Stopped(int thread, lua_State* L, const StopInfo& why) = 0;
   /// A logpoint's or a failed condition's text ("fb7 tick 42: ...\n").
   virtual void Console(const std::string& text) = 0;
-  /// A breakpoint fired: the `index`th (from 1) of this tick, counted over all threads;
-  /// true: stop there even while quiet (a going back's target).
-  virtual bool Fired(long long tick, long long index) = 0;
+  /// A breakpoint fired at `where`; true: stop there even while quiet (a going back's target).
+  virtual bool Fired(const struct RunPosition& where) = 0;
 };
 
 class LuaDebugger : public LuaDebugAttach {
@@ -67,7 +81,8 @@ class LuaDebugger : public LuaDebugAttach {
     std::string name;  // the robot's id, or "loop functions"
     LuaGuard* guard = nullptr;
     lua_State* L = nullptr;
-    int pending_function = -1;  // a function breakpoint hit at its call: stop at its first line
+    int pending_function = -1;             // a function breakpoint hit at its call: stop at its first line
+    long long fires_tick = -1, fires = 0;  // breakpoints it fired in tick fires_tick
   };
 
   /// Thread ids by the guard's name ("robot fb7", "loop functions"), before states open.
@@ -82,12 +97,9 @@ class LuaDebugger : public LuaDebugAttach {
   std::string CanonicalFile(const std::string& path) const;
 
   /// The tick log lines show now (conditions' `tick`, logpoints' prefix, stepping).
-  void SetTick(long long tick) {
-    if (tick != tick_) fires_ = 0;
-    tick_ = tick;
-  }
-  /// Breakpoints fired so far in this tick (a position in it, for going back).
-  long long FiresThisTick() const { return fires_; }
+  void SetTick(long long tick) { tick_ = tick; }
+  /// Where `thread` stands now in this tick: its slot and the breakpoints it fired so far.
+  RunPosition PositionOf(int thread) const;
   /// Stops (reason "step") at the first line `thread` runs in tick `tick`, quiet or not.
   void SetEntryTarget(int thread, long long tick);
   /// The states are no longer watched (a forked copy has no watchdog thread).
@@ -132,6 +144,7 @@ class LuaDebugger : public LuaDebugAttach {
   const std::string& CanonicalSource(const char* source);
   void Stop(Thread* t, lua_State* L, StopInfo why);
   std::string Prefix(const Thread& t) const;
+  long long SlotOf(int thread) const;
 
   DebugListener* listener_;
   std::map<std::string, int> ids_;
@@ -145,7 +158,7 @@ class LuaDebugger : public LuaDebugAttach {
   bool quiet_ = false;
   bool detached_ = false;
   long long tick_ = 0;
-  long long fires_ = 0;
+  long long robots_ran_tick_ = -1;  // the last tick a robot thread was seen running
   int entry_thread_ = 0;
   long long entry_tick_ = 0;
   struct Stepping {
