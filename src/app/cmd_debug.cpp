@@ -181,7 +181,8 @@ int Debug(DebugArgs& a) {
     serve = a.serve;
     return ApplyLaunchArguments(arguments, &run, &serve, message) && DescribeLaunch(run, arguments, launch, message);
   });
-  if (!session.Configure()) return kExitOk;  // the client left before the run started
+  // The client left before the run started: after a refused launch, as bad input.
+  if (!session.Configure()) return session.LaunchFailed() ? kExitBadInput : kExitOk;
   // From here this process is the front; the run happens in the simulation it forks.
   const pid_t front = getpid();
   FrontLink link;

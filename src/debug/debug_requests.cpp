@@ -45,7 +45,8 @@ void DebugSession::Initialize(const Value& request) { channel_.Respond(request, 
 void DebugSession::Launch(const Value& request) {
   std::string error;
   DebugLaunch launch;
-  if (!launcher_(ObjectField(request, "arguments"), &launch, &error)) {
+  launch_failed_ = !launcher_(ObjectField(request, "arguments"), &launch, &error);
+  if (launch_failed_) {
     channel_.Respond(request, Value(), false, error);
     return;
   }

@@ -39,6 +39,9 @@ class DebugSession : public DebugListener {
 
   /// Serves the client until configurationDone (true) or until it goes (false).
   bool Configure();
+  /// Whether the last launch request failed: a session that ends before its run then
+  /// ends as bad input (exit 2), as `essaim run` on the same file.
+  bool LaunchFailed() const { return launch_failed_; }
   LuaDebugger& Debugger() { return debugger_; }
   /// The World once made (its states are attached as they open); null after it goes.
   void SetWorld(World* world) { world_ = world; }
@@ -155,6 +158,7 @@ class DebugSession : public DebugListener {
   World* world_ = nullptr;
   bool configured_ = false;
   bool launched_ = false;
+  bool launch_failed_ = false;  // the last launch request was refused (bad input)
   bool terminate_ = false;
   bool detached_ = false;
   int pause_thread_ = 0;  // a pause asked while running (thread), or 0
