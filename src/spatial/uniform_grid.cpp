@@ -20,14 +20,19 @@ void UniformGrid::CoverBox(const Vec2& min, const Vec2& max, double cell, size_t
   if (!(cell > 1e-3)) cell = 1e-3;  // also catches NaN
   cell = std::min(cell, std::max(extent.x(), extent.y()));
   max_cells = std::max<size_t>(max_cells, 1);
-  int columns = 1, rows = 1;
+  if (!std::isfinite(extent.x()) || !std::isfinite(extent.y())) {  // a box near the double range's end
+    SetCells(min, std::numeric_limits<double>::infinity(), 1, 1);
+    return;
+  }
+  // Counted in double: a huge box over a small cell is past int's range until the cell grows.
+  double columns = 1, rows = 1;
   for (;;) {
-    columns = std::max(1, static_cast<int>(std::ceil(extent.x() / cell)));
-    rows = std::max(1, static_cast<int>(std::ceil(extent.y() / cell)));
-    if (static_cast<size_t>(columns) * rows <= max_cells) break;
+    columns = std::max(1.0, std::ceil(extent.x() / cell));
+    rows = std::max(1.0, std::ceil(extent.y() / cell));
+    if (columns * rows <= static_cast<double>(max_cells)) break;
     cell *= 1.5;
   }
-  SetCells(min, cell, columns, rows);
+  SetCells(min, cell, static_cast<int>(columns), static_cast<int>(rows));
 }
 
 void UniformGrid::CoverSpan(const Vec2& min, const Vec2& max, double cell, double max_cells) {

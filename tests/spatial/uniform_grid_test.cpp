@@ -120,6 +120,21 @@ TEST(UniformGrid, AnyDoubleLandsInAValidCell) {
   }
 }
 
+// Found by fuzz_argos: an arena of 1e46 m over half-metre cells cast ~1e46 to int (UB)
+// before the cell grew; an infinite box used to grow the cell forever.
+TEST(UniformGrid, AHugeOrInfiniteBoxGetsAGridWithinItsCellBudget) {
+  UniformGrid g;
+  g.CoverBox(Vec2(-4.9e45, -1), Vec2(4.9e45, 1), 0.5, 1000);
+  EXPECT_GE(g.Columns(), 1);
+  EXPECT_LE(static_cast<size_t>(g.Columns()) * g.Rows(), 1000u);
+  EXPECT_GE(g.CellSize(), 4.9e45 * 2 / 1000);
+  g.CoverBox(Vec2(-HUGE_VAL, 0), Vec2(1, 1), 0.5, 1000);
+  EXPECT_EQ(g.Columns(), 1);
+  EXPECT_EQ(g.Rows(), 1);
+  EXPECT_GE(g.Column(0.3), 0);
+  EXPECT_LT(g.Column(0.3), 1);
+}
+
 TEST(UniformGrid, PointsInABoxMatchBruteForceInAscendingOrderPerCell) {
   Rng rng;
   rng.Seed(11);
