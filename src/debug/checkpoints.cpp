@@ -12,47 +12,21 @@
 #include <cstdlib>
 #include <ctime>
 
+#include "core/fd_io.h"
+#include "core/stopwatch.h"
+
 namespace essaim {
 
 namespace {
 constexpr double kIntervalSeconds = 0.2;
 constexpr size_t kMaxCheckpoints = 48;  // thinned past this: every other one ended
 
-double CpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-bool ReadAll(int fd, void* data, size_t size) {
-  auto* p = static_cast<char*>(data);
-  while (size > 0) {
-    const ssize_t n = read(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
-
-bool WriteAll(int fd, const void* data, size_t size) {
-  auto* p = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t n = write(fd, p, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
 }  // namespace
 
-bool Checkpoints::Due() const { return last_cpu_ < 0 || CpuSeconds() - last_cpu_ >= kIntervalSeconds; }
+bool Checkpoints::Due() const { return last_cpu_ < 0 || ProcessCpuSeconds() - last_cpu_ >= kIntervalSeconds; }
 
 bool Checkpoints::Take(long long tick, std::string* order) {
-  last_cpu_ = CpuSeconds();
+  last_cpu_ = ProcessCpuSeconds();
   int p[2];
   if (pipe(p) != 0) return false;
   // What this process's files hold now, for the copy that will go on from here.
@@ -99,7 +73,7 @@ bool Checkpoints::Take(long long tick, std::string* order) {
     close(wait_fd);
     entries_.push_back(self);
     RestoreFiles();
-    last_cpu_ = CpuSeconds();
+    last_cpu_ = ProcessCpuSeconds();
     return true;
   }
 }

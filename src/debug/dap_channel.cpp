@@ -10,23 +10,13 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/fd_io.h"
 #include "core/value_json.h"
 
 namespace essaim {
 
 namespace {
 constexpr size_t kMaxMessage = 64u << 20;  // a client that sends more is not speaking DAP
-
-bool WriteAll(int fd, const std::string& text) {
-  size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<size_t>(n);
-  }
-  return true;
-}
 }  // namespace
 
 long long IntField(const Value& v, const char* key, long long fallback) {
@@ -131,7 +121,7 @@ bool DapChannel::Send(Value message) {
   message.Set("seq", Value::OfInteger(++seq_));
   const std::string body = ValueJsonLine(message);
   const std::string text = "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
-  if (!WriteAll(out_, text)) closed_ = true;
+  if (!WriteAll(out_, text.data(), text.size())) closed_ = true;
   return !closed_;
 }
 

@@ -11,6 +11,8 @@
 #include <cerrno>
 #include <cstdio>
 
+#include "core/fd_io.h"
+
 namespace essaim {
 
 namespace {
@@ -20,12 +22,7 @@ bool Forward(int from, int to) {
   do n = read(from, chunk, sizeof chunk);
   while (n < 0 && errno == EINTR);
   if (n <= 0) return false;
-  for (ssize_t done = 0; done < n;) {
-    const ssize_t w = write(to, chunk + done, static_cast<size_t>(n - done));
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) return true;  // the client is gone; the simulation learns it from the socket
-    done += w;
-  }
+  WriteAll(to, chunk, static_cast<size_t>(n));  // the client gone: the simulation learns it from the socket
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "core/fd_io.h"
 #include "debug/dap_channel.h"
 #include "serve/live_experiment.h"
 #include "serve/view_server.h"
@@ -15,17 +16,6 @@ namespace essaim {
 
 namespace {
 constexpr auto kFrameInterval = std::chrono::milliseconds(50);
-
-bool WriteAll(int fd, const char* data, size_t size) {
-  while (size > 0) {
-    const ssize_t n = write(fd, data, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    data += n;
-    size -= static_cast<size_t>(n);
-  }
-  return true;
-}
 
 // A message: its kind ('S' scene, 'F' frame), its length, then its JSON text.
 struct Header {
@@ -42,7 +32,7 @@ void ViewPublisher::Send(char kind, const std::string& text) {
   h.size = static_cast<uint32_t>(text.size());
   // One writer at a time (the live simulation), so a message is never interleaved; a
   // front gone (EPIPE) ends the session anyway.
-  if (WriteAll(fd_, reinterpret_cast<const char*>(&h), sizeof h)) WriteAll(fd_, text.data(), text.size());
+  if (WriteAll(fd_, &h, sizeof h)) WriteAll(fd_, text.data(), text.size());
 }
 
 void ViewPublisher::Publish(const World& world, Value debug) {
