@@ -11,6 +11,8 @@
 // Box2D solved it in, not the one carried here (the one inexact step of the scheme).
 #include <box2d/box2d.h>
 
+#include <cstring>
+
 #include "physics/argos_dynamics.h"
 #include "physics/physics_world.h"
 #include "physics/physics_world_impl.h"
@@ -36,17 +38,22 @@ bool Touches(b2Body* body) {
   return false;
 }
 
-/// The friction joint's solve between the kinematic servo and a lone `body`, both anchors at
-/// the centres: b2FrictionJoint::InitVelocityConstraints (warm start scaled by `dt_ratio`),
-/// then kVelocityIterations of SolveVelocityConstraints, in Box2D's float operations.
-void SolveServo(b2Body* body, float h, float dt_ratio, PhysicsWorld::Impl::FreeServo* s) {
+template <class T>
+bool SameBits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+}  // namespace
+
+// b2FrictionJoint::InitVelocityConstraints (warm start scaled by `dt_ratio`), then
+// kVelocityIterations of SolveVelocityConstraints, both anchors at the centres.
+void SolveServo(b2Vec2* v, float* w, float h, float dt_ratio, PhysicsWorld::Impl::FreeServo* s) {
   const float mB = s->inv_mass, iB = s->inv_moment;
   float det = mB * mB;  // b2Mat22::GetInverse of K = diag(mB, mB)
   if (det != 0.0f) det = 1.0f / det;
   const float linear_mass = det * mB;
   const float angular_mass = 1.0f / iB;
-  b2Vec2 vB = body->GetLinearVelocity();
-  float wB = body->GetAngularVelocity();
+  b2Vec2 vB = *v;
+  float wB = *w;
   s->linear *= dt_ratio;
   s->angular *= dt_ratio;
   vB += mB * s->linear;
@@ -54,22 +61,28 @@ void SolveServo(b2Body* body, float h, float dt_ratio, PhysicsWorld::Impl::FreeS
   const float max_angular = h * s->max_torque;
   const float max_linear = h * s->max_force;
   for (int k = 0; k < dyn2d::kVelocityIterations; ++k) {
-    const float old_angular = s->angular;
+    const float old_angular = s->angular, old_w = wB;
+    const b2Vec2 old_linear = s->linear, old_v = vB;
     s->angular = b2Clamp(s->angular + -angular_mass * (wB - s->w), -max_angular, max_angular);
     wB += iB * (s->angular - old_angular);
     const b2Vec2 cdot = vB - s->v;
-    const b2Vec2 old_linear = s->linear;
     s->linear += -b2Vec2(linear_mass * cdot.x, linear_mass * cdot.y);
     if (s->linear.LengthSquared() > max_linear * max_linear) {
       s->linear.Normalize();
       s->linear *= max_linear;
     }
     vB += mB * (s->linear - old_linear);
+    // A pass that changed no bit is a fixed point: the passes left would change none either
+    // (a robot at its servo's speed reaches one after a pass or two).
+    if (SameBits(s->angular, old_angular) && SameBits(wB, old_w) && SameBits(s->linear, old_linear) &&
+        SameBits(vB, old_v))
+      break;
   }
-  body->SetLinearVelocity(vB);
-  body->SetAngularVelocity(wB);
+  *v = vB;
+  *w = wB;
 }
 
+namespace {
 const b2FrictionJoint& ServoJoint(const b2Body* servo) {
   return *static_cast<const b2FrictionJoint*>(servo->GetJointList()->joint);
 }
@@ -92,9 +105,15 @@ void SolveFreeServos(PhysicsWorld::Impl* im, const std::vector<void*>& robots, b
   ++im->substep_stamp;
   MarkTied(im);
   const float dt_ratio = im->inv_dt0 * h;  // b2World::Step's step.dtRatio
+  // Grips read and move bodies between sub-steps: no robot sleeps in a tick that has one.
+  const bool dormancy = im->dormancy && im->grip_robots.empty();
   for (size_t i = 0; i < robots.size(); ++i) {
     b2Body* body = AsBody(robots[i]);
     PhysicsWorld::Impl::FreeServo& s = im->free_servos[i];
+    if (s.dormant) {
+      if (DormantSubstep(body, &s, h, dt_ratio) && ++im->dormant_substeps) continue;
+      WakeDormant(body, &s, 0);
+    }
     if (s.tied_at == im->substep_stamp || Touches(body)) {
       if (s.free) im->controls[i]->SetEnabled(true);
       s.free = false;
@@ -109,7 +128,12 @@ void SolveFreeServos(PhysicsWorld::Impl* im, const std::vector<void*>& robots, b
       servo->SetEnabled(false);
       s.free = true;
     }
-    SolveServo(body, h, dt_ratio, &s);
+    if (dormancy && DormantSubstep(body, &s, h, dt_ratio) && ++im->dormant_substeps) continue;
+    b2Vec2 v = body->GetLinearVelocity();
+    float w = body->GetAngularVelocity();
+    SolveServo(&v, &w, h, dt_ratio, &s);
+    body->SetLinearVelocity(v);
+    body->SetAngularVelocity(w);
   }
 }
 

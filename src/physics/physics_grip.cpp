@@ -99,17 +99,19 @@ b2Vec2 ContactPoint(const b2Vec2& disc, const GripQuery& q) {
 }
 }  // namespace
 
-b2Body* MakeGripperDisc(b2Body* robot, int index) {
+b2Body* MakeGripperDisc(b2World* shelf, const b2Body* robot, int index) {
   // ARGoS's gripper is a second body pinned to the base, its shape a sensor that collides with
   // nothing (robots still touch walls with their body): here a body of its own that Box2D
   // never moves nor files (static, disabled: no broadphase proxy to update every sub-step),
   // put on its robot's pose after every step (SyncGripperDiscs) for the rays that meet it.
+  // It lives in a world of its own that never steps: Box2D's step walks every body of its
+  // world's list three times a sub-step, disabled ones too.
   b2BodyDef bd;
   bd.type = b2_staticBody;
   bd.enabled = false;
   bd.position = robot->GetPosition();
   bd.angle = robot->GetAngle();
-  b2Body* body = robot->GetWorld()->CreateBody(&bd);
+  b2Body* body = shelf->CreateBody(&bd);
   b2CircleShape disc;
   disc.m_radius = static_cast<float>(kGripperRadius);
   disc.m_p = GripperDiscCentre(0);

@@ -159,26 +159,40 @@ namespace {
 /// The bounding circle of every shape (non-finite ones dropped: no ray can hit them
 /// either), filed in the ray grid by their boxes.
 template <class Impl>
-void FileRayCircles(Impl* im) {
-  std::vector<ShapeCircle>& circles = im->ray_circles;
-  circles.clear();
+void FileRayCircle(Impl* im, b2Fixture* f) {
+  const uintptr_t tag = f->GetUserData().pointer;
+  const BodyKind kind = TagKind(tag);
+  if (kind == BodyKind::None) return;
+  ShapeCircle c;
+  BoundingCircle(*f, &c.cx, &c.cy, &c.r);
+  c.r += kCircleSlack;
+  if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) return;
+  const int index = TagIndex(tag);
+  if (kind != BodyKind::Obstacle) c.robot = index;  // a robot's body or gripper disc
+  HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
+  c.fixture = f;
+  im->ray_circles.push_back(c);
+}
+
+/// Every shape in the worlds' body lists' order, each robot's gripper disc (kept apart, in
+/// Impl::disc_shelf) just before its body, where the disc's body stood in that list when
+/// it was made with its robot.
+template <class Impl>
+void GatherRayCircles(Impl* im) {
+  im->ray_circles.clear();
   for (auto& region : im->regions)
-    for (b2Body* b = region.world->GetBodyList(); b; b = b->GetNext()) {
+    for (b2Body* b = region.world->GetBodyList(); b; b = b->GetNext())
       for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
-        const uintptr_t tag = f->GetUserData().pointer;
-        const BodyKind kind = TagKind(tag);
-        if (kind == BodyKind::None) continue;
-        ShapeCircle c;
-        BoundingCircle(*f, &c.cx, &c.cy, &c.r);
-        c.r += kCircleSlack;
-        if (!std::isfinite(c.cx) || !std::isfinite(c.cy) || !std::isfinite(c.r)) continue;
-        const int index = TagIndex(tag);
-        if (kind != BodyKind::Obstacle) c.robot = index;  // a robot's body or gripper disc
-        HeightSpan(kind, index, im->obstacle_top, im->obstacle_bottom, &c.bottom, &c.top);
-        c.fixture = f;
-        circles.push_back(c);
+        if (TagKind(f->GetUserData().pointer) == BodyKind::Robot)
+          FileRayCircle(im, im->discs[TagIndex(f->GetUserData().pointer)]->GetFixtureList());
+        FileRayCircle(im, f);
       }
-    }
+}
+
+template <class Impl>
+void FileRayCircles(Impl* im) {
+  GatherRayCircles(im);
+  std::vector<ShapeCircle>& circles = im->ray_circles;
   const int n = static_cast<int>(circles.size());
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
   if (n > 0) lo = hi = Vec2(circles[0].cx, circles[0].cy);

@@ -71,7 +71,13 @@ void ShiftAlongVelocity(void* p, float h) {
 // The sub-step shift (argos_dynamics.h, "the step"): a tick shifts the bodies ahead by
 // kShiftSubsteps sub-steps along their velocity, steps, and shifts them back.
 void PhysicsWorld::ShiftDynamicBodies(float h) {
-  for (void* body : robots_) ShiftAlongVelocity(body, h);
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    Impl::FreeServo& s = impl_->free_servos[i];
+    if (s.dormant)
+      WakeDormant(AsBody(robots_[i]), &s, h);  // the tick's end: its pose shifted back
+    else
+      ShiftAlongVelocity(robots_[i], h);
+  }
   for (void* body : obstacles_) ShiftAlongVelocity(body, h);
 }
 

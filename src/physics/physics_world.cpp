@@ -37,6 +37,7 @@ PhysicsWorld::PhysicsWorld(const Model& model) : impl_(std::make_unique<Impl>())
   const size_t region_count = std::max<size_t>(1, model.physics.regions.size());
   if (region_count > 1) impl_->region_defs = model.physics.regions;
   MakeRegionWorlds(region_count, &impl_->regions);
+  impl_->disc_shelf = std::make_unique<b2World>(b2Vec2(0, 0));
 
   impl_->phys = model.physics;
   const PhysicsDef& phys = model.physics;
@@ -78,7 +79,7 @@ void PhysicsWorld::AddRobotBody(const RobotDef& r, int i) {
   md.center.SetZero();
   md.I = static_cast<float>(dyn2d::kRobotMoment);
   body->SetMassData(&md);
-  impl_->discs.push_back(MakeGripperDisc(body, i));
+  impl_->discs.push_back(MakeGripperDisc(impl_->disc_shelf.get(), body, i));
 
   // The servo: a kinematic body moving at the commanded velocity, tied to the robot by
   // a friction joint, which drives their relative velocity to zero with capped force

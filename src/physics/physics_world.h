@@ -2,6 +2,7 @@
 // wheel commands as a velocity servo with capped force and torque (as ARGoS's dynamics2d); ray and
 // overlap queries through Box2D's dynamic tree. No Box2D type crosses this header.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -85,6 +86,12 @@ class PhysicsWorld {
   /// migrate and the ghosts follow their owners (one thread, in index order), then the
   /// regions step at once on `runner`. Results do not depend on the runner.
   void Step(double dt, int substeps, const PhysicsRunner& runner = PhysicsRunner());
+  /// Whether a robot that touches nothing is moved outside Box2D while that gives Box2D's
+  /// result bit for bit (physics_dormant_robots.cpp; on by default). Off, Box2D steps every
+  /// robot: for tests and measurements, the results are the same.
+  void SetDormancy(bool on);
+  /// Robot sub-steps done outside Box2D so far.
+  int64_t DormantSubsteps() const;
   /// Box2D worlds: the model's regions, at least one.
   int RegionCount() const;
   /// The region whose world holds the robot's body now.

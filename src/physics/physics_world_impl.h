@@ -99,13 +99,23 @@ struct PhysicsWorld::Impl {
     float inv_mass = 0, inv_moment = 0;   // as b2Body's m_invMass, m_invI
     bool free = false;                    // solved outside Box2D now: its servo body is disabled
     int tied_at = -1;                     // the last sub-step stamp at which a grip tied the robot
+    /// Dormant (physics_dormant_robots.cpp): asleep in Box2D, moved here; its pose and velocity.
+    bool dormant = false;
+    b2Vec2 c{0, 0};  // m, Box2D's sweep centre (the body's origin)
+    float a = 0;     // rad
+    b2Vec2 vel{0, 0};
+    float spin = 0;  // rad/s
+    b2AABB tree;     // its proxy's box in the broad-phase tree, which stays put while it sleeps
   };
   /// Each robot's gripper disc (kGripperRadius), a fixture on a static, disabled body of its
   /// own (physics_grip.cpp): out of Box2D's broadphase, on its robot's pose between steps.
   std::vector<b2Body*> discs;
-  std::vector<FreeServo> free_servos;  // one per robot (used with one region only)
-  float inv_dt0 = 0;                   // 1/h of the world's last step: Box2D's warm-start ratio
-  int substep_stamp = 0;               // counts sub-steps, for FreeServo::tied_at
+  std::unique_ptr<b2World> disc_shelf;  // holds the discs' bodies; never stepped
+  std::vector<FreeServo> free_servos;   // one per robot (used with one region only)
+  float inv_dt0 = 0;                    // 1/h of the world's last step: Box2D's warm-start ratio
+  int substep_stamp = 0;                // counts sub-steps, for FreeServo::tied_at
+  bool dormancy = true;                 // PhysicsWorld::SetDormancy
+  int64_t dormant_substeps = 0;         // robot sub-steps done outside Box2D so far
 
   int RegionCount() const { return static_cast<int>(regions.size()); }
   /// Index of the region whose world holds `body`.
@@ -116,8 +126,9 @@ struct PhysicsWorld::Impl {
   }
 };
 
-/// Robot `index`'s gripper disc body (its fixture tagged Gripper `index`), turret at 0.
-b2Body* MakeGripperDisc(b2Body* robot, int index);
+/// Robot `index`'s gripper disc body (its fixture tagged Gripper `index`), turret at 0, made in
+/// `shelf` (Impl::disc_shelf).
+b2Body* MakeGripperDisc(b2World* shelf, const b2Body* robot, int index);
 /// Puts robot `index`'s disc body (`robot`: its b2Body) on its robot's pose.
 void SyncGripperDisc(PhysicsWorld::Impl* im, const b2Body* robot, int index);
 /// Puts every robot's disc body on its robot's pose.
@@ -129,6 +140,16 @@ void SyncGripperDiscs(PhysicsWorld::Impl* im, const std::vector<void*>& robots);
 /// Box2D's island holds the robot alone; the others get their servo back. `first`: the tick's
 /// first sub-step, whose new contacts are found first.
 void SolveFreeServos(PhysicsWorld::Impl* im, const std::vector<void*>& robots, bool first, float h);
+/// The friction joint's solve between a free robot's kinematic servo and the robot's velocity
+/// `v`, `w` (physics_free_robots.cpp): Box2D's float operations for a lone body.
+void SolveServo(b2Vec2* v, float* w, float h, float dt_ratio, PhysicsWorld::Impl::FreeServo* s);
+/// One sub-step of a free robot with no contact done outside Box2D, exactly as Box2D would
+/// have done it, the body put to sleep for it (physics_dormant_robots.cpp); false where that
+/// cannot be exact (its body then is awake, as before the call).
+bool DormantSubstep(b2Body* body, PhysicsWorld::Impl::FreeServo* s, float h, float dt_ratio);
+/// Wakes a dormant robot: its pose (moved `shift` seconds along its velocity, as the
+/// sub-step shift moves a body) and velocity back into Box2D.
+void WakeDormant(b2Body* body, PhysicsWorld::Impl::FreeServo* s, float shift);
 /// After the world stepped `h` seconds: the ratio Box2D's next warm start uses.
 inline void NoteStep(PhysicsWorld::Impl* im, float h) { im->inv_dt0 = 1.0f / h; }
 
