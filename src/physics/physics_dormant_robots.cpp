@@ -13,7 +13,7 @@
 //   stay the same; a pair found with the robot (another body's proxy moved onto it) gives it
 //   a contact, and it wakes before the next sub-step's Collide;
 // - waking puts its pose back with SetTransform, which must not move the proxy either: a
-//   sub-step is only done here if its end pose can be put back so (CanWakeAt).
+//   sub-step is only done here if its end pose can be put back so (CanSleepAt).
 // Continuous collision is off (physics_world.cpp), so no time-of-impact pass reads a sweep.
 #include <box2d/box2d.h>
 
@@ -67,16 +67,13 @@ bool ProxyWouldMove(const b2AABB& tree, const b2AABB& aabb, b2Vec2 displacement)
   return !huge.Contains(tree);
 }
 
-/// b2Fixture::Synchronize's box and displacement for a move from `c0` to `c1`.
-bool SubstepWouldMoveProxy(const b2AABB& tree, b2Vec2 c0, b2Vec2 c1, float r) {
-  const b2AABB box0 = CircleBox(c0, r), box1 = CircleBox(c1, r);
-  b2AABB swept;
-  swept.Combine(box0, box1);
-  return ProxyWouldMove(tree, swept, box1.GetCenter() - box0.GetCenter());
-}
-
-/// SetTransform's Synchronize(xf, xf) at `c`: no displacement.
-bool CanWakeAt(const b2AABB& tree, b2Vec2 c, float r) { return !ProxyWouldMove(tree, CircleBox(c, r), b2Vec2(0, 0)); }
+/// Whether a sub-step ending at `c` can be done here: Box2D's SynchronizeFixtures after it
+/// would not move the proxy, nor would SetTransform at `c` on waking (MoveProxy with no
+/// displacement). The second implies the first: the swept box of the sub-step is the union of
+/// the box at its start, which the tree box holds (the pose was last synced there), and the
+/// box at `c`; and the "huge" box MoveProxy grows from that union and a displacement holds
+/// the one grown from the box at `c` alone (float rounding is monotonic).
+bool CanSleepAt(const b2AABB& tree, b2Vec2 c, float r) { return !ProxyWouldMove(tree, CircleBox(c, r), b2Vec2(0, 0)); }
 
 /// b2Island::Solve for a lone dynamic body with no force, gravity or damping: velocity
 /// integration (adding the zero force turns a -0 component into +0, as Box2D's does), the
@@ -98,7 +95,7 @@ bool TryDormantSubstep(PhysicsWorld::Impl::FreeServo* s, float h, float dt_ratio
   PhysicsWorld::Impl::FreeServo next = *s;
   SolveServo(&next.vel, &next.spin, h, dt_ratio, &next);
   IntegrateLone(&next, h);
-  if (SubstepWouldMoveProxy(s->tree, s->c, next.c, r) || !CanWakeAt(s->tree, next.c, r)) return false;
+  if (!CanSleepAt(s->tree, next.c, r)) return false;
   *s = next;
   return true;
 }
