@@ -35,6 +35,10 @@ TEST(Paths, JoinAndDirName) {
   EXPECT_EQ(DirName("a/b/c.argos"), "a/b");
   EXPECT_EQ(DirName("c.argos"), "");
   EXPECT_EQ(DirName("/c.argos"), "/");
+  // As std::filesystem's parent_path(), which DirName no longer calls.
+  for (const char* p :
+       {"a//b", "a/b/", "a/b//", "//c", "///c", "/", "//", "", ".", "a/..", "./x", "/a/", "//a/b", "dossier été/x.lua"})
+    EXPECT_EQ(DirName(p), std::filesystem::path(p).parent_path().string()) << p;
 }
 
 TEST(Paths, AFolderIsNotAFile) {

@@ -125,6 +125,11 @@ void RouteStdout(lua_State* L, WrittenLines* lines) {
   lua_setglobal(L, "print");
 }
 
+std::string* RoutedLog(lua_State* L) {
+  WrittenLines* lines = GuardOf(L)->stdout_lines;
+  return lines ? lines->log : nullptr;
+}
+
 void RouteIoWrites(lua_State* L) {
   LuaGuard* g = GuardOf(L);
   if (!g->stdout_lines) return;

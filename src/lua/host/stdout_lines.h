@@ -24,5 +24,7 @@ void EndWrittenLine(WrittenLines* lines);
 /// the script uses io, io.write while the default output is io.stdout and io.stdout:write.
 /// `lines` must outlive the state.
 void RouteStdout(lua_State* L, WrittenLines* lines);
+/// The log buffer RouteStdout gave `L`'s lines (null: none), where log() writes too.
+std::string* RoutedLog(lua_State* L);
 
 }  // namespace essaim

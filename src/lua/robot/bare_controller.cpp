@@ -71,6 +71,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
     *error = "robot " + def.id + ": cannot create a Lua state";
     return false;
   }
+  SetStateRobot(L, &scratch_);
   lua_gc(L, LUA_GCGEN, 0, 0);  // Lua's generational defaults; the run's own tuning is not the floor's
   luaL_openlibs(L);
   SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, static_cast<uint64_t>(index)), index);
@@ -83,7 +84,7 @@ bool BareController::Load(const Model& model, const RobotDef& def, int index, ui
   const int robot = lua_gettop(L);
   lua_pushstring(L, def.id.c_str());
   lua_setfield(L, robot, "id");
-  PushRandomTable(L, &scratch_.controller_rng);
+  PushRobotRandomTable(L);
   lua_setfield(L, robot, "random");
   CreateDeviceTables(L, *controller_, def, &scratch_, &refs_);
   lua_settop(L, robot);

@@ -12,7 +12,7 @@ namespace {
 int SetVelocity(lua_State* L) {
   // Dot-call with exactly two numbers, cm/s (colon syntax fails the count, as ARGoS).
   if (lua_gettop(L) != 2) return luaL_error(L, "robot.wheels.set_velocity(left, right) expects 2 arguments");
-  RobotState* r = UpvalueRobot(L);
+  RobotState* r = RobotOf(L);
   const char* fn = "robot.wheels.set_velocity";
   const double left = CheckFiniteNumber(L, 1, fn);
   SetWheelVelocity(*r, left, CheckFiniteNumber(L, 2, fn));
@@ -25,9 +25,7 @@ void SetNumber(lua_State* L, int t, const char* k, double v) {
 }
 }  // namespace
 
-void CreateWheelsActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "set_velocity", SetVelocity, robot);
-}
+void CreateWheelsActuator(lua_State* L, int t, RobotState*) { SetFunction(L, t, "set_velocity", SetVelocity); }
 
 void CreateWheelsSensor(lua_State* L, int t) {
   SetNumber(L, t, "axis_length", 14.0);  // cm; 0.14 * 100 is not exactly 14 in binary

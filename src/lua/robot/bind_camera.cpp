@@ -7,19 +7,19 @@ namespace essaim {
 
 namespace {
 int Enable(lua_State* L) {
-  UpvalueRobot(L)->camera_enabled = true;
+  RobotOf(L)->camera_enabled = true;
   return 0;
 }
 
 int Disable(lua_State* L) {
-  UpvalueRobot(L)->camera_enabled = false;
+  RobotOf(L)->camera_enabled = false;
   return 0;
 }
 }  // namespace
 
-void CreateCameraSensor(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "enable", Enable, robot);
-  SetClosure(L, t, "disable", Disable, robot);
+void CreateCameraSensor(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "enable", Enable);
+  SetFunction(L, t, "disable", Disable);
 }
 
 void PushCamera(lua_State* L, int ref, const Readings& rd, int* count) {

@@ -19,27 +19,27 @@ constexpr int kMaxReadings = 12;  // per array: 6 rays × 2 sensors when rotatin
 
 int Enable(lua_State* L) {
   if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.enable() expects no arguments");
-  ScannerEnable(*UpvalueRobot(L));  // at the last requested angle
+  ScannerEnable(*RobotOf(L));  // at the last requested angle
   return 0;
 }
 
 int Disable(lua_State* L) {
   if (lua_gettop(L) != 0) return luaL_error(L, "robot.distance_scanner.disable() expects no arguments");
-  ScannerDisable(*UpvalueRobot(L));
+  ScannerDisable(*RobotOf(L));
   return 0;
 }
 
 int SetAngle(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_angle(angle) expects 1 argument");
   const double a = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_angle");
-  ScannerSetAngle(*UpvalueRobot(L), a);
+  ScannerSetAngle(*RobotOf(L), a);
   return 0;
 }
 
 int SetRpm(lua_State* L) {
   if (lua_gettop(L) != 1) return luaL_error(L, "robot.distance_scanner.set_rpm(rpm) expects 1 argument");
   const double rpm = CheckFiniteNumber(L, 1, "robot.distance_scanner.set_rpm");
-  ScannerSetRpm(*UpvalueRobot(L), rpm);
+  ScannerSetRpm(*RobotOf(L), rpm);
   return 0;
 }
 
@@ -87,11 +87,11 @@ void Fill(lua_State* L, int scanner, const char* key, int array_ref, int pool_re
 }
 }  // namespace
 
-void CreateScannerActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "enable", Enable, robot);
-  SetClosure(L, t, "disable", Disable, robot);
-  SetClosure(L, t, "set_angle", SetAngle, robot);
-  SetClosure(L, t, "set_rpm", SetRpm, robot);
+void CreateScannerActuator(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "enable", Enable);
+  SetFunction(L, t, "disable", Disable);
+  SetFunction(L, t, "set_angle", SetAngle);
+  SetFunction(L, t, "set_rpm", SetRpm);
 }
 
 void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {

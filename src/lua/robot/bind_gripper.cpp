@@ -7,23 +7,23 @@ namespace essaim {
 
 namespace {
 int LockPositive(lua_State* L) {
-  SetGripperAperture(*UpvalueRobot(L), kPi / 2);
+  SetGripperAperture(*RobotOf(L), kPi / 2);
   return 0;
 }
 int LockNegative(lua_State* L) {
-  SetGripperAperture(*UpvalueRobot(L), -kPi / 2);
+  SetGripperAperture(*RobotOf(L), -kPi / 2);
   return 0;
 }
 int Unlock(lua_State* L) {
-  SetGripperAperture(*UpvalueRobot(L), 0);
+  SetGripperAperture(*RobotOf(L), 0);
   return 0;
 }
 }  // namespace
 
-void CreateGripperActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "lock_positive", LockPositive, robot);
-  SetClosure(L, t, "lock_negative", LockNegative, robot);
-  SetClosure(L, t, "unlock", Unlock, robot);
+void CreateGripperActuator(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "lock_positive", LockPositive);
+  SetFunction(L, t, "lock_negative", LockNegative);
+  SetFunction(L, t, "unlock", Unlock);
 }
 
 }  // namespace essaim

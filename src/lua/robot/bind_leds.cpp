@@ -45,7 +45,7 @@ int SetAllColors(lua_State* L) {
   const int n = lua_gettop(L);
   if (n != 1 && n != 3) return luaL_error(L, "robot.leds.set_all_colors() expects either one or three arguments");
   Color c = CheckColor(L, 1, "set_all_colors()");
-  RobotState* r = UpvalueRobot(L);
+  RobotState* r = RobotOf(L);
   for (Color& led : r->cmd.leds) led = c;
   return 0;
 }
@@ -57,14 +57,14 @@ int SetSingleColor(lua_State* L) {
   if (!(idx >= 1 && idx < footbot::kLedCount + 1))
     return luaL_error(L, "robot.leds.set_single_color(): LED index %f out of range 1..%d", idx, footbot::kLedCount);
   Color c = CheckColor(L, 2, "set_single_color()");
-  UpvalueRobot(L)->cmd.leds[static_cast<int>(idx) - 1] = c;
+  RobotOf(L)->cmd.leds[static_cast<int>(idx) - 1] = c;
   return 0;
 }
 }  // namespace
 
-void CreateLedsActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "set_all_colors", SetAllColors, robot);
-  SetClosure(L, t, "set_single_color", SetSingleColor, robot);
+void CreateLedsActuator(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "set_all_colors", SetAllColors);
+  SetFunction(L, t, "set_single_color", SetSingleColor);
 }
 
 }  // namespace essaim

@@ -9,14 +9,21 @@ namespace essaim {
 
 void CreateRingSensor(lua_State* L, int t) {
   t = lua_absindex(L, t);
+  // The keys pushed once (lua_setfield would look each up in the string cache, 48 times).
+  lua_pushliteral(L, "value");
+  lua_pushliteral(L, "angle");
+  const int value = lua_gettop(L) - 1, angle = value + 1;
   for (int k = 0; k < kRingSensorCount; ++k) {
     lua_createtable(L, 0, 2);
+    lua_pushvalue(L, value);
     lua_pushnumber(L, 0.0);
-    lua_setfield(L, -2, "value");
+    lua_rawset(L, -3);
+    lua_pushvalue(L, angle);
     lua_pushnumber(L, RingSensorAngle(k));
-    lua_setfield(L, -2, "angle");
+    lua_rawset(L, -3);
     lua_rawseti(L, t, k + 1);
   }
+  lua_pop(L, 2);
 }
 
 void PushRingSensor(lua_State* L, int ref, const double* values) {

@@ -55,7 +55,7 @@ uint8_t ElementByte(lua_State* L, lua_Integer i) {
 }
 
 int SetData(lua_State* L) {
-  RobotState* r = UpvalueRobot(L);
+  RobotState* r = RobotOf(L);
   const lua_Integer size = static_cast<lua_Integer>(r->cmd.rab_data.size());
   const int args = lua_gettop(L);
   if (args == 1) {
@@ -89,15 +89,15 @@ int SetData(lua_State* L) {
 }
 
 int ClearData(lua_State* L) {
-  RobotState* r = UpvalueRobot(L);
+  RobotState* r = RobotOf(L);
   std::fill(r->cmd.rab_data.begin(), r->cmd.rab_data.end(), 0);
   return 0;
 }
 }  // namespace
 
-void CreateRabActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "set_data", SetData, robot);
-  SetClosure(L, t, "clear_data", ClearData, robot);
+void CreateRabActuator(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "set_data", SetData);
+  SetFunction(L, t, "clear_data", ClearData);
 }
 
 void PushRab(lua_State* L, int ref, const Readings& rd, int* count) {

@@ -20,34 +20,34 @@ double OneNumber(lua_State* L, const char* fn) {
 }
 int SetRotation(lua_State* L) {
   double a = OneNumber(L, "set_rotation");
-  TurretSetRotation(*UpvalueRobot(L), a);
+  TurretSetRotation(*RobotOf(L), a);
   return 0;
 }
 int SetRotationSpeed(lua_State* L) {
   double x = OneNumber(L, "set_rotation_speed");
-  TurretSetRotationSpeed(*UpvalueRobot(L), x);
+  TurretSetRotationSpeed(*RobotOf(L), x);
   return 0;
 }
 int SetPositionMode(lua_State* L) {
-  TurretSetMode(*UpvalueRobot(L), TurretMode::Position);
+  TurretSetMode(*RobotOf(L), TurretMode::Position);
   return 0;
 }
 int SetSpeedMode(lua_State* L) {
-  TurretSetMode(*UpvalueRobot(L), TurretMode::Speed);
+  TurretSetMode(*RobotOf(L), TurretMode::Speed);
   return 0;
 }
 int SetPassiveMode(lua_State* L) {
-  TurretSetMode(*UpvalueRobot(L), TurretMode::Passive);
+  TurretSetMode(*RobotOf(L), TurretMode::Passive);
   return 0;
 }
 }  // namespace
 
-void CreateTurretActuator(lua_State* L, int t, RobotState* robot) {
-  SetClosure(L, t, "set_rotation", SetRotation, robot);
-  SetClosure(L, t, "set_rotation_speed", SetRotationSpeed, robot);
-  SetClosure(L, t, "set_position_control_mode", SetPositionMode, robot);
-  SetClosure(L, t, "set_speed_control_mode", SetSpeedMode, robot);
-  SetClosure(L, t, "set_passive_mode", SetPassiveMode, robot);
+void CreateTurretActuator(lua_State* L, int t, RobotState*) {
+  SetFunction(L, t, "set_rotation", SetRotation);
+  SetFunction(L, t, "set_rotation_speed", SetRotationSpeed);
+  SetFunction(L, t, "set_position_control_mode", SetPositionMode);
+  SetFunction(L, t, "set_speed_control_mode", SetSpeedMode);
+  SetFunction(L, t, "set_passive_mode", SetPassiveMode);
 }
 
 void CreateTurretSensor(lua_State* L, int t) {

@@ -55,8 +55,9 @@ int Traceback(lua_State* L) {
   return 1;
 }
 
+// The buffer print writes to (OpenGlobals routes it): light C functions, no closure per state.
 int LogTo(lua_State* L, char stream) {
-  auto* log = static_cast<std::string*>(lua_touserdata(L, lua_upvalueindex(1)));
+  std::string* log = RoutedLog(L);
   const size_t begin = log->size();
   *log += stream;
   AppendArgosLogText(L, log);
@@ -81,6 +82,7 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
     return false;
   }
   lua_State* L = L_;
+  SetStateRobot(L, robot);
   // Generational collection: the per-step values (positions, messages) die young, and the
   // incremental default lets them pile up to twice the live size before a cycle. A minor
   // collection after the heap grew by 50% (Lua's default: 20%) runs fewer atomic phases
@@ -122,14 +124,13 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
 }
 
 void LuaController::OpenGlobals(lua_State* L) {
-  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}}) {
-    lua_pushlightuserdata(L, &log_);
-    lua_pushcclosure(L, fn, 1);
-    lua_setglobal(L, name);
-  }
-  // print and io's writes to stdout: the buffer too, so output keeps robot order under threads.
+  // print and io's writes to stdout: the log buffer, so output keeps robot order under threads.
   stdout_.log = &log_;
   RouteStdout(L, &stdout_);
+  for (auto [name, fn] : {std::pair<const char*, lua_CFunction>{"log", Log}, {"logerr", LogErr}}) {
+    lua_pushcfunction(L, fn);
+    lua_setglobal(L, name);
+  }
   OpenMathTypes(L);
 }
 
@@ -138,7 +139,7 @@ void LuaController::CreateRobotTable(lua_State* L, const RobotDef& def, RobotSta
   lua_createtable(L, 0, 3 + static_cast<int>(controller_->actuators.size() + controller_->sensors.size()));
   lua_pushstring(L, def.id.c_str());
   lua_setfield(L, -2, "id");
-  PushRandomTable(L, &robot->controller_rng);
+  PushRobotRandomTable(L);
   lua_setfield(L, -2, "random");
   CreateDeviceTables(L, *controller_, def, robot, &refs_);
   lua_newtable(L);

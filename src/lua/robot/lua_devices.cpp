@@ -8,7 +8,9 @@
 
 namespace essaim {
 
-RobotState* UpvalueRobot(lua_State* L) { return static_cast<RobotState*>(lua_touserdata(L, lua_upvalueindex(1))); }
+void SetStateRobot(lua_State* L, RobotState* robot) { *static_cast<RobotState**>(lua_getextraspace(L)) = robot; }
+
+RobotState* RobotOf(lua_State* L) { return *static_cast<RobotState**>(lua_getextraspace(L)); }
 
 double CheckFiniteNumber(lua_State* L, int arg, const char* fn) {
   const double v = luaL_checknumber(L, arg);
@@ -19,10 +21,9 @@ double CheckFiniteNumber(lua_State* L, int arg, const char* fn) {
   return v;
 }
 
-void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot) {
+void SetFunction(lua_State* L, int t, const char* name, lua_CFunction f) {
   t = lua_absindex(L, t);
-  lua_pushlightuserdata(L, robot);
-  lua_pushcclosure(L, f, 1);
+  lua_pushcfunction(L, f);
   lua_setfield(L, t, name);
 }
 

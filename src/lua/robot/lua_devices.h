@@ -32,9 +32,13 @@ void RawSetInteger(lua_State* L, int key, lua_Integer v);
 /// Sets array[count+1 .. *shown] to nil (entries left from a longer previous reading) and
 /// records `count` as the new length.
 void ClearStaleTail(lua_State* L, int array, int count, int* shown);
-/// Pushes the RobotState* upvalue closure into table at `t`.
-void SetClosure(lua_State* L, int t, const char* name, lua_CFunction f, RobotState* robot);
-RobotState* UpvalueRobot(lua_State* L);
+/// The robot a controller's state drives, kept in the state's extra space (Lua copies it
+/// into every coroutine): the bindings are light C functions that find it there, not a
+/// closure per robot and function (each an allocation in every state).
+void SetStateRobot(lua_State* L, RobotState* robot);
+RobotState* RobotOf(lua_State* L);
+/// Puts binding `f` (it reads RobotOf) into the table at `t`.
+void SetFunction(lua_State* L, int t, const char* name, lua_CFunction f);
 /// luaL_checknumber for actuators: NaN or ±inf is a Lua error naming `fn`, the argument
 /// and the value (a non-finite command would poison the physics).
 double CheckFiniteNumber(lua_State* L, int arg, const char* fn);
