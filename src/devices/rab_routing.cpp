@@ -60,6 +60,12 @@ bool Begin(const RobotStates& robots, Media* m) {
   }
   if (count < 2) return false;
   m->rab_grid.FilePoints(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
+  // Around each body, a circle holding it and its gripper disc: the disc's farthest centre
+  // plus its radius, and 1e-6 m to spare (a segment's rounding is ~1e-15 m here).
+  double disc_off2 = 0;
+  for (int i = 0; i < n; ++i) disc_off2 = std::max(disc_off2, (m->gripper_xy[i] - m->body_xy[i]).squaredNorm());
+  const double bound = std::max(footbot::kRadius, std::sqrt(disc_off2) + kGripperRadius) + 1e-6;
+  m->rab_bound_radius2 = bound * bound;
   const int obstacles = static_cast<int>(m->obstacle_xy.size());
   if (obstacles > 0)
     m->rab_obstacle_grid.FileBoxes(
@@ -91,28 +97,28 @@ void GatherObstacles(const Model& model, const Media& m, const Device& d, RabScr
     }
 }
 
+/// A circle's squared tangent length from the device if it may hide a pair: not around the
+/// device (Box2D reports no hit for a ray starting inside) and within reach; else +inf,
+/// which no segment enters (Enters).
+double Tangent2(double n2, double radius2, double near2) {
+  const double tangent2 = n2 - radius2;
+  return tangent2 < 0 || tangent2 > near2 ? std::numeric_limits<double>::infinity() : tangent2;
+}
+
 /// One pass over the bodies near the device: the candidate partners (members after it, any
-/// order: the partners are sorted at the end) and, unsorted, the occluders (any other body
-/// but those around the device, tangent2 < 0: Box2D reports no hit for a ray starting
-/// inside). CircleEntry(from, to, centre, r) split: the offset and tangent2 depend on the
-/// occluder only (same operations, so the same bits: the build has -ffp-contract=off).
-/// Returns the number of occluders.
+/// order: the partners are sorted at the end) and, unsorted, the occluders (any other robot
+/// whose body or gripper disc may hide a pair). CircleEntry(from, to, centre, r) split: the
+/// offset and tangent2 depend on the circle only (same operations, so the same bits: the
+/// build has -ffp-contract=off). Returns the number of occluders.
 int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
   const double near = m.rab_max_range + footbot::kRadius;  // a body touching a segment from a is this close
   const double near2 = near * near;
   // A gripper disc lies within the body radius plus its own of its robot's centre.
   const double reach = near + kGripperRadius;
   const bool body_occluders = d.occlusions && d.bodies_occlude;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   scratch.candidates.clear();
   int occluders = 0;
-  auto add_occluder = [&](const Vec2& centre, double radius2, int j) {
-    const double sx = centre.x() - d.xy.x(), sy = centre.y() - d.xy.y();
-    const double tangent2 = sx * sx + sy * sy - radius2;
-    if (tangent2 < 0 || tangent2 > near2) return;
-    const double q = tangent2 * d.per_bucket;
-    const int bucket = q < rab::kOccluderBuckets ? static_cast<int>(q) : rab::kOccluderBuckets - 1;
-    scratch.unsorted[occluders++] = {tangent2, sx, sy, j, bucket};
-  };
   m.rab_grid.ForEachInBox(d.xy.x() - reach, d.xy.y() - reach, d.xy.x() + reach, d.xy.y() + reach, [&](int j) {
     if (j == d.index) return;  // the sender's own shapes never hide (ARGoS skips its body)
     const Vec2& xj = m.body_xy[j];
@@ -121,8 +127,15 @@ int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
     if (n2 <= near2 && j > d.index && m.rab_member[j]) scratch.candidates.push_back(j);
     if (!body_occluders) return;
     // The body, and the gripper disc ahead of it (a third robot's hides a pair too).
-    if (n2 <= near2) add_occluder(xj, kBodyRadius2, j);
-    add_occluder(m.gripper_xy[j], kGripperRadius * kGripperRadius, j);
+    const double tangent2 = n2 <= near2 ? Tangent2(n2, kBodyRadius2, near2) : kInf;
+    const Vec2& g = m.gripper_xy[j];
+    const double gx = g.x() - d.xy.x(), gy = g.y() - d.xy.y();
+    const double disc_tangent2 = Tangent2(gx * gx + gy * gy, kGripperRadius * kGripperRadius, near2);
+    const double nearest = std::min(tangent2, disc_tangent2);
+    if (nearest == kInf) return;
+    const double q = nearest * d.per_bucket;
+    const int bucket = q < rab::kOccluderBuckets ? static_cast<int>(q) : rab::kOccluderBuckets - 1;
+    scratch.unsorted[occluders++] = {n2 - m.rab_bound_radius2, sx, sy, tangent2, gx, gy, disc_tangent2, j, bucket};
   });
   return occluders;
 }
@@ -146,16 +159,25 @@ bool ProbeBlockers(const Device& d, int occluders, RabScratch& scratch) {
   return true;
 }
 
-/// Whether a body's circle is entered before the partner's: the rest of
-/// CircleEntry(from, to, body, r) < t_partner (t_partner <= 1, so "t in [0, 1]" reduces to
-/// t >= 0); the cheap tests reject almost every occluder before sqrt. Inlined: a call per
-/// occluder was a sixth of the routing's instructions.
-[[gnu::always_inline]] inline bool Enters(const RabOccluder& o, const Pair& p) {
-  const double along = o.offset_x * p.dx + o.offset_y * p.dy;
-  const double disc = along * along - p.dd * o.tangent2;
+/// Whether a circle is entered before the partner's: the rest of CircleEntry(from, to,
+/// centre, r) < t_partner (t_partner <= 1, so "t in [0, 1]" reduces to t >= 0), given
+/// along = offset · (to - from).
+[[gnu::always_inline]] inline bool EntersCircle(double along, double tangent2, const Pair& p) {
+  const double disc = along * along - p.dd * tangent2;
   if (disc < 0) return false;
   const double t = (along - std::sqrt(disc)) / p.dd;
-  return t >= 0 && t < p.t_partner && o.body != p.partner;
+  return t >= 0 && t < p.t_partner;
+}
+
+/// Whether the robot's body or gripper disc is entered before the partner's. A segment's
+/// line that misses the circle around both (bound2) misses each: for the body, bound2 <=
+/// tangent2 with the same along, so its disc can only be larger (rounding is monotone);
+/// for the disc, by the bound's margin. Inlined: a call per occluder was a sixth of the
+/// routing's instructions.
+[[gnu::always_inline]] inline bool Enters(const RabOccluder& o, const Pair& p) {
+  const double along = o.offset_x * p.dx + o.offset_y * p.dy;
+  if (along * along - p.dd * o.bound2 < 0 || o.body == p.partner) return false;
+  return EntersCircle(along, o.tangent2, p) || EntersCircle(o.disc_x * p.dx + o.disc_y * p.dy, o.disc_tangent2, p);
 }
 
 /// The first body along the pair's segment must be the partner's: any occluder entered
@@ -310,8 +332,8 @@ void Deliver(Media* m) {
 void SizeScratch(const Model& model, RabScratch* scratch) {
   const size_t n = model.robots.size();
   scratch->candidates.reserve(n);
-  scratch->unsorted.resize(2 * n);  // bodies and gripper discs
-  scratch->occluders.resize(2 * n);
+  scratch->unsorted.resize(n);  // a robot each (its body and gripper disc)
+  scratch->occluders.resize(n);
   scratch->bucket_start.assign(rab::kOccluderBuckets + 1, 0);
   scratch->sector_blocker.assign(rab::kProbeSectors, -1);
   scratch->near_obstacles.reserve(rab::kFewObstacles);

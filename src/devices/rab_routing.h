@@ -12,19 +12,24 @@ namespace essaim {
 struct Media;
 struct SlotRunner;
 
-/// A body or gripper disc that may hide a partner from one device: the parts of CircleEntry
-/// that do not depend on the partner, computed once per device.
+/// A robot whose body or gripper disc may hide a partner from one device: for each circle
+/// the parts of CircleEntry that do not depend on the partner, computed once per device,
+/// and a circle around both (Media::rab_bound_radius2) that a segment must meet to enter
+/// either: one test rejects most robots off a pair's line for both circles.
 struct RabOccluder {
-  double tangent2;            // m², |offset|² - r²: the squared tangent length from the device
-  double offset_x, offset_y;  // m, circle centre minus device
-  int body;                   // the robot it belongs to
-  int bucket;                 // of tangent2, see SortOccluders
+  double bound2;              // m², |offset|² - R² of that circle around both
+  double offset_x, offset_y;  // m, body centre minus device
+  double tangent2;            // m², |offset|² - r²: the body's squared tangent length; +inf: cannot hide
+  double disc_x, disc_y;      // m, gripper disc centre minus device
+  double disc_tangent2;       // m², the same for the disc
+  int body;                   // the robot
+  int bucket;                 // of the smaller tangent2, see SortOccluders
 };
 
 /// One thread's working buffers for the devices it routes (sized once, reused).
 struct RabScratch {
   std::vector<int> candidates;         // members after the device within reach, any order
-  std::vector<RabOccluder> occluders;  // those that may hide a partner, nearest bucket first
+  std::vector<RabOccluder> occluders;  // robots that may hide a partner, nearest bucket first
   std::vector<RabOccluder> unsorted;   // occluders before bucketing
   std::vector<int> bucket_start;       // kOccluderBuckets + 1 offsets into occluders
   std::vector<int> sector_blocker;     // kProbeSectors occluders or -1, see FindBlockers
@@ -40,11 +45,11 @@ namespace rab {
 constexpr int kFewObstacles = 12;
 constexpr int kOccluderBuckets = 64;
 /// Blocker probes (rab_blockers.h): direction sectors (a power of 2), the reach of the
-/// bodies that may block one, and how many within it make a crowd (fewer: no probes, as
-/// most pairs are then unhidden and probing would not pay).
+/// bodies that may block one, and how many robots within it make a crowd (fewer: no
+/// probes, as most pairs are then unhidden and probing would not pay).
 constexpr int kProbeSectors = 64;
 constexpr double kBlockerReach = 1.0;  // m
-constexpr int kCrowd = 16;
+constexpr int kCrowd = 8;
 }  // namespace rab
 
 /// Sizes the routing buffers for the model (InitMedia): grids and per-robot lists.
