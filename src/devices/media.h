@@ -47,7 +47,7 @@ struct Media {
   /// m², this tick: a circle of this radius around a body holds the body and its gripper
   /// disc with a margin far above rounding (RabOccluder::bound2).
   double rab_bound_radius2 = 0;
-  UniformGrid rab_grid;          // bodies, cell = reach + body radius
+  UniformGrid rab_grid;  // bodies, cell = reach + body radius
   /// Obstacles by bounding box, in every cell it overlaps; cells of about a quarter of the
   /// reach, so that a pair's segment visits few cells and each lists few obstacles.
   UniformGrid rab_obstacle_grid;
