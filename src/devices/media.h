@@ -44,7 +44,10 @@ struct Media {
   std::vector<double> rab_yaw;   // heading this tick (rad)
   int rab_devices = 0;           // robots with a RAB sensor in a medium
   double rab_max_range = 0;      // m, largest rab_range of a member
-  UniformGrid rab_grid;          // bodies, cell = reach + body radius
+  /// m², this tick: a circle of this radius around a body holds the body and its gripper
+  /// disc with a margin far above rounding (RabOccluder::bound2).
+  double rab_bound_radius2 = 0;
+  UniformGrid rab_grid;  // bodies, cell = reach + body radius
   /// Obstacles by bounding box, in every cell it overlaps; cells of about a quarter of the
   /// reach, so that a pair's segment visits few cells and each lists few obstacles.
   UniformGrid rab_obstacle_grid;

@@ -31,6 +31,7 @@ inline void FindBlockers(RabScratch& scratch, int n_occ) {
   std::fill(scratch.sector_blocker.begin(), scratch.sector_blocker.end(), -1);
   for (int i = 0; i < n_occ; ++i) {
     const RabOccluder& o = scratch.occluders[i];
+    if (std::isinf(o.tangent2)) continue;  // only its gripper disc may hide: no blocker
     const double l1 = std::abs(o.offset_x) + std::abs(o.offset_y);
     // Half-width asin(r/|s|) >= r/|s| rad, times the pseudo-angle's slope |s|²/l1² here:
     // at most 1 (|s| >= r, l1 >= |s|), so k0 >= 0 and at most kSectors / 2 + 1 sectors.

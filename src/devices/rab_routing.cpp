@@ -31,6 +31,9 @@ struct Device {
   bool bodies_occlude;  // robot bodies reach its height (as CastRay)
   double per_bucket;    // occluder buckets per m² of tangent2
   bool probe;           // a crowd: pairs test their sector's blocker first
+  double near_tier2;    // m², robots farther than this (centre) go to the far tier
+  double far_tangent2;  // m², no far robot's circle has a smaller tangent2 (with margin)
+  const Media* m;
 };
 
 /// One pair: the segment from device a to partner b and where b's circle starts on it.
@@ -60,6 +63,12 @@ bool Begin(const RobotStates& robots, Media* m) {
   }
   if (count < 2) return false;
   m->rab_grid.FilePoints(n, [&](int i) { return m->body_xy[i]; });  // every body may occlude
+  // Around each body, a circle holding it and its gripper disc: the disc's farthest centre
+  // plus its radius, and 1e-6 m to spare (a segment's rounding is ~1e-15 m here).
+  double disc_off2 = 0;
+  for (int i = 0; i < n; ++i) disc_off2 = std::max(disc_off2, (m->gripper_xy[i] - m->body_xy[i]).squaredNorm());
+  const double bound = std::max(footbot::kRadius, std::sqrt(disc_off2) + kGripperRadius) + 1e-6;
+  m->rab_bound_radius2 = bound * bound;
   const int obstacles = static_cast<int>(m->obstacle_xy.size());
   if (obstacles > 0)
     m->rab_obstacle_grid.FileBoxes(
@@ -91,28 +100,51 @@ void GatherObstacles(const Model& model, const Media& m, const Device& d, RabScr
     }
 }
 
-/// One pass over the bodies near the device: the candidate partners (members after it, any
-/// order: the partners are sorted at the end) and, unsorted, the occluders (any other body
-/// but those around the device, tangent2 < 0: Box2D reports no hit for a ray starting
-/// inside). CircleEntry(from, to, centre, r) split: the offset and tangent2 depend on the
-/// occluder only (same operations, so the same bits: the build has -ffp-contract=off).
-/// Returns the number of occluders.
-int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
+/// A circle's squared tangent length from the device if it may hide a pair: not around the
+/// device (Box2D reports no hit for a ray starting inside) and within reach; else +inf,
+/// which no segment enters (Enters).
+double Tangent2(double n2, double radius2, double near2) {
+  const double tangent2 = n2 - radius2;
+  return tangent2 < 0 || tangent2 > near2 ? std::numeric_limits<double>::infinity() : tangent2;
+}
+
+/// Robot j as an occluder of the device into *o (its body, and the gripper disc ahead of
+/// it: a third robot's hides a pair too), given the body's offset; false if neither may
+/// hide a pair. CircleEntry(from, to, centre, r) split: the offset and tangent2 depend on
+/// the circle only (same operations, so the same bits: the build has -ffp-contract=off).
+[[gnu::always_inline]] inline bool MakeOccluder(const Device& d, int j, double sx, double sy, double n2,
+                                                RabOccluder* o) {
+  const Media& m = *d.m;
   const double near = m.rab_max_range + footbot::kRadius;  // a body touching a segment from a is this close
+  const double near2 = near * near;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double tangent2 = n2 <= near2 ? Tangent2(n2, kBodyRadius2, near2) : kInf;
+  const Vec2& g = m.gripper_xy[j];
+  const double gx = g.x() - d.xy.x(), gy = g.y() - d.xy.y();
+  const double disc_tangent2 = Tangent2(gx * gx + gy * gy, kGripperRadius * kGripperRadius, near2);
+  const double nearest = std::min(tangent2, disc_tangent2);
+  if (nearest == kInf) return false;
+  const double q = nearest * d.per_bucket;
+  const int bucket = q < rab::kOccluderBuckets ? static_cast<int>(q) : rab::kOccluderBuckets - 1;
+  *o = {n2 - m.rab_bound_radius2, sx, sy, tangent2, gx, gy, disc_tangent2, j, bucket};
+  return true;
+}
+
+/// One pass over the bodies near the device: the candidate partners (members after it, any
+/// order: the partners are sorted at the end) and, unsorted, the near tier's occluders (any
+/// other robot whose body or gripper disc may hide a pair); the far tier's robots are only
+/// listed. Returns the number of near occluders.
+int GatherNeighbours(const Device& d, RabScratch& scratch) {
+  const Media& m = *d.m;
+  const double near = m.rab_max_range + footbot::kRadius;
   const double near2 = near * near;
   // A gripper disc lies within the body radius plus its own of its robot's centre.
   const double reach = near + kGripperRadius;
   const bool body_occluders = d.occlusions && d.bodies_occlude;
   scratch.candidates.clear();
+  scratch.far.clear();
+  scratch.far_ready = false;
   int occluders = 0;
-  auto add_occluder = [&](const Vec2& centre, double radius2, int j) {
-    const double sx = centre.x() - d.xy.x(), sy = centre.y() - d.xy.y();
-    const double tangent2 = sx * sx + sy * sy - radius2;
-    if (tangent2 < 0 || tangent2 > near2) return;
-    const double q = tangent2 * d.per_bucket;
-    const int bucket = q < rab::kOccluderBuckets ? static_cast<int>(q) : rab::kOccluderBuckets - 1;
-    scratch.unsorted[occluders++] = {tangent2, sx, sy, j, bucket};
-  };
   m.rab_grid.ForEachInBox(d.xy.x() - reach, d.xy.y() - reach, d.xy.x() + reach, d.xy.y() + reach, [&](int j) {
     if (j == d.index) return;  // the sender's own shapes never hide (ARGoS skips its body)
     const Vec2& xj = m.body_xy[j];
@@ -120,11 +152,27 @@ int GatherNeighbours(const Media& m, const Device& d, RabScratch& scratch) {
     const double n2 = sx * sx + sy * sy;
     if (n2 <= near2 && j > d.index && m.rab_member[j]) scratch.candidates.push_back(j);
     if (!body_occluders) return;
-    // The body, and the gripper disc ahead of it (a third robot's hides a pair too).
-    if (n2 <= near2) add_occluder(xj, kBodyRadius2, j);
-    add_occluder(m.gripper_xy[j], kGripperRadius * kGripperRadius, j);
+    if (n2 > d.near_tier2)
+      scratch.far.push_back(j);
+    else
+      occluders += MakeOccluder(d, j, sx, sy, n2, &scratch.unsorted[occluders]);
   });
   return occluders;
+}
+
+/// The far tier's occluders after the near tier's `first`, bucketed alike (slots absolute).
+void BuildFarTier(const Device& d, int first, RabScratch& scratch) {
+  int count = 0;
+  for (int j : scratch.far) {
+    const Vec2& xj = d.m->body_xy[j];
+    const double sx = xj.x() - d.xy.x(), sy = xj.y() - d.xy.y();
+    count += MakeOccluder(d, j, sx, sy, sx * sx + sy * sy, &scratch.unsorted[count]);
+  }
+  BucketSort(
+      count, &scratch.far_bucket_start, [&](int i, auto&& file) { file(scratch.unsorted[i].bucket); },
+      [&](int slot, int i) { scratch.occluders[first + slot] = scratch.unsorted[i]; });
+  for (int& start : scratch.far_bucket_start) start += first;
+  scratch.far_ready = true;
 }
 
 /// Occluders bucketed by tangent2 (a counting sort, not a comparison sort): a pair only
@@ -146,21 +194,47 @@ bool ProbeBlockers(const Device& d, int occluders, RabScratch& scratch) {
   return true;
 }
 
-/// Whether a body's circle is entered before the partner's: the rest of
-/// CircleEntry(from, to, body, r) < t_partner (t_partner <= 1, so "t in [0, 1]" reduces to
-/// t >= 0); the cheap tests reject almost every occluder before sqrt. Inlined: a call per
-/// occluder was a sixth of the routing's instructions.
-[[gnu::always_inline]] inline bool Enters(const RabOccluder& o, const Pair& p) {
-  const double along = o.offset_x * p.dx + o.offset_y * p.dy;
-  const double disc = along * along - p.dd * o.tangent2;
+/// Whether a circle is entered before the partner's: the rest of CircleEntry(from, to,
+/// centre, r) < t_partner (t_partner <= 1, so "t in [0, 1]" reduces to t >= 0), given
+/// along = offset · (to - from).
+[[gnu::always_inline]] inline bool EntersCircle(double along, double tangent2, const Pair& p) {
+  const double disc = along * along - p.dd * tangent2;
   if (disc < 0) return false;
   const double t = (along - std::sqrt(disc)) / p.dd;
-  return t >= 0 && t < p.t_partner && o.body != p.partner;
+  return t >= 0 && t < p.t_partner;
+}
+
+/// Whether the robot's body or gripper disc is entered before the partner's. A segment's
+/// line that misses the circle around both (bound2) misses each: for the body, bound2 <=
+/// tangent2 with the same along, so its disc can only be larger (rounding is monotone);
+/// for the disc, by the bound's margin. Inlined: a call per occluder was a sixth of the
+/// routing's instructions.
+[[gnu::always_inline]] inline bool Enters(const RabOccluder& o, const Pair& p) {
+  const double along = o.offset_x * p.dx + o.offset_y * p.dy;
+  if (along * along - p.dd * o.bound2 < 0 || o.body == p.partner) return false;
+  return EntersCircle(along, o.tangent2, p) || EntersCircle(o.disc_x * p.dx + o.disc_y * p.dy, o.disc_tangent2, p);
+}
+
+/// Whether an occluder of slots [begin, end) hides the pair; the first that does becomes
+/// the blocker.
+bool ScanOccluders(const RabScratch& scratch, int begin, int end, const Pair& p, int& blocker) {
+  for (int i = begin; i < end; ++i)
+    if (Enters(scratch.occluders[i], p)) {
+      blocker = i;  // a likelier guess for the next pairs of its sector
+      return true;
+    }
+  return false;
+}
+
+/// The slot past the buckets up to q's, given a tier's bucket starts and size.
+int ScanLimit(double q, const std::vector<int>& start, int end) {
+  return !(q >= 0) ? start[0] : q < rab::kOccluderBuckets ? start[static_cast<int>(q) + 1] : end;
 }
 
 /// The first body along the pair's segment must be the partner's: any occluder entered
 /// before it hides it. Its sector's blocker first (it hides most pairs of a crowd), then
-/// all, nearest first, up to the bucket past which no centre is closer than the partner's.
+/// all, nearest first, up to the bucket past which no centre is closer than the partner's:
+/// the near tier, then the far one if that bound reaches it.
 bool HiddenByBody(const Device& d, const Pair& p, int occluders, RabScratch& scratch) {
   if (!(p.dd > 0)) return false;
   // A body entered before t_partner has its centre closer than the partner's: |s| < len,
@@ -168,19 +242,15 @@ bool HiddenByBody(const Device& d, const Pair& p, int occluders, RabScratch& scr
   // margin far above rounding: the test itself stays exact; scanning more is safe).
   const double tangent2_max = (p.dd - kBodyRadius2) * (1 + 1e-9) + 1e-12;
   const double q = tangent2_max * d.per_bucket;  // monotone in tangent2: its bucket bounds theirs
-  const int limit = !(q >= 0)                   ? 0
-                    : q < rab::kOccluderBuckets ? scratch.bucket_start[static_cast<int>(q) + 1]
-                                                : occluders;
   int no_blocker = -1;
   int& blocker =
       d.probe ? scratch.sector_blocker[rab_blockers::SectorOf(rab_blockers::PseudoAngle(p.dx, p.dy))] : no_blocker;
   if (blocker >= 0 && Enters(scratch.occluders[blocker], p)) return true;
-  for (int i = 0; i < limit; ++i)
-    if (Enters(scratch.occluders[i], p)) {
-      blocker = i;  // a likelier guess for the next pairs of its sector
-      return true;
-    }
-  return false;
+  if (ScanOccluders(scratch, 0, ScanLimit(q, scratch.bucket_start, occluders), p, blocker)) return true;
+  if (!(tangent2_max >= d.far_tangent2) || scratch.far.empty()) return false;
+  if (!scratch.far_ready) BuildFarTier(d, occluders, scratch);
+  const int end = scratch.far_bucket_start[rab::kOccluderBuckets];
+  return ScanOccluders(scratch, occluders, ScanLimit(q, scratch.far_bucket_start, end), p, blocker);
 }
 
 /// Whether segment a -> b enters an obstacle spanning height z before fraction t_b. Only
@@ -285,8 +355,16 @@ void RouteDevice(const Model& model, Media* m, int a, RabScratch& scratch) {
   const double near = m->rab_max_range + footbot::kRadius;
   d.per_bucket = rab::kOccluderBuckets / (near * near);  // tangent2 < near²
   d.probe = false;
+  d.m = m;
+  // Far robots' centres are beyond the near tier's radius, so their circles (within the
+  // bound radius of the centre) have tangent2 >= (radius - bound)², less a margin far
+  // above rounding.
+  const double tier = std::max(rab::kBlockerReach + 0.1, rab::kNearTier * near);
+  const double gap = std::max(0.0, tier - std::sqrt(m->rab_bound_radius2));
+  d.near_tier2 = tier * tier;
+  d.far_tangent2 = gap * gap * (1 - 1e-9) - 1e-12;
   GatherObstacles(model, *m, d, scratch);
-  const int occluders = GatherNeighbours(*m, d, scratch);
+  const int occluders = GatherNeighbours(d, scratch);
   if (d.occlusions && d.bodies_occlude) {
     SortOccluders(occluders, scratch);
     d.probe = ProbeBlockers(d, occluders, scratch);
@@ -310,9 +388,11 @@ void Deliver(Media* m) {
 void SizeScratch(const Model& model, RabScratch* scratch) {
   const size_t n = model.robots.size();
   scratch->candidates.reserve(n);
-  scratch->unsorted.resize(2 * n);  // bodies and gripper discs
-  scratch->occluders.resize(2 * n);
+  scratch->unsorted.resize(n);  // a robot each (its body and gripper disc)
+  scratch->occluders.resize(n);
   scratch->bucket_start.assign(rab::kOccluderBuckets + 1, 0);
+  scratch->far_bucket_start.assign(rab::kOccluderBuckets + 1, 0);
+  scratch->far.reserve(n);
   scratch->sector_blocker.assign(rab::kProbeSectors, -1);
   scratch->near_obstacles.reserve(rab::kFewObstacles);
   scratch->obstacle_stamp.assign(model.obstacles.size(), 0);
