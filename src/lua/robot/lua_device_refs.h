@@ -9,6 +9,7 @@ struct LuaDeviceRefs {
   /// robot.<lua_key> of each device, indexed by DeviceType. An actuator and a sensor with
   /// the same key (wheels, turret...) share the table and its reference.
   int table[kDeviceCount];
+  int keys = -1;       // the state's table of reading keys (LuaKey, lua_devices.h)
   int rab_count = 0;   // messages currently in robot.range_and_bearing
   int blob_count = 0;  // blobs currently in the camera table
   // distance scanner: the short_range / long_range arrays, the pools of their 12 inner
