@@ -34,7 +34,7 @@ void CreateWheelsSensor(lua_State* L, int t) {
   for (const char* k : {"velocity_left", "velocity_right", "distance_left", "distance_right"}) SetNumber(L, t, k, 0);
 }
 
-void PushWheels(lua_State* L, int ref, int keys, const Readings& rd) {
+void PushWheels(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   SetNumberField(L, t, keys, LuaKey::VelocityLeft, rd.velocity_left);
@@ -44,7 +44,7 @@ void PushWheels(lua_State* L, int ref, int keys, const Readings& rd) {
   lua_pop(L, 1);
 }
 
-void PushPositioning(lua_State* L, int ref, int keys, const Readings& rd) {
+void PushPositioning(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   // Fresh values each step: controllers keep last step's position to compare with.
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
@@ -57,7 +57,7 @@ void PushPositioning(lua_State* L, int ref, int keys, const Readings& rd) {
   lua_pop(L, 1);
 }
 
-void PushBattery(lua_State* L, int ref, int keys, const Readings& rd) {
+void PushBattery(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   SetNumberField(L, t, keys, LuaKey::AvailableCharge, rd.battery_charge);

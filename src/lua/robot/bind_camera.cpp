@@ -22,7 +22,7 @@ void CreateCameraSensor(lua_State* L, int t, RobotState* robot) {
   SetClosure(L, t, "disable", Disable, robot);
 }
 
-void PushCamera(lua_State* L, int ref, int keys, const Readings& rd, int* count) {
+void PushCamera(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, int* count) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   const int n = static_cast<int>(rd.blobs.size());

@@ -65,8 +65,8 @@ int NewPool(lua_State* L) {
   return luaL_ref(L, LUA_REGISTRYINDEX);
 }
 
-void Fill(lua_State* L, int scanner, int keys, LuaKey key, int array_ref, int pool_ref, const ScanReading* readings,
-          int count, int* shown) {
+void Fill(lua_State* L, int scanner, LuaKeyRefs* keys, LuaKey key, int array_ref, int pool_ref,
+          const ScanReading* readings, int count, int* shown) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, array_ref);
   const int array = lua_gettop(L);
   PushKey(L, keys, key);
@@ -105,7 +105,7 @@ void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {
   refs->scanner_short_count = refs->scanner_long_count = 0;
 }
 
-void PushScanner(lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs* refs) {
+void PushScanner(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int scanner = lua_gettop(L);
   Fill(L, scanner, keys, LuaKey::ShortRange, refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,

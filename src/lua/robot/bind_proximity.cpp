@@ -19,11 +19,13 @@ void CreateRingSensor(lua_State* L, int t) {
   }
 }
 
-void PushRingSensor(lua_State* L, int ref, int keys, const double* values) {
+void PushRingSensor(lua_State* L, int ref, LuaKeyRefs* keys, const double* values) {
   PushValuesInPlace(L, ref, keys, values, kRingSensorCount);
 }
 
 void CreateProximitySensor(lua_State* L, int t) { CreateRingSensor(L, t); }
-void PushProximity(lua_State* L, int ref, int keys, const Readings& rd) { PushRingSensor(L, ref, keys, rd.proximity); }
+void PushProximity(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
+  PushRingSensor(L, ref, keys, rd.proximity);
+}
 
 }  // namespace essaim

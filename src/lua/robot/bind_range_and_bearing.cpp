@@ -100,7 +100,7 @@ void CreateRabActuator(lua_State* L, int t, RobotState* robot) {
   SetClosure(L, t, "clear_data", ClearData, robot);
 }
 
-void PushRab(lua_State* L, int ref, int keys, const Readings& rd, int* count) {
+void PushRab(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, int* count) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   const int n = static_cast<int>(rd.rab.size());

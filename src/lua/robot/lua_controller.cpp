@@ -65,17 +65,6 @@ int LogTo(lua_State* L, char stream) {
 }
 int Log(lua_State* L) { return LogTo(L, 'O'); }
 int LogErr(lua_State* L) { return LogTo(L, 'E'); }
-
-// _G[name] as lua_getglobal reads it (an __index on _G is honoured); with `name_ref`, a
-// registry reference to the name's string, without lua_getglobal's string-cache lookup.
-int GetGlobal(lua_State* L, const char* name, int name_ref) {
-  if (name_ref < 0) return lua_getglobal(L, name);
-  lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_GLOBALS);
-  lua_rawgeti(L, LUA_REGISTRYINDEX, name_ref);
-  const int type = lua_gettable(L, -2);
-  lua_remove(L, -2);
-  return type;
-}
 }  // namespace
 
 LuaController::~LuaController() { CloseGuardedState(&guard_); }
@@ -118,8 +107,6 @@ bool LuaController::Load(const Model& model, const RobotDef& def, RobotState* ro
   SeedMathRandom(L, DeriveSeed(experiment_seed, StreamKind::LuaMath, robot->index), robot->index);
   lua_pushcfunction(L, Traceback);
   traceback_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-  lua_pushliteral(L, "step");
-  step_name_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   OpenGlobals(L);
   CreateRobotTable(L, def, robot);
   if (!PushReadings(error)) return false;
@@ -233,7 +220,7 @@ bool LuaController::HasFunction(const char* name) {
   return found;
 }
 
-bool LuaController::Call(const char* fn, int name_ref, bool required, CallKind kind, std::string* error) {
+bool LuaController::Call(const char* fn, bool required, CallKind kind, std::string* error) {
   lua_State* L = L_;
   if (controller_->script.empty()) return true;
   if (!L) {
@@ -242,7 +229,7 @@ bool LuaController::Call(const char* fn, int name_ref, bool required, CallKind k
   }
   lua_rawgeti(L, LUA_REGISTRYINDEX, traceback_ref_);
   int base = lua_gettop(L);
-  if (GetGlobal(L, fn, name_ref) != LUA_TFUNCTION) {
+  if (lua_getglobal(L, fn) != LUA_TFUNCTION) {
     lua_settop(L, 0);
     if (!required) return true;
     *error = "robot " + robot_id_ + ": " + controller_->script + ": no global function '" + fn + "'";

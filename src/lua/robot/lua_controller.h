@@ -35,9 +35,9 @@ class LuaController : public RobotController {
   bool PushReadings(std::string* error);
   /// Call a lifecycle function; false with `error` (robot id, file:line, traceback).
   /// A state that hit its memory limit is closed and its memory freed.
-  bool CallInit(std::string* error) { return Call("init", -1, false, CallKind::Setup, error); }
-  bool CallStep(std::string* error) { return Call("step", step_name_ref_, true, CallKind::Step, error); }
-  bool CallDestroy(std::string* error) { return Call("destroy", -1, false, CallKind::Setup, error); }
+  bool CallInit(std::string* error) { return Call("init", false, CallKind::Setup, error); }
+  bool CallStep(std::string* error) { return Call("step", true, CallKind::Step, error); }
+  bool CallDestroy(std::string* error) { return Call("destroy", false, CallKind::Setup, error); }
   // RobotController: init(), PushReadings then step(), destroy().
   bool Init(std::string* error) override { return CallInit(error); }
   bool Step(std::string* error) override { return PushReadings(error) && CallStep(error); }
@@ -58,8 +58,7 @@ class LuaController : public RobotController {
   ::lua_State* State() { return L_; }
 
  private:
-  /// `name_ref`: a registry reference to `fn`'s name as a Lua string (the per-tick step), or -1.
-  bool Call(const char* fn, int name_ref, bool required, CallKind kind, std::string* error);
+  bool Call(const char* fn, bool required, CallKind kind, std::string* error);
   /// The globals every controller script sees: log, logerr, print (and io's writes to
   /// stdout) into the log buffer, vector types.
   void OpenGlobals(::lua_State* L);
@@ -80,9 +79,8 @@ class LuaController : public RobotController {
   std::string log_;
   WrittenLines stdout_;  // print's and io.write's lines into log_, and the open one
   int traceback_ref_ = -1;
-  int step_name_ref_ = -1;  // "step", interned once: the one global looked up every tick
-  LuaDeviceRefs refs_;      // device tables refreshed each tick
-  TrackedParams params_;    // robot.params
+  LuaDeviceRefs refs_;    // device tables refreshed each tick
+  TrackedParams params_;  // robot.params
 };
 
 /// The Lua state of a robot's controller; null for a C++ controller, or a Lua one with no state.

@@ -54,22 +54,24 @@ constexpr const char* kKeyNames[] = {"",
 static_assert(std::size(kKeyNames) == kLuaKeyCount + 1, "lua_devices.cpp: one name per LuaKey, in enum order");
 }  // namespace
 
-void PushKey(lua_State* L, int keys, LuaKey key) {
-  const int k = static_cast<int>(key);
-  if (lua_rawgeti(L, keys, k) != LUA_TNIL) return;
-  lua_pop(L, 1);  // first use in this state: interned once, kept
-  lua_pushstring(L, kKeyNames[k]);
+void PushKey(lua_State* L, LuaKeyRefs* keys, LuaKey key) {
+  int& ref = keys->ref[static_cast<int>(key)];
+  if (ref >= 0) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    return;
+  }
+  lua_pushstring(L, kKeyNames[static_cast<int>(key)]);  // first use in this state: interned once, kept
   lua_pushvalue(L, -1);
-  lua_rawseti(L, keys, k);
+  ref = luaL_ref(L, LUA_REGISTRYINDEX);
 }
 
-void SetNumberField(lua_State* L, int t, int keys, LuaKey key, double v) {
+void SetNumberField(lua_State* L, int t, LuaKeyRefs* keys, LuaKey key, double v) {
   PushKey(L, keys, key);
   lua_pushnumber(L, v);
   lua_settable(L, t);
 }
 
-void PushValuesInPlace(lua_State* L, int ref, int keys, const double* values, int n) {
+void PushValuesInPlace(lua_State* L, int ref, LuaKeyRefs* keys, const double* values, int n) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   PushKey(L, keys, LuaKey::Value);
@@ -120,8 +122,7 @@ namespace {
 // The Lua layer's row of a device: what its table holds beside the readings (closures,
 // fixed fields, arrays made once), and how a reading is copied in. nullptr: nothing.
 using CreateFn = void (*)(lua_State* L, int table, RobotState* robot, LuaDeviceRefs* refs);
-// `keys`: the stack index of the state's key table (lua_devices.h, LuaKey).
-using PushFn = void (*)(lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs* refs);
+using PushFn = void (*)(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs);
 struct LuaDeviceRow {
   DeviceType type;
   CreateFn create;
@@ -144,33 +145,42 @@ constexpr std::array<LuaDeviceRow, kDeviceCount> kRows = {{
      nullptr},
     // ---- sensors
     {T::WheelsSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateWheelsSensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushWheels(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushWheels(L, ref, keys, rd); }},
     {T::PositioningSensor, nullptr,
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushPositioning(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushPositioning(L, ref, keys, rd);
+     }},
     {T::ProximitySensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateProximitySensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushProximity(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushProximity(L, ref, keys, rd);
+     }},
     {T::LightSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateLightSensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushLight(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushLight(L, ref, keys, rd); }},
     {T::BaseGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateBaseGroundSensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushBaseGround(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushBaseGround(L, ref, keys, rd);
+     }},
     {T::MotorGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateMotorGroundSensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushMotorGround(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushMotorGround(L, ref, keys, rd);
+     }},
     {T::RabSensor, nullptr,
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs* refs) {
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
        PushRab(L, ref, keys, rd, &refs->rab_count);
      }},
     {T::ScannerSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs* refs) { CreateScannerSensor(L, t, refs); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs* refs) {
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
        PushScanner(L, ref, keys, rd, refs);
      }},
     {T::CameraSensor, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateCameraSensor(L, t, r); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs* refs) {
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
        PushCamera(L, ref, keys, rd, &refs->blob_count);
      }},
     {T::BatterySensor, nullptr,
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushBattery(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd,
+        LuaDeviceRefs*) { PushBattery(L, ref, keys, rd); }},
     {T::TurretEncoderSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateTurretSensor(L, t); },
-     [](lua_State* L, int ref, int keys, const Readings& rd, LuaDeviceRefs*) { PushTurret(L, ref, keys, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushTurret(L, ref, keys, rd); }},
 }};
 
 // Every DeviceType has its row, in enum order; every sensor pushes its readings.
@@ -222,20 +232,15 @@ void CreateTables(lua_State* L, int robot_t, const std::vector<DeviceConfig>& de
 
 void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, RobotState* robot, LuaDeviceRefs* refs) {
   const int robot_t = lua_gettop(L);
-  lua_createtable(L, kLuaKeyCount, 0);  // filled as the keys are first pushed
-  refs->keys = luaL_ref(L, LUA_REGISTRYINDEX);
   CreateTables(L, robot_t, c.actuators, robot, refs);
   CreateTables(L, robot_t, c.sensors, robot, refs);
 }
 
 void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs) {
-  lua_rawgeti(L, LUA_REGISTRYINDEX, refs->keys);
-  const int keys = lua_gettop(L);
   for (const DeviceConfig& d : c.sensors) {
     const int i = static_cast<int>(d.type);
-    kRows[i].push(L, refs->table[i], keys, robot.rd, refs);
+    kRows[i].push(L, refs->table[i], &refs->keys, robot.rd, refs);
   }
-  lua_settop(L, keys - 1);
 }
 
 }  // namespace essaim
