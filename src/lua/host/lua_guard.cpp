@@ -108,19 +108,27 @@ void GuardHook(lua_State* L, lua_Debug*) {
   if (g->track_where.load(std::memory_order_relaxed)) RecordWhere(L, g);
 }
 
-std::string WatchGuard(LuaGuard* g, long long now, bool interrupt) {
-  const long long start = g->call_started_ns.load(std::memory_order_relaxed);
-  if (start == 0) return {};
-  const double s = static_cast<double>(now - start) * 1e-9;
-  if (s < kArmAfterSeconds) return {};
+std::string WatchGuard(LuaGuard* g, long long now, long long previous_pass, bool interrupt) {
+  const long long call = g->call.load(std::memory_order_relaxed);
+  if (call == 0) return {};
+  if (call != g->watched_call) {  // first seen: it began since the previous pass
+    g->watched_call = call;
+    g->watched_after_ns = previous_pass;
+    g->watched_seen_ns = now;
+  }
+  // Its run time lies between these: arming takes the longer, never later than an exact
+  // start time would; the limits take the shorter, never before the call passed them.
+  const double at_most = static_cast<double>(now - g->watched_after_ns) * 1e-9;
+  const double at_least = static_cast<double>(now - g->watched_seen_ns) * 1e-9;
+  if (at_most < kArmAfterSeconds) return {};
   if (interrupt) g->interrupted.store(true, std::memory_order_relaxed);
-  if (g->wall_seconds > 0 && s > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
-  if (s > 1) g->track_where.store(true, std::memory_order_relaxed);
+  if (g->wall_seconds > 0 && at_least > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
+  if (at_least > 1) g->track_where.store(true, std::memory_order_relaxed);
   Arm(g);
   // No hook ran for another full limit: stuck inside a C function (a pathological
   // string.find), which cannot be unwound safely.
-  if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1 && !g->stuck_reported.exchange(true))
-    return StuckMessage(g, s);
+  if (g->wall_seconds > 0 && at_least > 2 * g->wall_seconds + 1 && !g->stuck_reported.exchange(true))
+    return StuckMessage(g, at_least);
   return {};
 }
 
@@ -145,7 +153,7 @@ void BeginGuardedCall(LuaGuard* g, CallKind kind) {
     g->armed.store(false, std::memory_order_relaxed);
     InstallHook(g, g->state);  // the last call ran long; this one starts unhooked
   }
-  g->call_started_ns.store(SteadyNowNs(), std::memory_order_relaxed);
+  g->call.store(++g->calls, std::memory_order_relaxed);
   if (g->watchdog) {
     g->slot = g->watchdog->ThisThreadSlot();
     g->outer = g->slot->guard.load(std::memory_order_relaxed);
@@ -175,7 +183,7 @@ void TellDebuggerRaised(lua_State* L, const char* message) {
 }
 
 std::string EndGuardedCall(LuaGuard* g, int status) {
-  g->call_started_ns.store(0, std::memory_order_relaxed);
+  g->call.store(0, std::memory_order_relaxed);
   if (g->slot) {
     g->slot->guard.store(g->outer, std::memory_order_release);
     g->slot = nullptr;
