@@ -29,11 +29,11 @@ void HookEveryInstruction(lua_State* L, LuaGuard* g);
 /// lua_getinfo with "Sl" neither allocates nor collects: safe inside the allocator.
 bool ScriptLine(lua_State* L, char* out, size_t size);
 
-/// One look at a state from the watchdog thread, `now` and `previous_pass` (the monitor's
-/// last look at every slot) in steady-clock nanoseconds: arms the hook of a long call,
-/// flags wall-clock overruns and `interrupt`. Returns the stuck-in-C message the first time
-/// the call has been inside a C function for another full limit, else "".
-std::string WatchGuard(LuaGuard* g, long long now, long long previous_pass, bool interrupt);
+/// One look at a state from the watchdog thread, `now` in steady-clock nanoseconds: arms
+/// the hook of a long call, flags wall-clock overruns and `interrupt`. Returns the
+/// stuck-in-C message the first time the call has been inside a C function for another
+/// full limit, else "".
+std::string WatchGuard(LuaGuard* g, long long now, bool interrupt);
 
 long long SteadyNowNs();
 

@@ -108,19 +108,18 @@ void GuardHook(lua_State* L, lua_Debug*) {
   if (g->track_where.load(std::memory_order_relaxed)) RecordWhere(L, g);
 }
 
-std::string WatchGuard(LuaGuard* g, long long now, long long previous_pass, bool interrupt) {
+std::string WatchGuard(LuaGuard* g, long long now, bool interrupt) {
   const long long call = g->call.load(std::memory_order_relaxed);
   if (call == 0) return {};
   if (call != g->watched_call) {  // first seen: it began since the previous pass
     g->watched_call = call;
-    g->watched_after_ns = previous_pass;
     g->watched_seen_ns = now;
   }
-  // Its run time lies between these: arming takes the longer, never later than an exact
-  // start time would; the limits take the shorter, never before the call passed them.
-  const double at_most = static_cast<double>(now - g->watched_after_ns) * 1e-9;
+  // Timed from the first pass that saw it: passes come at least 0.01 s apart, so the pass
+  // that arms it is the one an exact start time would pick (or, after a late pass, the next);
+  // a limit is never applied early.
   const double at_least = static_cast<double>(now - g->watched_seen_ns) * 1e-9;
-  if (at_most < kArmAfterSeconds) return {};
+  if (at_least < kArmAfterSeconds) return {};
   if (interrupt) g->interrupted.store(true, std::memory_order_relaxed);
   if (g->wall_seconds > 0 && at_least > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
   if (at_least > 1) g->track_where.store(true, std::memory_order_relaxed);

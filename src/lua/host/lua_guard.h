@@ -125,9 +125,8 @@ struct LuaGuard {
   // times a call from the passes that first see its number (WatchGuard).
   long long calls = 0;  // calls begun (owner's thread only)
   std::atomic<long long> call{0};
-  long long watched_call = 0;      // watchdog thread only: the call its passes time,
-  long long watched_after_ns = 0;  // which began after this (the pass before the first to see it)
-  long long watched_seen_ns = 0;   // and was running at this (that first pass)
+  long long watched_call = 0;     // watchdog thread only: the call its passes time,
+  long long watched_seen_ns = 0;  // first seen running at this pass
   std::atomic<bool> wall_exceeded{false};
   std::atomic<bool> interrupted{false};     // a signal arrived while this call was stuck
   std::atomic<bool> stuck_reported{false};  // the watchdog reported this call stuck in C

@@ -63,19 +63,17 @@ size_t Watchdog::Slots() const {
 
 void Watchdog::Loop() {
   std::unique_lock<std::mutex> lock(mutex_);
-  long long previous_pass = SteadyNowNs();  // the first pass's: the monitor's start
   while (!wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return stopping_; })) {
     const long long now = SteadyNowNs();
     for (WatchSlot& slot : slots_) {
       LuaGuard* g = slot.guard.load(std::memory_order_acquire);
       if (!g) continue;
-      std::string stuck = WatchGuard(g, now, previous_pass, Interrupted());
+      std::string stuck = WatchGuard(g, now, Interrupted());
       if (stuck.empty()) continue;
       if (stuck_.empty()) stuck_ = stuck;
       // Under the lock, as the states cannot go while their owner's thread is stuck.
       if (on_stuck_) on_stuck_(stuck);
     }
-    previous_pass = now;
   }
 }
 
