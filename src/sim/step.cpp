@@ -1,5 +1,6 @@
 #include "sim/step.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "devices/devices.h"
@@ -126,25 +127,43 @@ bool PreStepStage(World& w) {
   return ok;
 }
 
-// One robot's sensors, then its controller's step(). A controller that fails stops: zero
-// wheels from the next act on, never stepped again. `*last` is the clock's last reading
-// in this range, the robot's start: two clock reads a robot, not three (they were ~1 % of
-// foraging-100's samples).
-void SenseAndControlRobot(World& w, const SenseContext& ctx, int i, World::ChunkTimes* times, Clock::time_point* last) {
+// A robot sensed and stepped this tick: alive, and its controller has not failed.
+bool Runs(const RobotState& r) { return r.alive && r.controller_ok; }
+
+// One robot's controller step(). A controller that fails stops: zero wheels from the next
+// act on, never stepped again.
+void ControlRobot(World& w, int i) {
   RobotState& r = w.robots[i];
-  if (!r.alive || !r.controller_ok) return;
-  const auto sense_start = *last;
-  SenseRobot(ctx, w.model.robots[i], r);
-  const auto control_start = Clock::now();
   const SteppingScope stepping(i, "ControlStep");
   if (!w.controllers[i]->Step(&w.pending_errors[i])) {
     r.controller_ok = false;
     r.cmd.wheel_left = r.cmd.wheel_right = 0;
     r.cmd.wheels_new = true;
   }
-  *last = Clock::now();
-  times->sense += Seconds(sense_start, control_start);
-  times->control += Seconds(control_start, *last);
+}
+
+// Robots sensed, then stepped, this many at a time: the stage clocks are read around each
+// batch, 2 reads per 32 robots where sensing and stepping robot by robot read it twice a
+// robot (~1.4 % of a trivial controller's robot-step). The order changes nothing: a robot's
+// sense and control touch only its own state (the threads interleave them anyway). A
+// batch's RobotStates (32 x 1.8 KB) stay in cache until its controllers read them.
+constexpr int kTimedBatch = 32;
+
+// Sense and control of robots [begin, end), their times added to `*times`.
+void SenseAndControlRange(World& w, const SenseContext& ctx, int begin, int end, World::ChunkTimes* times) {
+  Clock::time_point sense_start = Clock::now();
+  for (int b = begin; b < end; b += kTimedBatch) {
+    const int e = std::min(end, b + kTimedBatch);
+    for (int i = b; i < e; ++i)
+      if (Runs(w.robots[i])) SenseRobot(ctx, w.model.robots[i], w.robots[i]);
+    const Clock::time_point control_start = Clock::now();
+    for (int i = b; i < e; ++i)
+      if (Runs(w.robots[i])) ControlRobot(w, i);
+    const Clock::time_point control_end = Clock::now();
+    times->sense += Seconds(sense_start, control_start);
+    times->control += Seconds(control_start, control_end);
+    sense_start = control_end;
+  }
 }
 
 // Robots are independent here (each writes only its own state), so threads split them.
@@ -152,8 +171,7 @@ void SenseAndControlStage(World& w) {
   const SenseContext ctx{w.model, w.physics, w.media, w.floor, w.robots, w.tick, w.model.experiment.TickLength()};
   auto work = [&](int begin, int end) {
     World::ChunkTimes local;
-    Clock::time_point last = Clock::now();
-    for (int i = begin; i < end; ++i) SenseAndControlRobot(w, ctx, i, &local, &last);
+    SenseAndControlRange(w, ctx, begin, end, &local);
     // Ranges are disjoint, so the range's first robot names its slot: no shared writes.
     w.chunk_times[static_cast<size_t>(begin)] = local;
   };
@@ -227,7 +245,7 @@ StepStatus Step(World& w) {
   bool ok = true;
   Timed(&w.times.loop_functions, [&] { ok = PreStepStage(w); });
   if (!ok) return StepStatus::Failed;
-  SenseAndControlStage(w);  // timed per robot: sense and control apart
+  SenseAndControlStage(w);  // timed per batch of robots: sense and control apart
   StepStatus status = StepStatus::Failed;
   Timed(&w.times.loop_functions, [&] {
     if (CollectControllerErrors(w)) status = PostStepStage(w);

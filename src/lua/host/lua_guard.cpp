@@ -109,18 +109,25 @@ void GuardHook(lua_State* L, lua_Debug*) {
 }
 
 std::string WatchGuard(LuaGuard* g, long long now, bool interrupt) {
-  const long long start = g->call_started_ns.load(std::memory_order_relaxed);
-  if (start == 0) return {};
-  const double s = static_cast<double>(now - start) * 1e-9;
-  if (s < kArmAfterSeconds) return {};
+  const long long call = g->call.load(std::memory_order_relaxed);
+  if (call == 0) return {};
+  if (call != g->watched_call) {  // first seen: it began since the previous pass
+    g->watched_call = call;
+    g->watched_seen_ns = now;
+  }
+  // Timed from the first pass that saw it: passes come at least 0.01 s apart, so the pass
+  // that arms it is the one an exact start time would pick (or, after a late pass, the next);
+  // a limit is never applied early.
+  const double at_least = static_cast<double>(now - g->watched_seen_ns) * 1e-9;
+  if (at_least < kArmAfterSeconds) return {};
   if (interrupt) g->interrupted.store(true, std::memory_order_relaxed);
-  if (g->wall_seconds > 0 && s > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
-  if (s > 1) g->track_where.store(true, std::memory_order_relaxed);
+  if (g->wall_seconds > 0 && at_least > g->wall_seconds) g->wall_exceeded.store(true, std::memory_order_relaxed);
+  if (at_least > 1) g->track_where.store(true, std::memory_order_relaxed);
   Arm(g);
   // No hook ran for another full limit: stuck inside a C function (a pathological
   // string.find), which cannot be unwound safely.
-  if (g->wall_seconds > 0 && s > 2 * g->wall_seconds + 1 && !g->stuck_reported.exchange(true))
-    return StuckMessage(g, s);
+  if (g->wall_seconds > 0 && at_least > 2 * g->wall_seconds + 1 && !g->stuck_reported.exchange(true))
+    return StuckMessage(g, at_least);
   return {};
 }
 
@@ -145,7 +152,7 @@ void BeginGuardedCall(LuaGuard* g, CallKind kind) {
     g->armed.store(false, std::memory_order_relaxed);
     InstallHook(g, g->state);  // the last call ran long; this one starts unhooked
   }
-  g->call_started_ns.store(SteadyNowNs(), std::memory_order_relaxed);
+  g->call.store(++g->calls, std::memory_order_relaxed);
   if (g->watchdog) {
     g->slot = g->watchdog->ThisThreadSlot();
     g->outer = g->slot->guard.load(std::memory_order_relaxed);
@@ -175,7 +182,7 @@ void TellDebuggerRaised(lua_State* L, const char* message) {
 }
 
 std::string EndGuardedCall(LuaGuard* g, int status) {
-  g->call_started_ns.store(0, std::memory_order_relaxed);
+  g->call.store(0, std::memory_order_relaxed);
   if (g->slot) {
     g->slot->guard.store(g->outer, std::memory_order_release);
     g->slot = nullptr;

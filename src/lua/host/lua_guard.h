@@ -120,7 +120,13 @@ struct LuaGuard {
   WatchSlot* slot = nullptr;
   LuaGuard* outer = nullptr;
   double wall_seconds = 0;
-  std::atomic<long long> call_started_ns{0};  // 0: not inside a call
+  // The running call's number (0: not inside a call). A number, not a start time: a clock
+  // read per call was two per robot-step (~1 % of a trivial controller's); the watchdog
+  // times a call from the passes that first see its number (WatchGuard).
+  long long calls = 0;  // calls begun (owner's thread only)
+  std::atomic<long long> call{0};
+  long long watched_call = 0;     // watchdog thread only: the call its passes time,
+  long long watched_seen_ns = 0;  // first seen running at this pass
   std::atomic<bool> wall_exceeded{false};
   std::atomic<bool> interrupted{false};     // a signal arrived while this call was stuck
   std::atomic<bool> stuck_reported{false};  // the watchdog reported this call stuck in C

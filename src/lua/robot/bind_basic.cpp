@@ -32,31 +32,34 @@ void CreateWheelsSensor(lua_State* L, int t) {
   for (const char* k : {"velocity_left", "velocity_right", "distance_left", "distance_right"}) SetNumber(L, t, k, 0);
 }
 
-void PushWheels(lua_State* L, int ref, const Readings& rd) {
+void PushWheels(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-  int t = lua_gettop(L);
-  SetNumber(L, t, "velocity_left", rd.velocity_left);
-  SetNumber(L, t, "velocity_right", rd.velocity_right);
-  SetNumber(L, t, "distance_left", rd.distance_left);
-  SetNumber(L, t, "distance_right", rd.distance_right);
+  const int t = lua_gettop(L);
+  SetNumberField(L, t, keys, LuaKey::VelocityLeft, rd.velocity_left);
+  SetNumberField(L, t, keys, LuaKey::VelocityRight, rd.velocity_right);
+  SetNumberField(L, t, keys, LuaKey::DistanceLeft, rd.distance_left);
+  SetNumberField(L, t, keys, LuaKey::DistanceRight, rd.distance_right);
   lua_pop(L, 1);
 }
 
-void PushPositioning(lua_State* L, int ref, const Readings& rd) {
+void PushPositioning(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   // Fresh values each step: controllers keep last step's position to compare with.
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  const int t = lua_gettop(L);
+  PushKey(L, keys, LuaKey::Position);
   PushVector3(L, rd.position.x(), rd.position.y(), rd.position.z());
-  lua_setfield(L, -2, "position");
+  lua_settable(L, t);
+  PushKey(L, keys, LuaKey::Orientation);
   PushQuaternion(L, rd.quat_w, rd.quat_x, rd.quat_y, rd.quat_z);
-  lua_setfield(L, -2, "orientation");
+  lua_settable(L, t);
   lua_pop(L, 1);
 }
 
-void PushBattery(lua_State* L, int ref, const Readings& rd) {
+void PushBattery(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-  int t = lua_gettop(L);
-  SetNumber(L, t, "available_charge", rd.battery_charge);
-  SetNumber(L, t, "time_left", rd.battery_time_left);
+  const int t = lua_gettop(L);
+  SetNumberField(L, t, keys, LuaKey::AvailableCharge, rd.battery_charge);
+  SetNumberField(L, t, keys, LuaKey::TimeLeft, rd.battery_time_left);
   lua_pop(L, 1);
 }
 

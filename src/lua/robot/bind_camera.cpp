@@ -22,14 +22,14 @@ void CreateCameraSensor(lua_State* L, int t, RobotState*) {
   SetFunction(L, t, "disable", Disable);
 }
 
-void PushCamera(lua_State* L, int ref, const Readings& rd, int* count) {
+void PushCamera(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, int* count) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   const int n = static_cast<int>(rd.blobs.size());
-  // Keys pushed once per call (lua_setfield would look each up in the string cache).
-  const char* const keys[] = {"distance", "angle", "color", "red", "green", "blue"};
+  // Keys pushed once per call, in the order of the stack slots named below.
   if (n > 0)
-    for (const char* k : keys) lua_pushstring(L, k);
+    for (LuaKey k : {LuaKey::Distance, LuaKey::Angle, LuaKey::Color, LuaKey::Red, LuaKey::Green, LuaKey::Blue})
+      PushKey(L, keys, k);
   const int k_distance = t + 1, k_angle = t + 2, k_color = t + 3, k_red = t + 4, k_green = t + 5, k_blue = t + 6;
   for (int i = 0; i < n; ++i) {
     const Blob& b = rd.blobs[static_cast<size_t>(i)];

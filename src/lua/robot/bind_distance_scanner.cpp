@@ -65,16 +65,17 @@ int NewPool(lua_State* L) {
   return luaL_ref(L, LUA_REGISTRYINDEX);
 }
 
-void Fill(lua_State* L, int scanner, const char* key, int array_ref, int pool_ref, const ScanReading* readings,
-          int count, int* shown) {
+void Fill(lua_State* L, int scanner, LuaKeyRefs* keys, LuaKey key, int array_ref, int pool_ref,
+          const ScanReading* readings, int count, int* shown) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, array_ref);
   const int array = lua_gettop(L);
+  PushKey(L, keys, key);
   lua_pushvalue(L, array);
-  lua_setfield(L, scanner, key);  // put back, should the controller have replaced it
+  lua_settable(L, scanner);  // put back, should the controller have replaced it
   lua_rawgeti(L, LUA_REGISTRYINDEX, pool_ref);
   const int pool = lua_gettop(L);
-  lua_pushliteral(L, "angle");
-  lua_pushliteral(L, "distance");
+  PushKey(L, keys, LuaKey::Angle);
+  PushKey(L, keys, LuaKey::Distance);
   const int k_angle = pool + 1, k_distance = pool + 2;
   for (int i = 0; i < count; ++i) {
     lua_rawgeti(L, pool, i + 1);
@@ -104,13 +105,13 @@ void CreateScannerSensor(lua_State* L, int t, LuaDeviceRefs* refs) {
   refs->scanner_short_count = refs->scanner_long_count = 0;
 }
 
-void PushScanner(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) {
+void PushScanner(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int scanner = lua_gettop(L);
-  Fill(L, scanner, "short_range", refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,
+  Fill(L, scanner, keys, LuaKey::ShortRange, refs->scanner_short, refs->scanner_short_pool, rd.scanner_short,
        rd.scanner_short_count, &refs->scanner_short_count);
-  Fill(L, scanner, "long_range", refs->scanner_long, refs->scanner_long_pool, rd.scanner_long, rd.scanner_long_count,
-       &refs->scanner_long_count);
+  Fill(L, scanner, keys, LuaKey::LongRange, refs->scanner_long, refs->scanner_long_pool, rd.scanner_long,
+       rd.scanner_long_count, &refs->scanner_long_count);
   lua_pop(L, 1);
 }
 

@@ -25,11 +25,11 @@ void Create(lua_State* L, int t, const double (&offsets)[N][2]) {
 
 void CreateBaseGroundSensor(lua_State* L, int t) { Create(L, t, kBaseGroundOffsets); }
 void CreateMotorGroundSensor(lua_State* L, int t) { Create(L, t, kMotorGroundOffsets); }
-void PushBaseGround(lua_State* L, int ref, const Readings& rd) {
-  PushValuesInPlace(L, ref, rd.base_ground, kBaseGroundCount);
+void PushBaseGround(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
+  PushValuesInPlace(L, ref, keys, rd.base_ground, kBaseGroundCount);
 }
-void PushMotorGround(lua_State* L, int ref, const Readings& rd) {
-  PushValuesInPlace(L, ref, rd.motor_ground, kMotorGroundCount);
+void PushMotorGround(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
+  PushValuesInPlace(L, ref, keys, rd.motor_ground, kMotorGroundCount);
 }
 
 }  // namespace essaim

@@ -5,6 +5,6 @@
 namespace essaim {
 
 void CreateLightSensor(lua_State* L, int t) { CreateRingSensor(L, t); }
-void PushLight(lua_State* L, int ref, const Readings& rd) { PushRingSensor(L, ref, rd.light); }
+void PushLight(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) { PushRingSensor(L, ref, keys, rd.light); }
 
 }  // namespace essaim

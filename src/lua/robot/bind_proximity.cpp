@@ -26,11 +26,13 @@ void CreateRingSensor(lua_State* L, int t) {
   lua_pop(L, 2);
 }
 
-void PushRingSensor(lua_State* L, int ref, const double* values) {
-  PushValuesInPlace(L, ref, values, kRingSensorCount);
+void PushRingSensor(lua_State* L, int ref, LuaKeyRefs* keys, const double* values) {
+  PushValuesInPlace(L, ref, keys, values, kRingSensorCount);
 }
 
 void CreateProximitySensor(lua_State* L, int t) { CreateRingSensor(L, t); }
-void PushProximity(lua_State* L, int ref, const Readings& rd) { PushRingSensor(L, ref, rd.proximity); }
+void PushProximity(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
+  PushRingSensor(L, ref, keys, rd.proximity);
+}
 
 }  // namespace essaim

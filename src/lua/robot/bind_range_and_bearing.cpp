@@ -100,17 +100,14 @@ void CreateRabActuator(lua_State* L, int t, RobotState*) {
   SetFunction(L, t, "clear_data", ClearData);
 }
 
-void PushRab(lua_State* L, int ref, const Readings& rd, int* count) {
+void PushRab(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, int* count) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
   const int n = static_cast<int>(rd.rab.size());
-  if (n > 0) {
-    // Keys pushed once per call (lua_setfield would look each up in the string cache).
-    lua_pushliteral(L, "range");
-    lua_pushliteral(L, "horizontal_bearing");
-    lua_pushliteral(L, "vertical_bearing");
-    lua_pushliteral(L, "data");
-  }
+  // Keys pushed once per call, in the order of the stack slots named below.
+  if (n > 0)
+    for (LuaKey k : {LuaKey::Range, LuaKey::HorizontalBearing, LuaKey::VerticalBearing, LuaKey::Data})
+      PushKey(L, keys, k);
   const int k_range = t + 1, k_hb = t + 2, k_vb = t + 3, k_data = t + 4;
   for (int i = 0; i < n; ++i) {
     const RabPacket& p = rd.rab[static_cast<size_t>(i)];

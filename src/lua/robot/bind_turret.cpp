@@ -55,10 +55,9 @@ void CreateTurretSensor(lua_State* L, int t) {
   lua_setfield(L, t, "rotation");
 }
 
-void PushTurret(lua_State* L, int ref, const Readings& rd) {
+void PushTurret(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-  lua_pushnumber(L, rd.turret_rotation);
-  lua_setfield(L, -2, "rotation");
+  SetNumberField(L, lua_gettop(L), keys, LuaKey::Rotation, rd.turret_rotation);
   lua_pop(L, 1);
 }
 

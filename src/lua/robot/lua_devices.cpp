@@ -27,10 +27,55 @@ void SetFunction(lua_State* L, int t, const char* name, lua_CFunction f) {
   lua_setfield(L, t, name);
 }
 
-void PushValuesInPlace(lua_State* L, int ref, const double* values, int n) {
+namespace {
+// LuaKey's strings, indexed by the enum.
+constexpr const char* kKeyNames[] = {"",
+                                     "value",
+                                     "position",
+                                     "orientation",
+                                     "velocity_left",
+                                     "velocity_right",
+                                     "distance_left",
+                                     "distance_right",
+                                     "available_charge",
+                                     "time_left",
+                                     "rotation",
+                                     "range",
+                                     "horizontal_bearing",
+                                     "vertical_bearing",
+                                     "data",
+                                     "distance",
+                                     "angle",
+                                     "color",
+                                     "red",
+                                     "green",
+                                     "blue",
+                                     "short_range",
+                                     "long_range"};
+static_assert(std::size(kKeyNames) == kLuaKeyCount + 1, "lua_devices.cpp: one name per LuaKey, in enum order");
+}  // namespace
+
+void PushKey(lua_State* L, LuaKeyRefs* keys, LuaKey key) {
+  int& ref = keys->ref[static_cast<int>(key)];
+  if (ref >= 0) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    return;
+  }
+  lua_pushstring(L, kKeyNames[static_cast<int>(key)]);  // first use in this state: interned once, kept
+  lua_pushvalue(L, -1);
+  ref = luaL_ref(L, LUA_REGISTRYINDEX);
+}
+
+void SetNumberField(lua_State* L, int t, LuaKeyRefs* keys, LuaKey key, double v) {
+  PushKey(L, keys, key);
+  lua_pushnumber(L, v);
+  lua_settable(L, t);
+}
+
+void PushValuesInPlace(lua_State* L, int ref, LuaKeyRefs* keys, const double* values, int n) {
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   const int t = lua_gettop(L);
-  lua_pushliteral(L, "value");
+  PushKey(L, keys, LuaKey::Value);
   const int key = t + 1;
   for (int i = 0; i < n; ++i) {
     if (lua_rawgeti(L, t, i + 1) == LUA_TTABLE) RawSetNumber(L, key, values[i]);
@@ -78,7 +123,7 @@ namespace {
 // The Lua layer's row of a device: what its table holds beside the readings (closures,
 // fixed fields, arrays made once), and how a reading is copied in. nullptr: nothing.
 using CreateFn = void (*)(lua_State* L, int table, RobotState* robot, LuaDeviceRefs* refs);
-using PushFn = void (*)(lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs);
+using PushFn = void (*)(lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs);
 struct LuaDeviceRow {
   DeviceType type;
   CreateFn create;
@@ -101,27 +146,42 @@ constexpr std::array<LuaDeviceRow, kDeviceCount> kRows = {{
      nullptr},
     // ---- sensors
     {T::WheelsSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateWheelsSensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushWheels(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushWheels(L, ref, keys, rd); }},
     {T::PositioningSensor, nullptr,
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushPositioning(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushPositioning(L, ref, keys, rd);
+     }},
     {T::ProximitySensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateProximitySensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushProximity(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushProximity(L, ref, keys, rd);
+     }},
     {T::LightSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateLightSensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushLight(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushLight(L, ref, keys, rd); }},
     {T::BaseGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateBaseGroundSensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushBaseGround(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushBaseGround(L, ref, keys, rd);
+     }},
     {T::MotorGroundSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateMotorGroundSensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushMotorGround(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) {
+       PushMotorGround(L, ref, keys, rd);
+     }},
     {T::RabSensor, nullptr,
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushRab(L, ref, rd, &refs->rab_count); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
+       PushRab(L, ref, keys, rd, &refs->rab_count);
+     }},
     {T::ScannerSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs* refs) { CreateScannerSensor(L, t, refs); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushScanner(L, ref, rd, refs); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
+       PushScanner(L, ref, keys, rd, refs);
+     }},
     {T::CameraSensor, [](lua_State* L, int t, RobotState* r, LuaDeviceRefs*) { CreateCameraSensor(L, t, r); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs* refs) { PushCamera(L, ref, rd, &refs->blob_count); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs* refs) {
+       PushCamera(L, ref, keys, rd, &refs->blob_count);
+     }},
     {T::BatterySensor, nullptr,
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushBattery(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd,
+        LuaDeviceRefs*) { PushBattery(L, ref, keys, rd); }},
     {T::TurretEncoderSensor, [](lua_State* L, int t, RobotState*, LuaDeviceRefs*) { CreateTurretSensor(L, t); },
-     [](lua_State* L, int ref, const Readings& rd, LuaDeviceRefs*) { PushTurret(L, ref, rd); }},
+     [](lua_State* L, int ref, LuaKeyRefs* keys, const Readings& rd, LuaDeviceRefs*) { PushTurret(L, ref, keys, rd); }},
 }};
 
 // Every DeviceType has its row, in enum order; every sensor pushes its readings.
@@ -180,7 +240,7 @@ void CreateDeviceTables(lua_State* L, const ControllerDef& c, const RobotDef&, R
 void PushDeviceReadings(lua_State* L, const ControllerDef& c, const RobotState& robot, LuaDeviceRefs* refs) {
   for (const DeviceConfig& d : c.sensors) {
     const int i = static_cast<int>(d.type);
-    kRows[i].push(L, refs->table[i], robot.rd, refs);
+    kRows[i].push(L, refs->table[i], &refs->keys, robot.rd, refs);
   }
 }
 
