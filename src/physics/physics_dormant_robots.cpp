@@ -8,7 +8,7 @@
 //   zero, its damping is Box2D's default zero (factor 1);
 // - a sleeping body takes part in nothing: not in islands, not in Collide (it has no
 //   contact), and its broad-phase proxy stays where it is. A sub-step is done here only if
-//   Box2D's SynchronizeFixtures would not have moved that proxy either (ProxyWouldMove,
+//   Box2D's SynchronizeFixtures would not have moved that proxy either (CanSleepAt,
 //   b2DynamicTree::MoveProxy's test), so the tree, its move buffer and every pair Box2D finds
 //   stay the same; a pair found with the robot (another body's proxy moved onto it) gives it
 //   a contact, and it wakes before the next sub-step's Collide;
@@ -44,36 +44,23 @@ b2AABB CircleBox(b2Vec2 c, float r) {
   return box;
 }
 
-/// Whether b2DynamicTree::MoveProxy (Box2D 2.4.1) would re-insert a proxy whose tree box is
-/// `tree` for the box `aabb` moved by `displacement`: the same float operations.
-bool ProxyWouldMove(const b2AABB& tree, const b2AABB& aabb, b2Vec2 displacement) {
-  if (!tree.Contains(aabb)) return true;
-  const b2Vec2 r(b2_aabbExtension, b2_aabbExtension);
-  b2AABB fat;
-  fat.lowerBound = aabb.lowerBound - r;
-  fat.upperBound = aabb.upperBound + r;
-  const b2Vec2 d = b2_aabbMultiplier * displacement;
-  if (d.x < 0.0f)
-    fat.lowerBound.x += d.x;
-  else
-    fat.upperBound.x += d.x;
-  if (d.y < 0.0f)
-    fat.lowerBound.y += d.y;
-  else
-    fat.upperBound.y += d.y;
-  b2AABB huge;
-  huge.lowerBound = fat.lowerBound - 4.0f * r;
-  huge.upperBound = fat.upperBound + 4.0f * r;
-  return !huge.Contains(tree);
-}
-
 /// Whether a sub-step ending at `c` can be done here: Box2D's SynchronizeFixtures after it
-/// would not move the proxy, nor would SetTransform at `c` on waking (MoveProxy with no
-/// displacement). The second implies the first: the swept box of the sub-step is the union of
+/// would not move the proxy, nor would SetTransform at `c` on waking. The second is
+/// b2DynamicTree::MoveProxy's test (Box2D 2.4.1, same float operations) for the box at `c`
+/// with no displacement (a zero displacement adds +0 to the fat box's upper bounds, which
+/// no comparison sees). It implies the first: the swept box of the sub-step is the union of
 /// the box at its start, which the tree box holds (the pose was last synced there), and the
 /// box at `c`; and the "huge" box MoveProxy grows from that union and a displacement holds
 /// the one grown from the box at `c` alone (float rounding is monotonic).
-bool CanSleepAt(const b2AABB& tree, b2Vec2 c, float r) { return !ProxyWouldMove(tree, CircleBox(c, r), b2Vec2(0, 0)); }
+bool CanSleepAt(const b2AABB& tree, b2Vec2 c, float r) {
+  const b2AABB box = CircleBox(c, r);
+  if (!tree.Contains(box)) return false;
+  const b2Vec2 ext(b2_aabbExtension, b2_aabbExtension);
+  b2AABB huge;  // MoveProxy's fat box, grown by four times its margin
+  huge.lowerBound = (box.lowerBound - ext) - 4.0f * ext;
+  huge.upperBound = (box.upperBound + ext) + 4.0f * ext;
+  return huge.Contains(tree);
+}
 
 /// b2Island::Solve for a lone dynamic body with no force, gravity or damping: velocity
 /// integration (adding the zero force turns a -0 component into +0, as Box2D's does), the
