@@ -18,6 +18,19 @@ def same_run(ref, dbg):
         assert (dbg / "recording.bin").read_bytes() == (ref / "recording.bin").read_bytes()
 
 
+def stop_at_fb2_tick_10(essaim, argos, tmp_path, session):
+    """A recorded reference run, then a recorded debug session stopped at fb2's wheels line at
+    tick 10: the session, fb2's thread, its frame and the reference of its `actions` local."""
+    essaim_run(essaim, argos, SHORT + ["--record"], tmp_path / "ref", tmp_path)
+    script = controller(argos)
+    dap = session([argos, *SHORT, "--record", "--out", tmp_path / "dbg"])
+    dap.start(breakpoints={script: [{"line": line_of(script, WHEELS), "condition": 'robot.id == "fb2" and tick == 10'}]})
+    fb2 = dap.stopped()["threadId"]
+    frame = dap.frames(fb2)[0]["id"]
+    actions = dap.variables(dap.scopes(frame)["Locals"])["actions"]["variablesReference"]
+    return dap, script, fb2, frame, actions
+
+
 def test_continue_runs_to_the_end_with_the_outputs_of_essaim_run(essaim, argos, tmp_path, session):
     add_log_line(argos)
     ref, _ = essaim_run(essaim, argos, SHORT + ["--record"], tmp_path / "ref", tmp_path)
@@ -51,13 +64,7 @@ def test_a_session_that_stops_and_steps_changes_nothing(essaim, argos, tmp_path,
 
 
 def test_setting_a_variable_changes_the_run_and_is_recorded_as_a_divergence(essaim, argos, tmp_path, session):
-    essaim_run(essaim, argos, SHORT + ["--record"], tmp_path / "ref", tmp_path)
-    script = controller(argos)
-    dap = session([argos, *SHORT, "--record", "--out", tmp_path / "dbg"])
-    dap.start(breakpoints={script: [{"line": line_of(script, WHEELS), "condition": 'robot.id == "fb2" and tick == 10'}]})
-    fb2 = dap.stopped()["threadId"]
-    frame = dap.frames(fb2)[0]["id"]
-    actions = dap.variables(dap.scopes(frame)["Locals"])["actions"]["variablesReference"]
+    dap, script, fb2, frame, actions = stop_at_fb2_tick_10(essaim, argos, tmp_path, session)
     assert float(dap.variables(actions)["left"]["value"]) != 0
     got = dap.request("setVariable", {"variablesReference": actions, "name": "left", "value": "0"})
     assert got["value"] == "0"
@@ -176,13 +183,7 @@ def test_the_experiment_and_options_may_come_from_the_launch_request(essaim, arg
 
 
 def test_going_back_before_a_divergence_drops_it(essaim, argos, tmp_path, session):
-    essaim_run(essaim, argos, SHORT + ["--record"], tmp_path / "ref", tmp_path)
-    script = controller(argos)
-    dap = session([argos, *SHORT, "--record", "--out", tmp_path / "dbg"])
-    dap.start(breakpoints={script: [{"line": line_of(script, WHEELS), "condition": 'robot.id == "fb2" and tick == 10'}]})
-    fb2 = dap.stopped()["threadId"]
-    frame = dap.frames(fb2)[0]["id"]
-    actions = dap.variables(dap.scopes(frame)["Locals"])["actions"]["variablesReference"]
+    dap, script, fb2, _, actions = stop_at_fb2_tick_10(essaim, argos, tmp_path, session)
     dap.request("setVariable", {"variablesReference": actions, "name": "left", "value": "0"})
     dap.set_breakpoints(script, [])
     assert dap.resume("runToTick", fb2, tick=15)["reason"] == "goto"
